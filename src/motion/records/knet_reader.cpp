@@ -1,0 +1,115 @@
+// NIED K-NET / KiK-net ASCII reader. 17 header lines, key in columns 1-18 and value from column
+// 19, read by line number because the key spellings vary ("Long."/"Lon.", "Max. Acc."/"Max Acc.").
+// Data are integer counts, 8 per line; gal = (numerator/denominator) * (count - mean count),
+// with the "Scale Factor" "3920(gal)/6182761". The mean over the whole record is removed as the
+// format's users do: the counts carry a large logger offset, and NIED's own "Max. Acc." header
+// value is max |S (c - mean c)| (checked on 8 real files). Count = rate x duration exactly.
+#include <cmath>
+#include <numeric>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "motion/records/record_readers.hpp"
+
+namespace blockdem::records {
+namespace {
+
+constexpr std::size_t header_lines = 17;
+constexpr std::size_t value_column = 18;  // 0-based start of the value
+
+// Header line numbers (0-based) of the fields used.
+enum HeaderLine : std::size_t {
+    origin_time = 0,
+    magnitude = 4,
+    station_code = 5,
+    record_time = 9,
+    sampling_frequency = 10,
+    duration_time = 11,
+    direction = 12,
+    scale_factor = 13,
+};
+
+std::string header_value(const RecordText& text, std::size_t line) {
+    const std::string& s = text.lines[line];
+    return s.size() > value_column ? trim(std::string_view(s).substr(value_column)) : std::string{};
+}
+
+double header_number(const RecordText& text, std::size_t line, std::string_view what, std::string_view suffix = {}) {
+    std::string value = header_value(text, line);
+    if (!suffix.empty() && to_lower(value).ends_with(to_lower(suffix))) value.resize(value.size() - suffix.size());
+    const auto number = parse_fortran_number(trim(value));
+    if (!number || !(*number > 0.0))
+        fail_at(text, line, fmt::format("{} '{}' is not a positive number", what, header_value(text, line)), value_column + 1);
+    return *number;
+}
+
+// "3920(gal)/6182761": gal per count.
+double scale_factor_gal_per_count(const RecordText& text) {
+    static const std::regex pattern(R"(^\s*([0-9.Ee+-]+)\s*\(([^)]*)\)\s*/\s*([0-9.Ee+-]+)\s*$)");
+    const std::string value = header_value(text, scale_factor);
+    std::smatch m;
+    if (!std::regex_match(value, m, pattern))
+        fail_at(text, scale_factor, fmt::format("Scale Factor '{}' is not of the form '3920(gal)/6182761'", value),
+                value_column + 1);
+    if (to_lower(trim(m[2].str())) != "gal")
+        fail_at(text, scale_factor, fmt::format("Scale Factor unit '{}' is not gal", m[2].str()), value_column + 1);
+    const auto numerator = parse_fortran_number(m[1].str());
+    const auto denominator = parse_fortran_number(m[3].str());
+    if (!numerator || !denominator || *denominator == 0.0)
+        fail_at(text, scale_factor, fmt::format("Scale Factor '{}' has an invalid number", value), value_column + 1);
+    return *numerator / *denominator;
+}
+
+void check_header_keys(const RecordText& text) {
+    if (text.lines.size() < header_lines)
+        fail_at(text, text.lines.empty() ? 0 : text.lines.size() - 1,
+                fmt::format("a K-NET file has {} header lines; this one ends after {} lines", header_lines, text.lines.size()));
+    if (!starts_with_nocase(text.lines[origin_time], "Origin Time"))
+        fail_at(text, origin_time, "a K-NET file starts with 'Origin Time'");
+    if (!starts_with_nocase(text.lines[scale_factor], "Scale Factor"))
+        fail_at(text, scale_factor, "line 14 of a K-NET file is the 'Scale Factor'");
+    if (!starts_with_nocase(text.lines[sampling_frequency], "Sampling Freq"))
+        fail_at(text, sampling_frequency, "line 11 of a K-NET file is the 'Sampling Freq(Hz)'");
+}
+
+// KiK-net writes the channel number: 1-3 borehole N-S/E-W/U-D, 4-6 the same at the surface.
+std::string direction_name(const std::string& dir) {
+    static const char* const kiknet[] = {"N-S borehole", "E-W borehole", "U-D borehole",
+                                         "N-S surface",  "E-W surface",  "U-D surface"};
+    if (dir.size() == 1 && dir[0] >= '1' && dir[0] <= '6') return fmt::format("{} ({})", dir, kiknet[dir[0] - '1']);
+    return dir;
+}
+
+}  // namespace
+
+GroundMotionRecord read_knet(const RecordText& text, const RecordReadOptions& options) {
+    check_header_keys(text);
+    GroundMotionRecord record;
+    record.file = text.file;
+    record.format = RecordFormat::knet;
+    record.event = fmt::format("origin {} JST, M {}", header_value(text, origin_time), header_value(text, magnitude));
+    record.station = header_value(text, station_code);
+    record.component = direction_name(header_value(text, direction));
+    const double rate_hz = header_number(text, sampling_frequency, "Sampling Freq", "Hz");
+    const double duration_s = header_number(text, duration_time, "Duration Time");
+    record.dt_s = 1.0 / rate_hz;
+    const double gal_per_count = scale_factor_gal_per_count(text);
+    record.units_in_file = fmt::format("counts x {} gal ({})", gal_per_count, header_value(text, scale_factor));
+    check_component(text, options, header_value(text, direction), direction);
+    const std::size_t expected = static_cast<std::size_t>(std::llround(rate_hz * duration_s));
+    const ValueBlock block = read_free_values(text, header_lines, expected);
+    if (block.extra_values > 0)
+        fail_at(text, block.next_line - 1,
+                fmt::format("the file holds more than the {} values that Sampling Freq x Duration Time ({} Hz x {} s) announce",
+                            expected, rate_hz, duration_s));
+    const double mean = std::accumulate(block.values.begin(), block.values.end(), 0.0) / static_cast<double>(expected);
+    record.acceleration_m_s2.reserve(expected);
+    for (double c : block.values) record.acceleration_m_s2.push_back(c - mean);
+    record.notes.push_back(fmt::format("mean count {:.2f} removed (K-NET convention); record starts 15 s before Record Time {}",
+                                       mean, header_value(text, record_time)));
+    convert_to_si(record, resolve_units(text, options, "gal", scale_factor) * gal_per_count);
+    return record;
+}
+
+}  // namespace blockdem::records

@@ -1,0 +1,38 @@
+#pragma once
+// The per-format readers behind read_ground_motion_record(), one file each, and what they share.
+#include <cstddef>
+#include <string>
+
+#include "motion/records/acceleration_units.hpp"
+#include "motion/records/ground_motion_record.hpp"
+#include "motion/records/record_text.hpp"
+
+namespace blockdem::records {
+
+GroundMotionRecord read_peer_at2(const RecordText& text, const RecordReadOptions& options);
+GroundMotionRecord read_knet(const RecordText& text, const RecordReadOptions& options);
+GroundMotionRecord read_cosmos_v2(const RecordText& text, const RecordReadOptions& options);
+GroundMotionRecord read_jma_csv(const RecordText& text, const RecordReadOptions& options);
+GroundMotionRecord read_plain_text(const RecordText& text, const RecordReadOptions& options);
+
+/// The format, from the first lines of the content (never from the file name).
+RecordFormat detect_record_format(const RecordText& text);
+
+/// m/s^2 per file unit: the user's override when given, else file_units (as stated at line
+/// `line`). An unknown unit is an InputError at that line (or naming the option).
+double resolve_units(const RecordText& text, const RecordReadOptions& options, const std::string& file_units,
+                     std::size_t line);
+
+/// True when two component names denote the same direction: case, blanks and '-' ignored,
+/// numbers compared as numbers ("067" = "67", "N-S" = "ns").
+bool same_component(const std::string& a, const std::string& b);
+
+/// For single-component files: an asked-for component that differs from the header's is an
+/// InputError at the header line, so that a wrong file is not silently used.
+void check_component(const RecordText& text, const RecordReadOptions& options, const std::string& header_component,
+                     std::size_t line);
+
+/// Scales counts or file units to m/s^2 in place.
+void convert_to_si(GroundMotionRecord& record, double to_m_s2);
+
+}  // namespace blockdem::records

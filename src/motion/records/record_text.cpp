@@ -1,0 +1,244 @@
+#include "motion/records/record_text.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+
+namespace blockdem::records {
+
+RecordText split_record_text(std::string file, std::string_view content) {
+    RecordText text{std::move(file), {}};
+    std::size_t begin = 0;
+    while (begin < content.size()) {
+        std::size_t end = content.find('\n', begin);
+        if (end == std::string_view::npos) end = content.size();
+        std::string_view line = content.substr(begin, end - begin);
+        while (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CRLF and CR CR LF
+        text.lines.emplace_back(line);
+        begin = end + 1;
+    }
+    return text;
+}
+
+RecordText read_record_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError({path.string(), "", 0, 0}, "cannot open the record file");
+    const std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return split_record_text(path.string(), content);
+}
+
+void fail_at(const RecordText& text, std::size_t line_index, const std::string& problem, int column) {
+    throw InputError({text.file, "", static_cast<int>(line_index + 1), column}, problem);
+}
+
+void fail_file(const RecordText& text, const std::string& problem) { throw InputError({text.file, "", 0, 0}, problem); }
+
+std::optional<double> parse_fortran_number(std::string_view token) {
+    if (token.empty() || token.size() > 64) return std::nullopt;
+    std::string buffer(token);
+    if (buffer.front() == '+') buffer.erase(0, 1);  // from_chars rejects a leading '+'
+    for (char& c : buffer)
+        if (c == 'D' || c == 'd') c = 'E';  // Fortran double-precision exponent
+    double value = 0.0;
+    const char* first = buffer.data();
+    const char* last = first + buffer.size();
+    const auto [end, error] = std::from_chars(first, last, value);
+    if (error != std::errc{} || end != last || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::vector<std::string_view> split_fields(std::string_view line) {
+    std::vector<std::string_view> out;
+    std::size_t i = 0;
+    auto is_separator = [](char c) { return c == ' ' || c == '\t' || c == ',' || c == ';'; };
+    while (i < line.size()) {
+        while (i < line.size() && is_separator(line[i])) ++i;
+        const std::size_t start = i;
+        while (i < line.size() && !is_separator(line[i])) ++i;
+        if (i > start) out.push_back(line.substr(start, i - start));
+    }
+    return out;
+}
+
+std::vector<Token> blank_tokens(std::string_view line) {
+    std::vector<Token> out;
+    std::size_t i = 0;
+    auto is_blank = [](char c) { return c == ' ' || c == '\t'; };
+    while (i < line.size()) {
+        while (i < line.size() && is_blank(line[i])) ++i;
+        const std::size_t start = i;
+        while (i < line.size() && !is_blank(line[i])) ++i;
+        if (i > start) out.push_back({line.substr(start, i - start), static_cast<int>(start + 1)});
+    }
+    return out;
+}
+
+std::string trim(std::string_view s) {
+    const auto blank = [](char c) { return c == ' ' || c == '\t'; };
+    while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+    while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+    return std::string(s);
+}
+
+std::string to_lower(std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+std::string squeeze_blanks(std::string_view s) {
+    std::string out;
+    for (const Token& t : blank_tokens(s)) {
+        if (!out.empty()) out += ' ';
+        out += t.text;
+    }
+    return out;
+}
+
+bool starts_with_nocase(std::string_view s, std::string_view prefix) {
+    return s.size() >= prefix.size() && to_lower(s.substr(0, prefix.size())) == to_lower(prefix);
+}
+
+bool contains_nocase(std::string_view s, std::string_view part) {
+    return to_lower(s).find(to_lower(part)) != std::string::npos;
+}
+
+namespace {
+
+// Counts the numbers that follow the expected ones, up to the first line that is not all numbers
+// (a trailer such as "End-of-data" or "*** End Data ***").
+std::size_t count_extra_values(const RecordText& text, std::size_t line, const std::vector<Token>& rest) {
+    std::size_t extra = 0;
+    for (const Token& t : rest) {
+        if (!parse_fortran_number(t.text)) return extra;
+        ++extra;
+    }
+    for (++line; line < text.lines.size(); ++line) {
+        const auto tokens = blank_tokens(text.lines[line]);
+        const bool all_numbers = std::all_of(tokens.begin(), tokens.end(),
+                                             [](const Token& t) { return parse_fortran_number(t.text).has_value(); });
+        if (!all_numbers) break;
+        extra += tokens.size();
+    }
+    return extra;
+}
+
+[[noreturn]] void fail_truncated(const RecordText& text, std::size_t first_line, std::size_t read, std::size_t count) {
+    const std::size_t last = text.lines.empty() ? 0 : text.lines.size() - 1;
+    fail_at(text, std::max(first_line, last),
+            fmt::format("the record is truncated: the file ends after {} of the {} values its header announces", read,
+                        count));
+}
+
+}  // namespace
+
+ValueBlock read_free_values(const RecordText& text, std::size_t first_line, std::size_t count) {
+    ValueBlock block;
+    block.values.reserve(count);
+    std::size_t line = first_line;
+    for (; line < text.lines.size() && block.values.size() < count; ++line) {
+        const auto tokens = blank_tokens(text.lines[line]);
+        for (std::size_t k = 0; k < tokens.size(); ++k) {
+            if (block.values.size() == count) {
+                block.extra_values = count_extra_values(text, line, {tokens.begin() + k, tokens.end()});
+                block.next_line = line + 1;
+                return block;
+            }
+            const auto value = parse_fortran_number(tokens[k].text);
+            if (!value)
+                fail_at(text, line,
+                        fmt::format("'{}' is not a number (value {} of {})", tokens[k].text, block.values.size() + 1, count),
+                        tokens[k].column);
+            block.values.push_back(*value);
+        }
+    }
+    if (block.values.size() < count) fail_truncated(text, first_line, block.values.size(), count);
+    block.next_line = line;
+    block.extra_values = count_extra_values(text, line - 1, {});
+    return block;
+}
+
+ValueBlock read_fixed_values(const RecordText& text, std::size_t first_line, std::size_t count, std::size_t per_line,
+                             std::size_t width) {
+    ValueBlock block;
+    block.values.reserve(count);
+    std::size_t line = first_line;
+    for (; line < text.lines.size() && block.values.size() < count; ++line) {
+        const std::string_view row = text.lines[line];
+        for (std::size_t k = 0; k < per_line && block.values.size() < count; ++k) {
+            const std::size_t start = k * width;
+            if (start >= row.size()) break;  // a short last line
+            const std::string field = trim(row.substr(start, width));
+            if (field.empty()) break;
+            const auto value = parse_fortran_number(field);
+            if (!value)
+                fail_at(text, line,
+                        fmt::format("'{}' is not a number (value {} of {})", field, block.values.size() + 1, count),
+                        static_cast<int>(start + 1));
+            block.values.push_back(*value);
+        }
+    }
+    if (block.values.size() < count) fail_truncated(text, first_line, block.values.size(), count);
+    block.next_line = line;
+    return block;
+}
+
+namespace {
+
+// The numbers of a line when every field is one; nullopt otherwise (and for blank lines).
+std::optional<std::vector<double>> numeric_line(std::string_view line) {
+    const auto fields = split_fields(line);
+    if (fields.empty()) return std::nullopt;
+    std::vector<double> out;
+    for (auto f : fields) {
+        const auto v = parse_fortran_number(f);
+        if (!v) return std::nullopt;
+        out.push_back(*v);
+    }
+    return out;
+}
+
+bool nothing_numeric_after(const RecordText& text, std::size_t line) {
+    for (std::size_t i = line; i < text.lines.size(); ++i)
+        for (auto f : split_fields(text.lines[i]))
+            if (parse_fortran_number(f)) return false;
+    return true;
+}
+
+}  // namespace
+
+NumericRows read_numeric_rows(const RecordText& text, std::size_t from) {
+    NumericRows out;
+    std::size_t line = from;
+    while (line < text.lines.size() && !numeric_line(text.lines[line])) ++line;
+    if (line == text.lines.size()) fail_file(text, "no line of numbers found: the file holds no data");
+    out.first_line = line;
+    for (; line < text.lines.size(); ++line) {
+        if (trim(text.lines[line]).empty()) continue;
+        auto numbers = numeric_line(text.lines[line]);
+        if (numbers) {
+            out.rows.push_back(std::move(*numbers));
+            out.row_lines.push_back(line);
+            continue;
+        }
+        if (nothing_numeric_after(text, line)) {
+            out.trailer_line = line;
+            break;
+        }
+        for (const Token& t : blank_tokens(text.lines[line]))
+            for (auto f : split_fields(t.text))
+                if (!parse_fortran_number(f))
+                    fail_at(text, line, fmt::format("'{}' is not a number", f), t.column);
+        fail_at(text, line, "this line is not a row of numbers");
+    }
+    return out;
+}
+
+}  // namespace blockdem::records
