@@ -1,0 +1,32 @@
+#pragma once
+// Applies the contact law to every closed contact point and adds the forces and torques to the
+// two bodies. Pairs are visited in table order (sorted by body ids), so the sums, and therefore
+// the results, do not depend on how the pairs were found.
+//
+// Which mass the dashpots use: a pair's reduced mass m_a m_b / (m_a + m_b) (the dynamic body's
+// own mass against a fixed or driven one) shared equally by the pair's active points. A block
+// lying flat on the table has two points, each damped with M = m/2, so the two dashpots
+// together give the whole block the requested damping ratio and a flat impact rebounds with the
+// requested e; sizing each point with the whole mass would over-damp it by sqrt(2). A block on
+// one corner has M = m at that point, but the corner moves with the smaller effective mass
+// m_eff = 1 / (1/m + r_perp^2 / I), so its local damping ratio is h sqrt(m / m_eff) and a
+// one-corner impact rebounds less than e (docs/physics.md, tests/validation/test_restitution).
+#include "world/world.hpp"
+
+namespace blockdem {
+
+/// Energy dissipated by the contacts during this step [J].
+struct ContactDissipation {
+    double normal_dashpot_j = 0.0;
+    double shear_dashpot_j = 0.0;
+    double friction_j = 0.0;
+};
+
+/// Adds contact forces and torques to w.bodies.force_n / torque_n_m and updates each point's
+/// forces and history.
+ContactDissipation apply_contact_law(World& w);
+
+/// Elastic energy stored in all contact springs [J].
+double contact_elastic_energy(const World& w);
+
+}  // namespace blockdem

@@ -1,0 +1,40 @@
+#include "contact/contact_table.hpp"
+
+namespace blockdem {
+
+void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<BodyPair>& pairs,
+                           std::vector<PairContact>& scratch) {
+    scratch.clear();
+    scratch.reserve(pairs.size());
+    std::size_t old = 0;
+    for (const auto& [a, b] : pairs) {
+        while (old < table.size() && (table[old].a < a || (table[old].a == a && table[old].b < b))) ++old;
+        if (old < table.size() && table[old].a == a && table[old].b == b) {
+            scratch.push_back(table[old]);
+        } else {
+            PairContact fresh;
+            fresh.a = a;
+            fresh.b = b;
+            scratch.push_back(fresh);
+        }
+    }
+    table.swap(scratch);
+}
+
+void update_pair_geometry(PairContact& pair, const ContactManifold& manifold) {
+    ContactPoint updated[2];
+    for (std::uint32_t i = 0; i < manifold.count; ++i) {
+        ContactPoint& p = updated[i];
+        p.feature = manifold.points[i].feature;
+        p.point_m = manifold.points[i].point_m;
+        p.overlap_m = manifold.points[i].overlap_m;
+        for (std::uint32_t j = 0; j < pair.count; ++j)
+            if (pair.points[j].feature == p.feature) p.shear_spring_n = pair.points[j].shear_spring_n;
+    }
+    pair.count = manifold.count;
+    pair.normal = manifold.normal;
+    pair.reference = manifold.count > 0 ? manifold.reference : no_reference;
+    for (std::uint32_t i = 0; i < manifold.count; ++i) pair.points[i] = updated[i];
+}
+
+}  // namespace blockdem

@@ -1,0 +1,44 @@
+#pragma once
+// The contact table: one entry per candidate pair from the broad phase, holding that pair's
+// contact points and the history they carry from step to step (the shear spring force).
+// Entries are sorted by (a, b); a point is matched to last step's point with the same feature
+// id (the corner it belongs to), so a contact keeps its history while it stays closed and
+// starts from zero when it is new; a point that opened is dropped with its history.
+#include <cstdint>
+#include <vector>
+
+#include "broad_phase/grid_broad_phase.hpp"
+#include "geometry/polygon_contact.hpp"
+
+namespace blockdem {
+
+/// One contact point: its geometry, its forces and its history.
+struct ContactPoint {
+    std::uint32_t feature = 0;     ///< make_feature(owner, corner): the identity
+    Vec2 point_m;                  ///< [m] world position
+    double overlap_m = 0.0;        ///< [m]
+    double normal_force_n = 0.0;   ///< [N] on b along the pair normal
+    double shear_spring_n = 0.0;   ///< [N] shear spring force on b along the tangent (history)
+    double shear_force_n = 0.0;    ///< [N] total shear force on b along the tangent
+    bool sliding = false;
+};
+
+/// All contact points between bodies a < b.
+struct PairContact {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+    Vec2 normal;                              ///< unit, from a to b
+    std::uint32_t count = 0;                  ///< active points (0 = apart)
+    std::uint32_t reference = no_reference;   ///< reference edge last step (hysteresis)
+    ContactPoint points[2];
+};
+
+/// Replaces the candidate pairs after a broad-phase rebuild, keeping the state of pairs that
+/// remain candidates. Both lists are sorted, so this is one linear merge.
+void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<BodyPair>& pairs,
+                           std::vector<PairContact>& scratch);
+
+/// Updates a pair with this step's geometry: matched points keep their shear history.
+void update_pair_geometry(PairContact& pair, const ContactManifold& manifold);
+
+}  // namespace blockdem

@@ -1,0 +1,65 @@
+#include "dynamics/central_difference.hpp"
+
+namespace blockdem {
+
+void place_driven_bodies(World& w, double t_s) {
+    Bodies& b = w.bodies;
+    const MotionSample h = sample(w.table_motion.horizontal, t_s);
+    const MotionSample v = sample(w.table_motion.vertical, t_s);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (b.kind[i] != BodyKind::driven) continue;
+        b.position_m[i] = b.initial_position_m[i] + Vec2{h.displacement_m, v.displacement_m};
+        b.velocity_m_s[i] = {h.velocity_m_s, v.velocity_m_s};
+        b.velocity_at_t_m_s[i] = b.velocity_m_s[i];
+        b.acceleration_m_s2[i] = {h.acceleration_m_s2, v.acceleration_m_s2};
+    }
+}
+
+void update_velocities(World& w) {
+    Bodies& b = w.bodies;
+    const double dt = w.dt_s;
+    const MotionSample h = sample(w.table_motion.horizontal, w.time_s);
+    const MotionSample v = sample(w.table_motion.vertical, w.time_s);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (b.kind[i] == BodyKind::driven) {
+            b.acceleration_m_s2[i] = {h.acceleration_m_s2, v.acceleration_m_s2};
+            b.velocity_at_t_m_s[i] = {h.velocity_m_s, v.velocity_m_s};
+        }
+        if (b.kind[i] != BodyKind::dynamic) continue;
+        const Vec2 a = b.inv_mass_1_kg[i] * b.force_n[i];
+        const double alpha = b.inv_inertia_1_kg_m2[i] * b.torque_n_m[i];
+        const Vec2 v_old = b.velocity_m_s[i];
+        const double w_old = b.angular_velocity_rad_s[i];
+        b.acceleration_m_s2[i] = a;
+        b.angular_acceleration_rad_s2[i] = alpha;
+        b.velocity_m_s[i] = v_old + dt * a;
+        b.angular_velocity_rad_s[i] = w_old + dt * alpha;
+        b.velocity_at_t_m_s[i] = 0.5 * (v_old + b.velocity_m_s[i]);
+        b.angular_velocity_at_t_rad_s[i] = 0.5 * (w_old + b.angular_velocity_rad_s[i]);
+    }
+}
+
+double update_positions(World& w) {
+    Bodies& b = w.bodies;
+    const double dt = w.dt_s;
+    const double t_next = w.time_s + dt;
+    const Vec2 next_table{sample(w.table_motion.horizontal, t_next).displacement_m,
+                          sample(w.table_motion.vertical, t_next).displacement_m};
+    double table_work_j = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (b.kind[i] == BodyKind::dynamic) {
+            b.position_m[i] += dt * b.velocity_m_s[i];
+            b.rotation_rad[i] += dt * b.angular_velocity_rad_s[i];
+        } else if (b.kind[i] == BodyKind::driven) {
+            const Vec2 next = b.initial_position_m[i] + next_table;
+            const Vec2 moved = next - b.position_m[i];
+            // The contacts push on the table with force_n; the table does work -force . dx on them.
+            table_work_j -= dot(b.force_n[i], moved);
+            b.velocity_m_s[i] = (1.0 / dt) * moved;
+            b.position_m[i] = next;
+        }
+    }
+    return table_work_j;
+}
+
+}  // namespace blockdem

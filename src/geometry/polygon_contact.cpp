@@ -1,0 +1,131 @@
+#include "geometry/polygon_contact.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace blockdem {
+namespace {
+
+struct Axis {
+    double separation_m = -std::numeric_limits<double>::infinity();  ///< [m] < 0 when penetrating
+    std::uint32_t edge = 0;
+};
+
+// Separation of polygon other from edge i of poly: the least signed distance of other's corners
+// to the edge's line (negative: the deepest corner is inside by that much).
+double edge_separation(const PolygonView& poly, std::uint32_t i, const PolygonView& other) {
+    const Vec2 n = poly.normals[i];
+    const Vec2 p = poly.vertices[i];
+    double least = std::numeric_limits<double>::infinity();
+    for (std::uint32_t j = 0; j < other.count; ++j) least = std::min(least, dot(n, other.vertices[j] - p));
+    return least;
+}
+
+// The edge of poly that other penetrates least. Stops early once a separating edge is found.
+Axis best_axis(const PolygonView& poly, const PolygonView& other) {
+    Axis best;
+    for (std::uint32_t i = 0; i < poly.count; ++i) {
+        const double s = edge_separation(poly, i, other);
+        if (s > best.separation_m) best = {s, i};
+        if (s > 0.0) break;
+    }
+    return best;
+}
+
+// The edge of incident whose outward normal points most against the reference normal.
+std::uint32_t incident_edge(const PolygonView& incident, Vec2 reference_normal) {
+    std::uint32_t best = 0;
+    double most_against = std::numeric_limits<double>::infinity();
+    for (std::uint32_t i = 0; i < incident.count; ++i) {
+        const double d = dot(incident.normals[i], reference_normal);
+        if (d < most_against) {
+            most_against = d;
+            best = i;
+        }
+    }
+    return best;
+}
+
+struct ClipPoint {
+    Vec2 p;
+    std::uint32_t feature;
+};
+
+// Keeps the part of segment (in[0], in[1]) where dot(direction, x) <= offset. A point made by
+// the cut takes the feature id "cut", the corner of the reference edge that the plane passes.
+int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double offset, std::uint32_t cut) {
+    int n = 0;
+    const double d0 = dot(direction, in[0].p) - offset;
+    const double d1 = dot(direction, in[1].p) - offset;
+    if (d0 <= 0.0) out[n++] = in[0];
+    if (d1 <= 0.0) out[n++] = in[1];
+    if (d0 * d1 < 0.0) {
+        const double f = d0 / (d0 - d1);
+        out[n++] = {in[0].p + f * (in[1].p - in[0].p), cut};
+    }
+    return n;
+}
+
+}  // namespace
+
+bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
+                      ContactManifold& manifold) {
+    manifold.count = 0;
+    const Axis on_a = best_axis(a, b);
+    if (on_a.separation_m > 0.0) return false;
+    const Axis on_b = best_axis(b, a);
+    if (on_b.separation_m > 0.0) return false;
+
+    // Choose the reference edge: the least penetration, but keep last step's edge within a
+    // small tolerance so that nearly equal candidates do not alternate.
+    std::uint32_t owner = on_a.separation_m >= on_b.separation_m ? 0u : 1u;
+    std::uint32_t edge = owner == 0 ? on_a.edge : on_b.edge;
+    if (previous_reference != no_reference) {
+        const std::uint32_t prev_owner = feature_owner(previous_reference);
+        const std::uint32_t prev_edge = feature_vertex(previous_reference);
+        const PolygonView& ref = prev_owner == 0 ? a : b;
+        const PolygonView& other = prev_owner == 0 ? b : a;
+        if (prev_edge < ref.count) {
+            const double best = std::max(on_a.separation_m, on_b.separation_m);
+            const double tolerance = 0.02 * std::abs(best) + 1e-15;
+            if (edge_separation(ref, prev_edge, other) >= best - tolerance) {
+                owner = prev_owner;
+                edge = prev_edge;
+            }
+        }
+    }
+    const PolygonView& ref = owner == 0 ? a : b;
+    const PolygonView& inc = owner == 0 ? b : a;
+    const std::uint32_t inc_owner = 1u - owner;
+
+    const std::uint32_t r1 = edge;
+    const std::uint32_t r2 = (edge + 1) % ref.count;
+    const Vec2 n = ref.normals[edge];
+    const Vec2 v1 = ref.vertices[r1];
+    const Vec2 v2 = ref.vertices[r2];
+    const Vec2 tangent = normalized(v2 - v1);
+
+    const std::uint32_t i1 = incident_edge(inc, n);
+    const std::uint32_t i2 = (i1 + 1) % inc.count;
+    const ClipPoint segment[2] = {{inc.vertices[i1], make_feature(inc_owner, i1)},
+                                  {inc.vertices[i2], make_feature(inc_owner, i2)}};
+    ClipPoint once[2];
+    ClipPoint twice[2];
+    // Keep what lies between the side planes through v1 and v2.
+    if (clip_segment(segment, once, -tangent, -dot(tangent, v1), make_feature(owner, r1)) < 2) return false;
+    if (clip_segment(once, twice, tangent, dot(tangent, v2), make_feature(owner, r2)) < 2) return false;
+
+    manifold.normal = owner == 0 ? n : -n;
+    manifold.reference = make_feature(owner, edge);
+    for (const ClipPoint& c : twice) {
+        const double overlap = -dot(n, c.p - v1);
+        if (overlap <= 0.0) continue;
+        ContactGeometry& g = manifold.points[manifold.count++];
+        g.point_m = c.p + (0.5 * overlap) * n;
+        g.overlap_m = overlap;
+        g.feature = c.feature;
+    }
+    return manifold.count > 0;
+}
+
+}  // namespace blockdem

@@ -1,0 +1,58 @@
+#pragma once
+// Narrow phase: the contact points between two convex polygons, in Cundall's corner-to-edge
+// model. Every contact point is a corner of one body pressed into an edge of the other; a block
+// lying flat on the table touches at its two bottom corners, a rocking block at one.
+//
+// Method: separating-axis test over the edge normals of both polygons. The edge with the least
+// penetration is the reference edge; its normal is the contact normal. The edge of the other
+// polygon facing it most directly (the incident edge) is clipped to the reference edge's extent,
+// and every clipped point below the reference edge is a contact point (at most 2). A point is
+// either a corner of the incident polygon or, where clipping cut the incident edge, the point
+// facing a corner of the reference polygon. Its feature id names that corner, so a contact keeps
+// its identity (and its shear history) whichever of two parallel edges is chosen as reference.
+//
+// Near-degenerate cases: when two candidate reference edges penetrate almost equally (parallel
+// faces, corner against corner) the previous step's reference edge is kept unless another edge
+// penetrates clearly less (hysteresis), so the normal does not flip back and forth between steps.
+#include <cstdint>
+
+#include "geometry/vec2.hpp"
+
+namespace blockdem {
+
+/// A convex counter-clockwise polygon in world coordinates, viewed without owning it.
+struct PolygonView {
+    const Vec2* vertices = nullptr;  ///< [m]
+    const Vec2* normals = nullptr;   ///< outward unit normal of edge i (vertex i to i+1)
+    std::uint32_t count = 0;
+};
+
+/// A feature id: the polygon that owns the corner (0 = a, 1 = b) and the corner's index.
+constexpr std::uint32_t make_feature(std::uint32_t owner, std::uint32_t vertex) { return (owner << 16) | vertex; }
+constexpr std::uint32_t feature_owner(std::uint32_t feature) { return feature >> 16; }
+constexpr std::uint32_t feature_vertex(std::uint32_t feature) { return feature & 0xffffu; }
+
+/// One contact point between polygons a and b.
+struct ContactGeometry {
+    Vec2 point_m;              ///< [m] midway between the two surfaces
+    double overlap_m = 0.0;    ///< [m] > 0 in compression
+    std::uint32_t feature = 0; ///< make_feature(owner, corner)
+};
+
+/// The contact between polygons a and b: a shared normal (from a to b) and 0 to 2 points.
+struct ContactManifold {
+    Vec2 normal;                  ///< unit normal pointing from a to b
+    std::uint32_t count = 0;      ///< number of points (0: separated)
+    ContactGeometry points[2];
+    std::uint32_t reference = 0;  ///< make_feature(owner, edge) of the reference edge, for hysteresis
+};
+
+/// No reference edge from a previous step.
+inline constexpr std::uint32_t no_reference = 0xffffffffu;
+
+/// Fills manifold with the contact points of a and b. previous_reference: the reference edge
+/// chosen at the last step for this pair (no_reference if none). Returns true if they touch.
+bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
+                      ContactManifold& manifold);
+
+}  // namespace blockdem

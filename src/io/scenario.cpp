@@ -1,0 +1,266 @@
+#include "io/scenario.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "geometry/polygon.hpp"
+#include "io/overrides.hpp"
+#include "io/record_motion_keys.hpp"
+#include "io/time_series_csv.hpp"
+#include "laws/restitution.hpp"
+
+namespace blockdem {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+SimulationSettings read_settings(TableReader t) {
+    SimulationSettings s;
+    s.duration_s = t.positive("duration");
+    s.dt_s = t.optional_positive("dt");
+    s.dt_safety = t.optional_positive("dt_safety").value_or(s.dt_safety);
+    if (s.dt_safety > 1.0) t.fail("dt_safety", fmt::format("must be <= 1 (a fraction of the stable limit), got {}", s.dt_safety));
+    s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
+    s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
+    s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
+    t.reject_unknown_keys();
+    return s;
+}
+
+// Contact parameters from t, starting from base (the defaults of [contact] for a pair).
+// Damping: h_n directly, or e with e_meaning = "paper" (default) or "rebound".
+ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_all) {
+    ContactParameters p = base;
+    auto required = [&](const char* key, double fallback) {
+        return require_all ? t.positive(key) : t.optional_positive(key).value_or(fallback);
+    };
+    p.kn_N_m = required("kn", base.kn_N_m);
+    p.ks_N_m = required("ks", base.ks_N_m);
+    if (auto mu = t.optional_number("mu")) {
+        if (*mu < 0.0) t.fail("mu", fmt::format("must be >= 0, got {}", *mu));
+        p.mu = *mu;
+    } else if (require_all) {
+        t.fail("", fmt::format("missing required key '{}.mu'", t.path()));
+    }
+    const auto e = t.optional_number("e");
+    const auto h_n = t.optional_number("h_n");
+    const std::string meaning = t.choice("e_meaning", {"paper", "rebound"}, "paper");
+    if (e && h_n) t.fail("h_n", "give either e (coefficient of restitution) or h_n (damping ratio), not both");
+    if (e) {
+        if (!(*e > 0.0 && *e <= 1.0)) t.fail("e", fmt::format("must be in (0, 1], got {}", *e));
+        p.h_n = damping_ratio_for(*e, meaning == "paper" ? RestitutionMeaning::paper : RestitutionMeaning::rebound);
+    } else if (h_n) {
+        if (*h_n < 0.0 || (meaning == "paper" && *h_n >= 1.0)) t.fail("h_n", fmt::format("must be in [0, 1), got {}", *h_n));
+        p.h_n = *h_n;
+    }
+    if (auto h_s = t.optional_number("h_s")) {
+        if (*h_s < 0.0) t.fail("h_s", fmt::format("must be >= 0, got {}", *h_s));
+        p.h_s = *h_s;
+    }
+    return p;
+}
+
+MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
+    ContactParameters defaults;
+    defaults.h_s = 1.0;  // the paper's recommendation
+    defaults = read_contact_parameters(t, defaults, true);
+    MaterialPairs pairs;
+    pairs.materials.push_back("default");
+    for (const BodyDef& b : bodies)
+        if (std::find(pairs.materials.begin(), pairs.materials.end(), b.material) == pairs.materials.end())
+            pairs.materials.push_back(b.material);
+    pairs.parameters.assign(pairs.materials.size() * pairs.materials.size(), defaults);
+    std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
+    for (TableReader pair : t.table_array("pairs")) {
+        const auto names = [&] {
+            pair.has("materials");
+            const auto* arr = pair.raw().get_as<toml::array>("materials");
+            if (!arr || arr->size() != 2 || !(*arr)[0].is_string() || !(*arr)[1].is_string())
+                pair.fail("materials", "must be a list of two material names, e.g. [\"stone\", \"table\"]");
+            return std::pair{*(*arr)[0].value<std::string>(), *(*arr)[1].value<std::string>()};
+        }();
+        std::uint32_t ids[2];
+        for (int k = 0; k < 2; ++k) {
+            const std::string& m = k == 0 ? names.first : names.second;
+            try {
+                ids[k] = pairs.id(m);
+            } catch (const std::out_of_range&) {
+                const std::string guess = nearest(m, pairs.materials);
+                pair.fail("materials", fmt::format("no body uses material '{}'{}; materials in use: {}", m,
+                                                   guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess),
+                                                   fmt::join(pairs.materials, ", ")));
+            }
+        }
+        if (!seen.insert({std::min(ids[0], ids[1]), std::max(ids[0], ids[1])}).second)
+            pair.fail("materials", fmt::format("the pair {} / {} is given twice", names.first, names.second));
+        pairs.set(ids[0], ids[1], read_contact_parameters(pair, defaults, false));
+        pair.reject_unknown_keys();
+    }
+    t.reject_unknown_keys();
+    return pairs;
+}
+
+std::optional<double> read_angle(TableReader& t, const std::string& base) {
+    const auto rad = t.optional_number(base);
+    const auto deg = t.optional_number(base + "_deg");
+    if (rad && deg) t.fail(base + "_deg", fmt::format("give either {} [rad] or {}_deg [deg], not both", base, base));
+    if (deg) return *deg * pi / 180.0;
+    return rad;
+}
+
+BodyDef read_body(TableReader t) {
+    BodyDef b;
+    b.name = t.string("name");
+    const std::string kind = t.choice("kind", {"dynamic", "fixed", "driven"}, "dynamic");
+    b.kind = kind == "dynamic" ? BodyKind::dynamic : kind == "fixed" ? BodyKind::fixed : BodyKind::driven;
+    const std::string shape = t.choice("shape", {"rectangle", "polygon"}, "");
+    const double rotation = read_angle(t, "rotation").value_or(0.0);
+    if (shape == "rectangle") {
+        const double width = t.positive("width");
+        const double height = t.positive("height");
+        const auto center = t.optional_vec2("center");
+        if (!center) t.fail("", fmt::format("missing required key '{}.center' ([x, y] in m)", t.path()));
+        b.vertices_m = rectangle_vertices(width, height, *center, rotation);
+    } else {
+        b.vertices_m = t.vec2_list("vertices");
+        if (signed_area(b.vertices_m) < 0.0) std::reverse(b.vertices_m.begin(), b.vertices_m.end());
+        if (auto problem = convexity_problem(b.vertices_m)) t.fail("vertices", *problem);
+        if (rotation != 0.0) {
+            const Vec2 c = polygon_properties(b.vertices_m).centroid_m;
+            const Rotation r = Rotation::from_angle(rotation);
+            for (Vec2& v : b.vertices_m) v = c + r.apply(v - c);
+        }
+    }
+    b.material = t.optional_string("material").value_or("default");
+    b.thickness_m = t.optional_positive("thickness").value_or(1.0);
+    b.mass_kg = t.optional_positive("mass");
+    b.inertia_kg_m2 = t.optional_positive("inertia");
+    const auto density = t.optional_positive("density");
+    if (density && b.mass_kg) t.fail("mass", "give either density or mass, not both");
+    if (density) b.density_kg_m3 = *density;
+    if (b.kind == BodyKind::dynamic && !density && !b.mass_kg)
+        t.fail("", fmt::format("body '{}' needs 'density' [kg/m^3] or 'mass' [kg]", b.name));
+    b.velocity_m_s = t.optional_vec2("velocity").value_or(Vec2{});
+    b.angular_velocity_rad_s = t.number_or("angular_velocity", 0.0);
+    b.record = t.boolean_or("record", true);
+    t.reject_unknown_keys();
+    return b;
+}
+
+double read_period(TableReader& t) {
+    const auto period = t.optional_positive("period");
+    const auto frequency = t.optional_positive("frequency");
+    if (period && frequency) t.fail("frequency", "give either period [s] or frequency [Hz], not both");
+    if (!period && !frequency) t.fail("", fmt::format("missing '{}.period' [s] or '{}.frequency' [Hz]", t.path(), t.path()));
+    return period ? *period : 1.0 / *frequency;
+}
+
+ComponentMotion read_component(TableReader t, const std::filesystem::path& scenario_dir) {
+    const std::string type =
+        t.choice("type", {"sine", "one_sine", "one_cosine", "ricker", "csv", "record", "synthetic", "none"}, "");
+    ComponentMotion motion = RestMotion{};
+    if (type == "record") return read_record_motion(t, scenario_dir);
+    if (type == "synthetic") return read_synthetic_motion(t);
+    if (type == "csv") return read_time_series_csv_keys(t, scenario_dir);
+    if (type == "sine") {
+        SineMotion m;
+        m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
+        m.period_s = read_period(t);
+        m.phase_rad = read_angle(t, "phase").value_or(0.0);
+        m.start_s = t.number_or("start", 0.0);
+        m.cycles = t.number_or("cycles", 0.0);
+        if (m.cycles < 0.0) t.fail("cycles", "must be >= 0 (0: no end)");
+        motion = m;
+    } else if (type == "one_sine" || type == "one_cosine") {
+        PulseMotion m;
+        m.shape = type == "one_sine" ? PulseMotion::Shape::one_sine : PulseMotion::Shape::one_cosine;
+        m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
+        m.period_s = read_period(t);
+        m.start_s = t.number_or("start", 0.0);
+        motion = m;
+    } else if (type == "ricker") {
+        RickerMotion m;
+        m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
+        m.peak_frequency_hz = t.positive("frequency");
+        m.center_time_s = t.optional_number("center_time").value_or(1.5 / m.peak_frequency_hz);
+        motion = m;
+    }
+    t.reject_unknown_keys();
+    return motion;
+}
+
+TableMotion read_table_motion(TableReader t, const std::filesystem::path& scenario_dir) {
+    TableMotion m;
+    if (auto h = t.optional_table("horizontal")) m.horizontal = read_component(*h, scenario_dir);
+    if (auto v = t.optional_table("vertical")) m.vertical = read_component(*v, scenario_dir);
+    t.reject_unknown_keys();
+    return m;
+}
+
+}  // namespace
+
+double acceleration_unit_factor(TableReader& keys, const std::string& key) {
+    const std::string unit = keys.choice(key, {"m/s^2", "gal", "g"}, "m/s^2");
+    if (unit == "gal") return 0.01;
+    if (unit == "g") return standard_gravity_m_s2;
+    return 1.0;
+}
+
+toml::table load_toml_file(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    if (!in) throw InputError({file.string(), "", 0, 0}, "cannot open the file (does it exist?)");
+    std::stringstream text;
+    text << in.rdbuf();
+    try {
+        return toml::parse(text.str(), file.string());
+    } catch (const toml::parse_error& e) {
+        throw InputError({file.string(), "", static_cast<int>(e.source().begin.line), static_cast<int>(e.source().begin.column)},
+                         fmt::format("TOML syntax error: {}", e.description()));
+    }
+}
+
+Model read_model(const toml::table& root, const std::string& file, const std::filesystem::path& scenario_dir) {
+    TableReader top(root, file, "");
+    Model model;
+    model.settings = read_settings(top.table("simulation"));
+    const std::vector<TableReader> body_tables = top.table_array("bodies");
+    if (body_tables.empty()) top.fail("", "the scenario has no [[bodies]]");
+    std::set<std::string> names;
+    for (const TableReader& bt : body_tables) {
+        model.bodies.push_back(read_body(bt));
+        if (!names.insert(model.bodies.back().name).second)
+            bt.fail("name", fmt::format("two bodies are named '{}'", model.bodies.back().name));
+    }
+    model.contact = read_contact(top.table("contact"), model.bodies);
+    if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
+    top.allow({"title", "description"});
+    top.reject_unknown_keys();
+    return model;
+}
+
+LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+    LoadedScenario s;
+    s.file = file;
+    s.root = load_toml_file(file);
+    try {
+        apply_overrides(s.root, overrides);
+    } catch (const InputError& e) {
+        InputLocation where = e.where();
+        where.file = file.string();
+        throw InputError(where, e.problem());
+    }
+    s.model = read_model(s.root, file.string(), file.parent_path());
+    try {
+        s.world = build_world(s.model);
+    } catch (const ModelError& e) {
+        throw InputError({file.string(), "", 0, 0}, e.what());
+    }
+    return s;
+}
+
+}  // namespace blockdem

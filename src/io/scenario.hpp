@@ -1,0 +1,41 @@
+#pragma once
+// Scenario files (TOML, docs/scenario.md): read, overridden with --set, validated key by key,
+// and turned into a Model. Every problem is an InputError naming file, key and line.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "io/toml_reader.hpp"
+#include "world/model.hpp"
+#include "world/world.hpp"
+
+namespace blockdem {
+
+/// Standard gravity [m/s^2], used to convert accelerations given in g.
+inline constexpr double standard_gravity_m_s2 = 9.80665;
+
+/// Parses a TOML file. Throws InputError for a missing file or a syntax error (with its line).
+toml::table load_toml_file(const std::filesystem::path& file);
+
+/// Reads and validates a whole scenario. scenario_dir resolves relative file names.
+Model read_model(const toml::table& root, const std::string& file_for_messages,
+                 const std::filesystem::path& scenario_dir);
+
+/// The factor that turns a value in the unit named by key "unit" (m/s^2, gal, g) into m/s^2.
+double acceleration_unit_factor(TableReader& keys, const std::string& key = "unit");
+
+/// Everything a command needs: the file, the overridden TOML, the model and the world.
+struct LoadedScenario {
+    std::filesystem::path file;
+    toml::table root;   ///< after --set overrides
+    Model model;
+    World world;
+};
+
+/// Loads, overrides, validates and builds. A model error (overlap at start, unstable dt) is
+/// reported as an InputError naming the file.
+LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+
+}  // namespace blockdem

@@ -1,0 +1,25 @@
+#pragma once
+// summary.json: per body the peak rotation, overturning, sliding and rocking, displacement
+// relative to the table; for the run its status and the energy balance. Written at the end of
+// a run, and also when the run stops on an error (status "failed" with the message).
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "world/response_monitor.hpp"
+#include "world/world.hpp"
+
+namespace blockdem {
+
+struct RunInfo {
+    std::string scenario;        ///< scenario file
+    std::string status;          ///< "completed" or "failed"
+    std::string error;           ///< the message when failed
+    double wall_s = 0.0;         ///< [s]
+};
+
+nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, const RunInfo& info);
+void write_summary(const std::filesystem::path& file, const nlohmann::json& summary);
+
+}  // namespace blockdem

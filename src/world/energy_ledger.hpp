@@ -1,0 +1,33 @@
+#pragma once
+// The energy balance of a run. Stored energies are the current values; dissipated energies and
+// the table's work are running sums. With E0 the initial stored energy,
+//   kinetic + gravitational + elastic + dissipated - table_work = E0   (up to the scheme's error),
+// and balance_error() is the mismatch relative to the largest term.
+#include <algorithm>
+#include <cmath>
+
+namespace blockdem {
+
+struct EnergyLedger {
+    double kinetic_j = 0.0;          ///< [J] now
+    double gravitational_j = 0.0;    ///< [J] now, m g y summed over dynamic bodies
+    double elastic_j = 0.0;          ///< [J] now, stored in contact springs
+    double normal_dashpot_j = 0.0;   ///< [J] dissipated so far
+    double shear_dashpot_j = 0.0;    ///< [J] dissipated so far
+    double friction_j = 0.0;         ///< [J] dissipated so far
+    double table_work_j = 0.0;       ///< [J] work done by driven bodies on the rest so far
+    double initial_j = 0.0;          ///< [J] stored energy at t = 0
+    double initial_gravitational_j = 0.0;  ///< [J] gravitational part of initial_j
+
+    double stored_j() const { return kinetic_j + gravitational_j + elastic_j; }
+    double dissipated_j() const { return normal_dashpot_j + shear_dashpot_j + friction_j; }
+    double residual_j() const { return stored_j() + dissipated_j() - table_work_j - initial_j; }
+    /// The largest term of the balance [J]; gravitational energy counts by its change since t = 0.
+    double scale_j() const {
+        return std::max({kinetic_j, std::abs(gravitational_j - initial_gravitational_j), elastic_j, dissipated_j(),
+                         std::abs(table_work_j), 1e-300});
+    }
+    double balance_error() const { return std::abs(residual_j()) / scale_j(); }
+};
+
+}  // namespace blockdem

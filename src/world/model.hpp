@@ -1,0 +1,68 @@
+#pragma once
+// What a simulation is built from: plain definitions with defaults, filled by the scenario
+// parser (io/) or by the scene builders (scenes/). No parsing and no printing here.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/vec2.hpp"
+#include "laws/contact_parameters.hpp"
+#include "motion/table_motion.hpp"
+
+namespace blockdem {
+
+enum class BodyKind : std::uint8_t {
+    dynamic,  ///< moves under gravity and contact forces (3 degrees of freedom)
+    fixed,    ///< never moves
+    driven,   ///< follows the table motion exactly (a shaking table); rotation fixed
+};
+
+const char* to_string(BodyKind kind);
+
+/// One rigid convex polygon. Mass and inertia come from density and thickness unless given.
+struct BodyDef {
+    std::string name;
+    BodyKind kind = BodyKind::dynamic;
+    std::vector<Vec2> vertices_m;            ///< [m] world positions at t = 0, counter-clockwise, convex
+    std::string material = "default";
+    double density_kg_m3 = 0.0;              ///< [kg/m^3]
+    double thickness_m = 1.0;                ///< [m] out-of-plane thickness
+    std::optional<double> mass_kg;           ///< [kg] overrides density * area * thickness
+    std::optional<double> inertia_kg_m2;     ///< [kg m^2] about the centroid; default from geometry
+    Vec2 velocity_m_s;                       ///< [m/s] initial velocity of the centroid
+    double angular_velocity_rad_s = 0.0;     ///< [rad/s] initial, counter-clockwise
+    bool record = true;                      ///< write this body to history.csv
+};
+
+/// Contact parameters for every pair of materials (symmetric).
+struct MaterialPairs {
+    std::vector<std::string> materials;          ///< index = material id
+    std::vector<ContactParameters> parameters;   ///< materials.size()^2, row-major
+
+    std::uint32_t id(const std::string& material) const;  ///< throws std::out_of_range
+    const ContactParameters& at(std::uint32_t i, std::uint32_t j) const {
+        return parameters[i * materials.size() + j];
+    }
+    void set(std::uint32_t i, std::uint32_t j, const ContactParameters& p);
+    /// One material, one parameter set.
+    static MaterialPairs uniform(const ContactParameters& p);
+};
+
+struct SimulationSettings {
+    double duration_s = 1.0;                 ///< [s]
+    std::optional<double> dt_s;              ///< [s]; nullopt: dt_safety * critical time step
+    double dt_safety = 0.2;                  ///< [-] fraction of the critical step used when dt is derived
+    double gravity_m_s2 = 9.81;              ///< [m/s^2], acting in -y
+    double output_interval_s = 1e-3;         ///< [s] between rows of history.csv
+    double max_energy_error = 0.5;           ///< [-] stop when the balance error exceeds this fraction
+};
+
+struct Model {
+    SimulationSettings settings;
+    std::vector<BodyDef> bodies;
+    MaterialPairs contact;
+    TableMotion table_motion;
+};
+
+}  // namespace blockdem

@@ -1,0 +1,49 @@
+#pragma once
+// Watches every dynamic body at every step and keeps what the summary reports: peak rotation,
+// whether and when it overturned, peak and final displacement relative to the table, and
+// whether it slid or rocked (definitions in docs/outputs.md).
+//
+// Overturning: a body resting on its base tips about a base corner; past the critical angle
+// alpha (the angle at that corner between the vertical and the line to the centroid, atan(b/h)
+// for a b x h half-size rectangle) gravity no longer brings it back. A body has overturned when
+// it ends the run rotated beyond alpha; the overturning time is the last time it crossed alpha
+// outwards.
+#include <cstdint>
+#include <vector>
+
+#include "world/world.hpp"
+
+namespace blockdem {
+
+struct BodyResponse {
+    double alpha_ccw_rad = 0.0;          ///< [rad] critical angle tipping counter-clockwise (towards -x)
+    double alpha_cw_rad = 0.0;           ///< [rad] critical angle tipping clockwise (towards +x)
+    double peak_abs_rotation_rad = 0.0;  ///< [rad]
+    double time_of_peak_rotation_s = 0.0;///< [s]
+    bool beyond_alpha = false;           ///< rotated past alpha now
+    double last_crossing_s = -1.0;       ///< [s] last outward crossing of alpha, -1 if never
+    double peak_abs_relative_displacement_m = 0.0;  ///< [m] centroid displacement relative to the table
+    Vec2 relative_displacement_m;        ///< [m] now
+    double sliding_time_s = 0.0;         ///< [s] time with at least one of its contact points sliding
+    double rocking_threshold_rad = 0.0;  ///< [rad] rotation above which it counts as rocking (0.01 alpha)
+
+    bool overturned() const { return beyond_alpha; }
+    bool rocked() const { return peak_abs_rotation_rad >= rocking_threshold_rad; }
+};
+
+class ResponseMonitor {
+public:
+    explicit ResponseMonitor(const World& w);
+    /// Called once per step with the state at t.
+    void observe(const World& w);
+    const std::vector<BodyResponse>& responses() const { return responses_; }
+    /// The driven body relative to which displacements are measured, or -1 for the ground.
+    std::int64_t reference_body() const { return reference_; }
+
+private:
+    std::vector<BodyResponse> responses_;
+    std::vector<std::uint8_t> sliding_now_;
+    std::int64_t reference_ = -1;
+};
+
+}  // namespace blockdem

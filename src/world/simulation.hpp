@@ -1,0 +1,42 @@
+#pragma once
+// The run loop: steps a world from t = 0 to the end, calls the monitor at every step and the
+// recorders at every output time, and reports progress through a callback (the library never
+// prints). The state handed to observers is the complete state at t (see step.hpp).
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "world/world.hpp"
+
+namespace blockdem {
+
+/// Something that reads the world at output times (writers).
+class Recorder {
+public:
+    virtual ~Recorder() = default;
+    virtual void record(const World& w) = 0;
+    /// Called once after the last record, and also when the run stops on an error.
+    virtual void finish(const World&) {}
+};
+
+struct RunProgress {
+    double time_s = 0.0;         ///< [s] simulated
+    double end_time_s = 0.0;     ///< [s]
+    std::int64_t steps = 0;
+    double wall_s = 0.0;         ///< [s] elapsed
+};
+
+struct RunOptions {
+    std::vector<Recorder*> recorders;
+    std::function<void(const World&)> on_step;              ///< every step (monitors)
+    std::function<void(const RunProgress&)> on_progress;    ///< about once per second of wall time
+};
+
+/// Number of steps to cover settings.duration_s, and steps between outputs.
+std::int64_t total_steps(const World& w);
+std::int64_t steps_per_output(const World& w);
+
+/// Runs to the end. Recorders are finished even when a SimulationError stops the run.
+void run_simulation(World& w, const RunOptions& options);
+
+}  // namespace blockdem

@@ -1,0 +1,160 @@
+#include "world/step.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "contact/contact_forces.hpp"
+#include "geometry/polygon.hpp"
+#include "dynamics/central_difference.hpp"
+#include "world/simulation_error.hpp"
+
+namespace blockdem {
+
+void update_body_geometry(World& w) {
+    Bodies& b = w.bodies;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
+        const std::uint32_t first = b.vertex_begin[i];
+        const std::uint32_t count = b.vertex_count[i];
+        for (std::uint32_t k = 0; k < count; ++k)
+            b.world_vertices_m[first + k] = b.position_m[i] + r.apply(b.local_vertices_m[first + k]);
+        for (std::uint32_t k = 0; k < count; ++k)
+            b.world_normals[first + k] =
+                edge_normal(b.world_vertices_m[first + k], b.world_vertices_m[first + (k + 1) % count]);
+    }
+}
+
+bool broad_phase_is_stale(const World& w) {
+    const Bodies& b = w.bodies;
+    if (b.position_at_rebuild_m.size() != b.size()) return true;
+    const double allowed = 0.5 * w.broad_phase_margin_m;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        // Largest motion of any point of the body since the rebuild: translation + r |rotation|.
+        const double moved = length(b.position_m[i] - b.position_at_rebuild_m[i]) +
+                             b.bounding_radius_m[i] * std::abs(b.rotation_rad[i] - b.rotation_at_rebuild_rad[i]);
+        if (moved > allowed) return true;
+    }
+    return false;
+}
+
+void rebuild_candidate_pairs(World& w) {
+    Bodies& b = w.bodies;
+    const double pad = 0.5 * w.broad_phase_margin_m;
+    w.boxes.resize(b.size());
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        Aabb box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
+        for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k) {
+            const Vec2 v = b.world_vertices_m[b.vertex_begin[i] + k];
+            box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y)};
+            box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y)};
+        }
+        w.boxes[i] = {box.lo - Vec2{pad, pad}, box.hi + Vec2{pad, pad}};
+    }
+    w.broad_phase.find_pairs(w.boxes, b.is_static, w.candidate_pairs);
+    merge_candidate_pairs(w.contacts, w.candidate_pairs, w.contacts_scratch);
+    b.position_at_rebuild_m = b.position_m;
+    b.rotation_at_rebuild_rad = b.rotation_rad;
+    ++w.broad_phase_rebuilds;
+}
+
+void update_contact_geometry(World& w) {
+    const Bodies& b = w.bodies;
+    for (PairContact& pair : w.contacts) {
+        const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
+                            b.vertex_count[pair.a]};
+        const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
+                            b.vertex_count[pair.b]};
+        ContactManifold manifold;
+        collide_polygons(a, c, pair.reference, manifold);
+        update_pair_geometry(pair, manifold);
+    }
+}
+
+namespace {
+
+double gravitational_energy(const World& w) {
+    double energy = 0.0;
+    for (std::size_t i = 0; i < w.bodies.size(); ++i)
+        if (w.bodies.kind[i] == BodyKind::dynamic)
+            energy += w.bodies.mass_kg[i] * w.settings.gravity_m_s2 * w.bodies.position_m[i].y;
+    return energy;
+}
+
+double kinetic_energy(const World& w) {
+    double energy = 0.0;
+    const Bodies& b = w.bodies;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (b.kind[i] != BodyKind::dynamic) continue;
+        const Vec2 v = b.velocity_at_t_m_s[i];
+        const double omega = b.angular_velocity_at_t_rad_s[i];
+        energy += 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
+    }
+    return energy;
+}
+
+}  // namespace
+
+void compute_forces(World& w) {
+    Bodies& b = w.bodies;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        b.force_n[i] = {0.0, -w.settings.gravity_m_s2 * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
+        b.torque_n_m[i] = 0.0;
+    }
+    const ContactDissipation lost = apply_contact_law(w);
+    w.energy.normal_dashpot_j += lost.normal_dashpot_j;
+    w.energy.shear_dashpot_j += lost.shear_dashpot_j;
+    w.energy.friction_j += lost.friction_j;
+}
+
+void update_energy(World& w) {
+    w.energy.kinetic_j = kinetic_energy(w);
+    w.energy.gravitational_j = gravitational_energy(w);
+    w.energy.elastic_j = contact_elastic_energy(w);
+}
+
+void initialise_energy(World& w) {
+    update_energy(w);
+    w.energy.initial_j = w.energy.stored_j();
+    w.energy.initial_gravitational_j = w.energy.gravitational_j;
+}
+
+void check_stability(const World& w) {
+    const Bodies& b = w.bodies;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (!std::isfinite(b.position_m[i].x) || !std::isfinite(b.position_m[i].y) || !std::isfinite(b.rotation_rad[i]) ||
+            !std::isfinite(b.velocity_m_s[i].x) || !std::isfinite(b.velocity_m_s[i].y))
+            throw SimulationError(fmt::format("unstable: the state of body '{}' is not finite at t = {:.6g} s (step {}); "
+                                              "reduce dt (now {:g} s, stable limit {:.4g} s)",
+                                              b.name[i], w.time_s, w.step_index, w.dt_s, w.critical_dt_s));
+    }
+    const double error = w.energy.balance_error();
+    if (w.step_index > 100 && w.energy.scale_j() > 1e-9 && error > w.settings.max_energy_error) {
+        std::size_t fastest = 0;
+        for (std::size_t i = 1; i < b.size(); ++i)
+            if (length(b.velocity_m_s[i]) > length(b.velocity_m_s[fastest])) fastest = i;
+        throw SimulationError(fmt::format(
+            "unstable: energy balance error {:.3g} (of the largest term, {:.4g} J) exceeds {:g} at t = {:.6g} s "
+            "(step {}); fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s, stable limit {:.4g} s)",
+            error, w.energy.scale_j(), w.settings.max_energy_error, w.time_s, w.step_index, b.name[fastest],
+            length(b.velocity_m_s[fastest]), w.dt_s, w.critical_dt_s));
+    }
+}
+
+void step_begin(World& w) {
+    update_body_geometry(w);
+    if (broad_phase_is_stale(w)) rebuild_candidate_pairs(w);
+    update_contact_geometry(w);
+    compute_forces(w);
+    update_velocities(w);
+    update_energy(w);
+    check_stability(w);
+}
+
+void step_end(World& w) {
+    w.energy.table_work_j += update_positions(w);
+    w.time_s += w.dt_s;
+    ++w.step_index;
+}
+
+}  // namespace blockdem

@@ -1,0 +1,36 @@
+#pragma once
+// One time step, written once, in one order (docs/architecture.md):
+//   1. body geometry: corners and edge normals at t;
+//   2. broad phase: candidate pairs, rebuilt only when a body has moved half the margin;
+//   3. narrow phase: contact points with feature ids, matched with last step's (history);
+//   4. forces: gravity, then the contact law, summed in pair order (deterministic);
+//   5. integration: velocities to t + dt/2; the energy ledger and the stability check at t;
+//      [the state at t is complete here: recorders read it]
+//   6. positions to t + dt (driven bodies exactly), and time advances.
+#include "world/world.hpp"
+
+namespace blockdem {
+
+void update_body_geometry(World& w);
+bool broad_phase_is_stale(const World& w);
+void rebuild_candidate_pairs(World& w);
+void update_contact_geometry(World& w);
+void compute_forces(World& w);
+void update_energy(World& w);
+/// Sets the energies at t = 0 (before the first step).
+void initialise_energy(World& w);
+/// Throws SimulationError when the state is not finite or the energy balance has run away.
+void check_stability(const World& w);
+
+/// First half of a step: everything at t (contacts, forces, accelerations, velocities to
+/// t + dt/2 and their mean at t, energies at t). The world then holds a complete state at t.
+void step_begin(World& w);
+/// Second half: positions to t + dt, and time advances.
+void step_end(World& w);
+/// Advances the world from t to t + dt.
+inline void step(World& w) {
+    step_begin(w);
+    step_end(w);
+}
+
+}  // namespace blockdem

@@ -1,0 +1,121 @@
+#include "world/world.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "dynamics/central_difference.hpp"
+#include "dynamics/critical_time_step.hpp"
+#include "geometry/polygon.hpp"
+#include "world/step.hpp"
+
+namespace blockdem {
+
+std::uint32_t World::body_id(const std::string& wanted) const {
+    const auto it = std::find(bodies.name.begin(), bodies.name.end(), wanted);
+    if (it == bodies.name.end()) throw std::out_of_range("no body named '" + wanted + "'");
+    return static_cast<std::uint32_t>(it - bodies.name.begin());
+}
+
+namespace {
+
+void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
+    if (auto problem = convexity_problem(def.vertices_m)) throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
+    const PolygonProperties props = polygon_properties(def.vertices_m);
+    double mass = def.mass_kg.value_or(def.density_kg_m3 * props.area_m2 * def.thickness_m);
+    if (def.kind == BodyKind::dynamic && !(mass > 0.0))
+        throw ModelError(fmt::format("body '{}': mass must be > 0 (give density or mass), got {} kg", def.name, mass));
+    // Inertia of a uniform plate: mass times the polar radius of gyration squared.
+    const double inertia = def.inertia_kg_m2.value_or(mass * props.polar_moment_m4 / props.area_m2);
+    if (def.kind == BodyKind::dynamic && !(inertia > 0.0))
+        throw ModelError(fmt::format("body '{}': moment of inertia must be > 0, got {} kg m^2", def.name, inertia));
+    std::uint32_t material = 0;
+    try {
+        material = contact.id(def.material);
+    } catch (const std::out_of_range&) {
+        throw ModelError(fmt::format("body '{}': unknown material '{}'", def.name, def.material));
+    }
+    const bool dynamic = def.kind == BodyKind::dynamic;
+    b.name.push_back(def.name);
+    b.kind.push_back(def.kind);
+    b.is_static.push_back(dynamic ? 0 : 1);
+    b.record.push_back(def.record ? 1 : 0);
+    b.material.push_back(material);
+    b.mass_kg.push_back(mass);
+    b.inv_mass_1_kg.push_back(dynamic ? 1.0 / mass : 0.0);
+    b.inertia_kg_m2.push_back(inertia);
+    b.inv_inertia_1_kg_m2.push_back(dynamic ? 1.0 / inertia : 0.0);
+    b.vertex_begin.push_back(static_cast<std::uint32_t>(b.local_vertices_m.size()));
+    b.vertex_count.push_back(static_cast<std::uint32_t>(def.vertices_m.size()));
+    double radius = 0.0;
+    for (Vec2 v : def.vertices_m) {
+        b.local_vertices_m.push_back(v - props.centroid_m);
+        radius = std::max(radius, length(v - props.centroid_m));
+    }
+    b.bounding_radius_m.push_back(radius);
+    b.position_m.push_back(props.centroid_m);
+    b.initial_position_m.push_back(props.centroid_m);
+    b.rotation_rad.push_back(0.0);
+    b.velocity_m_s.push_back(dynamic ? def.velocity_m_s : Vec2{});
+    b.angular_velocity_rad_s.push_back(dynamic ? def.angular_velocity_rad_s : 0.0);
+    b.velocity_at_t_m_s.push_back(b.velocity_m_s.back());
+    b.angular_velocity_at_t_rad_s.push_back(b.angular_velocity_rad_s.back());
+}
+
+void check_no_initial_overlap(World& w) {
+    update_body_geometry(w);
+    rebuild_candidate_pairs(w);
+    update_contact_geometry(w);
+    for (const PairContact& pair : w.contacts) {
+        for (std::uint32_t i = 0; i < pair.count; ++i) {
+            const double size = std::min(w.bodies.bounding_radius_m[pair.a], w.bodies.bounding_radius_m[pair.b]);
+            // Touching is fine (bricks laid exactly side by side); overlap beyond round-off is not.
+            if (pair.points[i].overlap_m > 1e-9 * size)
+                throw ModelError(fmt::format("bodies '{}' and '{}' overlap at the start by {:.3g} m at ({:.6g}, {:.6g}) m",
+                                             w.bodies.name[pair.a], w.bodies.name[pair.b], pair.points[i].overlap_m,
+                                             pair.points[i].point_m.x, pair.points[i].point_m.y));
+        }
+    }
+}
+
+}  // namespace
+
+World build_world(const Model& model) {
+    World w;
+    w.settings = model.settings;
+    w.contact = model.contact;
+    w.table_motion = model.table_motion;
+    for (const BodyDef& def : model.bodies) add_body(w.bodies, def, w.contact);
+    const std::size_t n = w.bodies.size();
+    w.bodies.world_vertices_m.resize(w.bodies.local_vertices_m.size());
+    w.bodies.world_normals.resize(w.bodies.local_vertices_m.size());
+    w.bodies.acceleration_m_s2.assign(n, {});
+    w.bodies.angular_acceleration_rad_s2.assign(n, 0.0);
+    w.bodies.force_n.assign(n, {});
+    w.bodies.torque_n_m.assign(n, 0.0);
+
+    const CriticalTimeStep limit = critical_time_step(w.bodies, w.contact);
+    w.critical_dt_s = limit.dt_s;
+    if (model.settings.dt_s) {
+        w.dt_s = *model.settings.dt_s;
+        if (w.dt_s > limit.dt_s)
+            throw ModelError(fmt::format("time step dt = {:g} s is above the stable limit {:.4g} s (set by body '{}': "
+                                         "contact frequency {:.4g} rad/s, damping ratio {:.3g}); use dt <= {:.3g} s",
+                                         w.dt_s, limit.dt_s, limit.body, limit.omega_rad_s, limit.h, 0.2 * limit.dt_s));
+    } else {
+        if (!std::isfinite(limit.dt_s))
+            throw ModelError("cannot derive the time step: no dynamic body; give simulation.dt");
+        w.dt_s = model.settings.dt_safety * limit.dt_s;
+    }
+
+    double smallest = INFINITY;
+    for (std::size_t i = 0; i < n; ++i) smallest = std::min(smallest, w.bodies.bounding_radius_m[i]);
+    w.broad_phase_margin_m = 0.1 * smallest;
+    place_driven_bodies(w, 0.0);
+    check_no_initial_overlap(w);
+    initialise_energy(w);
+    return w;
+}
+
+}  // namespace blockdem

@@ -1,0 +1,88 @@
+#pragma once
+// The world owns every array of a simulation: bodies as flat arrays indexed by body id, the
+// contact table, the broad phase and the energy ledger. step() in step.cpp advances it by one
+// time step; writers only read it.
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "broad_phase/grid_broad_phase.hpp"
+#include "contact/contact_table.hpp"
+#include "world/energy_ledger.hpp"
+#include "world/model.hpp"
+
+namespace blockdem {
+
+/// Body state and properties, one entry per body (structure of arrays).
+struct Bodies {
+    std::vector<std::string> name;
+    std::vector<BodyKind> kind;
+    std::vector<std::uint8_t> is_static;        ///< 1 for fixed and driven bodies
+    std::vector<std::uint8_t> record;           ///< 1: written to history.csv
+    std::vector<std::uint32_t> material;        ///< id in MaterialPairs
+    std::vector<double> mass_kg;                ///< [kg]
+    std::vector<double> inv_mass_1_kg;          ///< [1/kg], 0 for static bodies
+    std::vector<double> inertia_kg_m2;          ///< [kg m^2] about the centroid
+    std::vector<double> inv_inertia_1_kg_m2;    ///< [1/(kg m^2)], 0 for static bodies
+    std::vector<double> bounding_radius_m;      ///< [m] largest centroid-to-corner distance
+    std::vector<std::uint32_t> vertex_begin;    ///< first corner in the vertex arrays
+    std::vector<std::uint32_t> vertex_count;
+    std::vector<Vec2> local_vertices_m;         ///< [m] corners relative to the centroid at rotation 0
+    std::vector<Vec2> world_vertices_m;         ///< [m] corners now
+    std::vector<Vec2> world_normals;            ///< outward unit edge normals now
+
+    std::vector<Vec2> position_m;               ///< [m] centroid at t
+    std::vector<double> rotation_rad;           ///< [rad] at t, counter-clockwise from the start
+    std::vector<Vec2> velocity_m_s;             ///< [m/s] at t - dt/2 before the step, t + dt/2 after
+    std::vector<double> angular_velocity_rad_s; ///< [rad/s] likewise
+    std::vector<Vec2> acceleration_m_s2;        ///< [m/s^2] at t
+    std::vector<double> angular_acceleration_rad_s2; ///< [rad/s^2] at t
+    std::vector<Vec2> velocity_at_t_m_s;        ///< [m/s] at t (mean of the two half steps): for output
+    std::vector<double> angular_velocity_at_t_rad_s;  ///< [rad/s] at t, for output
+    std::vector<Vec2> force_n;                  ///< [N] total force at t
+    std::vector<double> torque_n_m;             ///< [N m] total torque at t
+
+    std::vector<Vec2> initial_position_m;       ///< [m] centroid at t = 0
+    std::vector<Vec2> position_at_rebuild_m;    ///< [m] at the last broad-phase rebuild
+    std::vector<double> rotation_at_rebuild_rad;///< [rad] at the last broad-phase rebuild
+
+    std::size_t size() const { return name.size(); }
+};
+
+struct World {
+    SimulationSettings settings;
+    MaterialPairs contact;
+    TableMotion table_motion;
+    Bodies bodies;
+
+    double dt_s = 0.0;                    ///< [s] the time step in use
+    double critical_dt_s = 0.0;           ///< [s] the stable limit it was checked against
+    double time_s = 0.0;                  ///< [s] time of the current state
+    std::int64_t step_index = 0;
+
+    GridBroadPhase broad_phase;
+    double broad_phase_margin_m = 0.0;    ///< [m] boxes are enlarged by this; rebuild after margin/2 motion
+    std::vector<Aabb> boxes;              ///< enlarged boxes at the last rebuild
+    std::vector<BodyPair> candidate_pairs;
+    std::vector<PairContact> contacts;    ///< sorted by (a, b)
+    std::vector<PairContact> contacts_scratch;
+    std::int64_t broad_phase_rebuilds = 0;
+
+    EnergyLedger energy;
+
+    std::uint32_t body_id(const std::string& name) const;  ///< throws std::out_of_range
+};
+
+/// Builds a world from a model: mass properties, material ids, the time step and its check.
+/// Throws ModelError naming the body when a body is invalid, bodies overlap at the start, or
+/// the time step is above the stable limit.
+World build_world(const Model& model);
+
+/// A model that cannot be simulated (invalid body, overlap at start, unstable dt).
+class ModelError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+}  // namespace blockdem
