@@ -1,14 +1,140 @@
+// Scenario keys of a record-driven or synthetic table motion component. Keys, units and
+// defaults: docs/records.md. Physical values leave here in SI; "g" means 9.80665 m/s^2.
 #include "io/record_motion_keys.hpp"
 
-namespace blockdem {
+#include <cmath>
+#include <stdexcept>
 
-// Placeholder so that the scenario parser links; the real reader follows.
-AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::path&) {
-    keys.fail("", "type = \"record\" is not available yet in this build");
+#include <fmt/format.h>
+
+#include "motion/intensity_measures.hpp"
+#include "motion/record_processing.hpp"
+#include "motion/records/acceleration_units.hpp"
+#include "motion/records/ground_motion_record.hpp"
+#include "motion/synthetic_motion.hpp"
+
+namespace blockdem {
+namespace {
+
+const std::vector<std::string> unit_choices{"m/s^2", "gal", "g"};
+const std::vector<std::string> baseline_choices{"none", "mean", "linear", "polynomial", "displacement_polynomial"};
+
+double non_negative(TableReader& keys, const std::string& key, double fallback) {
+    const double v = keys.number_or(key, fallback);
+    if (v < 0.0) keys.fail(key, fmt::format("must be >= 0, got {}", v));
+    return v;
+}
+
+int whole_number(TableReader& keys, const std::string& key, int fallback, int min, int max) {
+    const auto v = keys.optional_number(key);
+    if (!v) return fallback;
+    if (std::floor(*v) != *v || *v < min || *v > max) keys.fail(key, fmt::format("must be a whole number from {} to {}", min, max));
+    return static_cast<int>(*v);
+}
+
+// target_pga with target_pga_unit, in m/s^2.
+std::optional<double> target_pga(TableReader& keys) {
+    const auto value = keys.optional_positive("target_pga");
+    const std::string unit = keys.choice("target_pga_unit", unit_choices, "m/s^2");
+    if (!value) return std::nullopt;
+    return *value * *acceleration_unit_factor(unit);
+}
+
+BaselineCorrection baseline(TableReader& keys) {
+    BaselineCorrection c;
+    c.method = parse_baseline_method(keys.choice("baseline", baseline_choices, "none"));
+    const int lowest = c.method == BaselineMethod::displacement_polynomial ? 2 : 1;
+    c.order = whole_number(keys, "baseline_order", std::max(3, lowest), lowest, 6);
+    return c;
+}
+
+RecordReadOptions read_options(TableReader& keys) {
+    RecordReadOptions o;
+    o.format = parse_record_format(keys.choice("format", {"auto", "peer-at2", "knet", "cosmos-v2", "jma-csv", "plain"}, "auto"));
+    if (auto units = keys.optional_string("units")) {
+        if (!acceleration_unit_factor(*units)) keys.fail("units", fmt::format("unknown units '{}'; use one of: {}", *units, acceleration_unit_names));
+        o.units = *units;
+    }
+    o.dt_s = keys.optional_positive("dt").value_or(0.0);
+    o.component = keys.optional_string("component").value_or("");
+    return o;
+}
+
+RecordProcessing processing(TableReader& keys) {
+    RecordProcessing p;
+    p.start_s = non_negative(keys, "start", 0.0);
+    p.duration_s = keys.optional_positive("duration").value_or(0.0);
+    p.taper_s = non_negative(keys, "taper", 0.0);
+    p.pad_s = non_negative(keys, "pad", 0.0);
+    p.baseline = baseline(keys);
+    const auto scale = keys.optional_number("scale");
+    p.target_pga_m_s2 = target_pga(keys);
+    if (scale && p.target_pga_m_s2) keys.fail("target_pga", "give either scale or target_pga, not both");
+    p.scale = scale.value_or(1.0);
+    return p;
+}
+
+AccelerationSeries to_series(const std::vector<double>& a, double dt, double delay, std::string source) {
+    std::vector<double> t(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) t[k] = delay + static_cast<double>(k) * dt;
+    return make_acceleration_series(std::move(t), a, std::move(source));
+}
+
+}  // namespace
+
+AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::path& scenario_dir) {
+    const std::filesystem::path file = scenario_dir / keys.string("file");
+    const RecordReadOptions options = read_options(keys);
+    const RecordProcessing steps = processing(keys);
+    const double delay = non_negative(keys, "delay", 0.0);
+    keys.reject_unknown_keys();
+    if (!std::filesystem::is_regular_file(file)) keys.fail("file", fmt::format("no record file '{}'", file.string()));
+    const GroundMotionRecord record = read_ground_motion_record(file, options);
+    std::vector<double> a;
+    try {
+        a = process_record(record.acceleration_m_s2, record.dt_s, steps);
+    } catch (const std::invalid_argument& e) {
+        keys.fail(steps.duration_s > 0.0 ? "duration" : "start", e.what());
+    }
+    const std::string source = fmt::format("{} ({}{}, baseline {})", file.string(), record_format_name(record.format),
+                                           record.component.empty() ? "" : ", component " + record.component,
+                                           baseline_method_name(steps.baseline.method));
+    return to_series(a, record.dt_s, delay, source);
 }
 
 AccelerationSeries read_synthetic_motion(TableReader& keys) {
-    keys.fail("", "type = \"synthetic\" is not available yet in this build");
+    SyntheticMotionParameters p;
+    p.seed = static_cast<std::uint64_t>(whole_number(keys, "seed", 1, 0, 2'000'000'000));
+    p.duration_s = keys.optional_positive("duration").value_or(p.duration_s);
+    p.dt_s = keys.optional_positive("dt").value_or(p.dt_s);
+    const auto pga = target_pga(keys);
+    if (!pga) keys.fail("", "missing required key 'target_pga' (with target_pga_unit: m/s^2, gal or g)");
+    p.target_pga_m_s2 = *pga;
+    p.ground_frequency_hz = keys.optional_positive("ground_frequency").value_or(p.ground_frequency_hz);
+    p.ground_damping = keys.optional_positive("ground_damping").value_or(p.ground_damping);
+    p.highpass_frequency_hz = non_negative(keys, "highpass_frequency", p.highpass_frequency_hz);
+    p.highpass_damping = keys.optional_positive("highpass_damping").value_or(p.highpass_damping);
+    p.envelope = parse_envelope_shape(keys.choice("envelope", {"saragoni_hart", "trapezoidal"}, "saragoni_hart"));
+    p.peak_time_fraction = keys.optional_positive("peak_time_fraction").value_or(p.peak_time_fraction);
+    p.end_level = keys.optional_positive("end_level").value_or(p.end_level);
+    p.rise_time_s = non_negative(keys, "rise_time", p.rise_time_s);
+    p.strong_duration_s = non_negative(keys, "strong_duration", p.strong_duration_s);
+    const BaselineCorrection correction = baseline(keys);
+    const double pad = non_negative(keys, "pad", 0.0);
+    const double delay = non_negative(keys, "delay", 0.0);
+    keys.reject_unknown_keys();
+    std::vector<double> a;
+    try {
+        a = synthetic_ground_motion(p);
+    } catch (const std::invalid_argument& e) {
+        keys.fail("", e.what());
+    }
+    // The baseline correction changes the peak slightly: scale back to the asked-for PGA.
+    a = correct_baseline(a, p.dt_s, correction);
+    const double factor = scale_factor_for_pga(a, p.target_pga_m_s2);
+    for (double& x : a) x *= factor;
+    pad_with_zeros(a, p.dt_s, pad);
+    return to_series(a, p.dt_s, delay, fmt::format("synthetic Kanai-Tajimi motion, seed {}, PGA {:g} m/s^2", p.seed, p.target_pga_m_s2));
 }
 
 }  // namespace blockdem
