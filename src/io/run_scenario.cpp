@@ -2,11 +2,15 @@
 
 #include <chrono>
 #include <fstream>
+#include <optional>
 
+#include "io/bodies_json_writer.hpp"
+#include "io/energy_writer.hpp"
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
 #include "io/scenario.hpp"
 #include "io/summary_writer.hpp"
+#include "io/vtk_writer.hpp"
 #include "world/response_monitor.hpp"
 #include "world/simulation_error.hpp"
 
@@ -24,9 +28,23 @@ nlohmann::json run_scenario(const RunRequest& request) {
     }
     World& world = loaded.world;
     HistoryWriter history(request.out_dir / "history.csv", world);
+    EnergyWriter energy(request.out_dir / "energy.csv");
+    write_bodies_json(request.out_dir / "bodies.json", world);
     ResponseMonitor monitor(world);
     RunOptions options;
-    options.recorders = {&history};
+    options.recorders = {&history, &energy};
+    std::optional<VtkWriter> vtk;
+    if (vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s)) {
+        vtk.emplace(request.out_dir / "vtk", VtkSettings{loaded.output.vtk_interval_s, loaded.output.vtk_contacts});
+        options.recorders.push_back(&*vtk);
+    }
+    // What was written besides history.csv and summary.json; `blockdem run` reads "report".
+    auto outputs = [&] {
+        return nlohmann::json{{"energy", "energy.csv"}, {"bodies", "bodies.json"},
+                              {"vtk", vtk ? nlohmann::json("vtk/bodies.pvd") : nlohmann::json(nullptr)},
+                              {"vtk_frames", vtk ? vtk->frames_written() : 0},
+                              {"report", loaded.output.report}};
+    };
     options.on_step = [&monitor](const World& w) { monitor.observe(w); };
     options.on_progress = request.on_progress;
 
@@ -40,12 +58,15 @@ nlohmann::json run_scenario(const RunRequest& request) {
         info.status = "failed";
         info.error = e.what();
         info.wall_s = wall();
-        write_summary(request.out_dir / "summary.json", make_summary(world, monitor, info));
+        nlohmann::json summary = make_summary(world, monitor, info);
+        summary["outputs"] = outputs();
+        write_summary(request.out_dir / "summary.json", summary);
         throw;
     }
     info.status = "completed";
     info.wall_s = wall();
     nlohmann::json summary = make_summary(world, monitor, info);
+    summary["outputs"] = outputs();
     write_summary(request.out_dir / "summary.json", summary);
     return summary;
 }

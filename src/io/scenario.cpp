@@ -238,7 +238,7 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     }
     model.contact = read_contact(top.table("contact"), model.bodies);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
-    top.allow({"title", "description"});
+    top.allow({"title", "description", "output"});  // [output] is read by load_scenario: not physics
     top.reject_unknown_keys();
     return model;
 }
@@ -255,6 +255,8 @@ LoadedScenario load_scenario(const std::filesystem::path& file, const std::vecto
         throw InputError(where, e.problem());
     }
     s.model = read_model(s.root, file.string(), file.parent_path());
+    TableReader top(s.root, file.string(), "");
+    if (auto output = top.optional_table("output")) s.output = read_output_settings(*output);
     try {
         s.world = build_world(s.model);
     } catch (const ModelError& e) {

@@ -7,6 +7,7 @@
 
 #include <toml++/toml.h>
 
+#include "io/output_keys.hpp"
 #include "io/toml_reader.hpp"
 #include "world/model.hpp"
 #include "world/world.hpp"
@@ -32,6 +33,7 @@ struct LoadedScenario {
     toml::table root;   ///< after --set overrides
     Model model;
     World world;
+    OutputSettings output;   ///< [output]: files besides history.csv and summary.json (io only)
 };
 
 /// Loads, overrides, validates and builds. A model error (overlap at start, unstable dt) is

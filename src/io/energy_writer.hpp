@@ -1,0 +1,28 @@
+#pragma once
+// energy.csv: the energy ledger at every output time, so that the balance can be plotted over
+// the run and not only read at its end (summary.json). Columns, all in J except t_s [s] and
+// balance_error [-]:
+//   t_s, kinetic_J, gravitational_change_J (m g (y - y0) summed), elastic_J,
+//   normal_dashpot_J, shear_dashpot_J, friction_J (dissipated so far), table_work_J (done by
+//   driven bodies so far), residual_J, balance_error.
+// residual_J = kinetic + gravitational_change + elastic + dissipated - table_work
+//              - (initial kinetic + initial elastic); it is 0 for an exact integration.
+#include <filesystem>
+#include <fstream>
+
+#include "world/simulation.hpp"
+
+namespace blockdem {
+
+class EnergyWriter : public Recorder {
+public:
+    explicit EnergyWriter(const std::filesystem::path& file);
+    void record(const World& w) override;
+    void finish(const World& w) override;
+
+private:
+    std::ofstream out_;
+    std::int64_t rows_ = 0;
+};
+
+}  // namespace blockdem
