@@ -100,9 +100,9 @@ GroundMotionRecord read_knet(const RecordText& text, const RecordReadOptions& op
     const std::size_t expected = static_cast<std::size_t>(std::llround(rate_hz * duration_s));
     const ValueBlock block = read_free_values(text, header_lines, expected);
     if (block.extra_values > 0)
-        fail_at(text, block.next_line - 1,
-                fmt::format("the file holds more than the {} values that Sampling Freq x Duration Time ({} Hz x {} s) announce",
-                            expected, rate_hz, duration_s));
+        fail_at(text, block.extra_line,
+                fmt::format("the file holds {} more than the {} values that Sampling Freq x Duration Time ({} Hz x {} s) announce",
+                            block.extra_values, expected, rate_hz, duration_s));
     const double mean = std::accumulate(block.values.begin(), block.values.end(), 0.0) / static_cast<double>(expected);
     record.acceleration_m_s2.reserve(expected);
     for (double c : block.values) record.acceleration_m_s2.push_back(c - mean);

@@ -98,9 +98,10 @@ GroundMotionRecord read_peer_at2(const RecordText& text, const RecordReadOptions
     const double to_m_s2 = resolve_units(text, options, unit, units_line);
     check_component(text, options, record.component, 1);
     const ValueBlock block = read_free_values(text, header->line + 1, header->npts);
-    if (block.extra_values > 0)
-        record.notes.push_back(fmt::format("{} values after the NPTS = {} announced were ignored", block.extra_values,
-                                           header->npts));
+    if (block.extra_values > 0)  // NPTS wrong or two records run together: either way the file is not what it says
+        fail_at(text, block.extra_line,
+                fmt::format("the file holds {} more values than the NPTS = {} of line {}", block.extra_values, header->npts,
+                            header->line + 1));
     record.acceleration_m_s2 = block.values;
     convert_to_si(record, to_m_s2);
     return record;

@@ -85,11 +85,25 @@ std::size_t pick_column(const RecordText& text, const RecordReadOptions& options
                                                          : fmt::format("; columns: {}", fmt::join(names, ", "))));
 }
 
+// A column named as time, or the first of two columns when it increases, must have a constant step.
+void check_time_column(const RecordText& text, const NumericRows& rows, const std::vector<std::string>& names) {
+    const bool looks_like_time = names.empty() ? rows.rows.front().size() == 2 && rows.rows[1][0] > rows.rows[0][0]
+                                               : is_time_name(names[0]);
+    if (!looks_like_time || rows.rows.size() < 3) return;
+    const double step = rows.rows[1][0] - rows.rows[0][0];
+    for (std::size_t k = 2; k < rows.rows.size(); ++k)
+        if (std::abs(rows.rows[k][0] - rows.rows[k - 1][0] - step) > 1e-3 * std::abs(step))
+            fail_at(text, rows.row_lines[k],
+                    fmt::format("the time column is not equally spaced: {} s after {} s, where the step is {} s",
+                                rows.rows[k][0], rows.rows[k - 1][0], step));
+}
+
 void read_table(const RecordText& text, const RecordReadOptions& options, const NumericRows& rows,
                 GroundMotionRecord& record) {
     const std::size_t columns = rows.rows.front().size();
     const auto names = column_names(text, rows, columns);
     const auto step = uniform_step(rows);
+    if (!step) check_time_column(text, rows, names);
     const bool has_time = step && (names.empty() || is_time_name(names[0]));
     if (has_time) {
         if (options.dt_s > 0.0 && std::abs(options.dt_s - *step) > 1e-3 * *step)

@@ -148,6 +148,7 @@ ValueBlock read_free_values(const RecordText& text, std::size_t first_line, std:
         for (std::size_t k = 0; k < tokens.size(); ++k) {
             if (block.values.size() == count) {
                 block.extra_values = count_extra_values(text, line, {tokens.begin() + k, tokens.end()});
+                block.extra_line = line;
                 block.next_line = line + 1;
                 return block;
             }
@@ -162,6 +163,7 @@ ValueBlock read_free_values(const RecordText& text, std::size_t first_line, std:
     if (block.values.size() < count) fail_truncated(text, first_line, block.values.size(), count);
     block.next_line = line;
     block.extra_values = count_extra_values(text, line - 1, {});
+    block.extra_line = line;
     return block;
 }
 

@@ -52,7 +52,8 @@ bool contains_nocase(std::string_view s, std::string_view part);
 struct ValueBlock {
     std::vector<double> values;
     std::size_t next_line = 0;         ///< first line after the values
-    std::size_t extra_values = 0;      ///< numbers found after the expected count (reported, not used)
+    std::size_t extra_values = 0;      ///< numbers found after the expected count (not used)
+    std::size_t extra_line = 0;        ///< line of the first of them
 };
 
 /// Reads exactly count blank-separated numbers starting at line first_line (free format, any
