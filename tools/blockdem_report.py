@@ -1,0 +1,35 @@
+#!/usr/bin/python3
+"""Writes OUT_DIR/report.html (and the figures in OUT_DIR/figures/) for a blockdem run folder.
+Usually called by `blockdem report OUT_DIR`; run it with Debian's Python:
+
+  /usr/bin/python3 tools/blockdem_report.py OUT_DIR [--blockdem build/blockdem] [--no-animation]
+"""
+import argparse
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from blockdem_view.report import write_report  # noqa: E402
+from blockdem_view.run_folder import RunFolder, RunFolderError  # noqa: E402
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("folder")
+    parser.add_argument("--blockdem", default=None, help="the blockdem binary, for the derived parameters")
+    parser.add_argument("--formats", default="png,svg", help="figure formats besides the report (png is always made)")
+    parser.add_argument("--no-animation", action="store_true", help="skip the MP4/GIF file (the page animates anyway)")
+    args = parser.parse_args(argv)
+    formats = ["png"] + [f for f in args.formats.split(",") if f and f != "png"]
+    try:
+        path = write_report(RunFolder(args.folder), args.blockdem, formats, not args.no_animation)
+    except RunFolderError as e:
+        print(f"blockdem_report: {e}", file=sys.stderr)
+        return 2
+    print(path)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

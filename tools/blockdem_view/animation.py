@@ -1,0 +1,49 @@
+"""An animation of a whole run: MP4 through Debian's ffmpeg when it is installed, else an
+animated GIF through Pillow (both drive matplotlib's writers)."""
+import shutil
+
+import numpy as np
+from matplotlib import animation
+
+from .figures import STYLE, draw_bodies, plt
+
+
+def frame_rows(run, fps, max_frames):
+    """History rows of the frames: one per 1/fps of simulated time, thinned to max_frames
+    (a long record then plays faster than real time rather than making a huge file)."""
+    t = run.t_s
+    count = int(min(max_frames, np.floor((t[-1] - t[0]) * fps) + 1))
+    times = np.linspace(t[0], t[-1], max(count, 2))
+    return sorted({run.row_at(x) for x in times})
+
+
+def write_animation(run, folder, fps=25, max_frames=750, fmt=None):
+    """Writes folder/animation.mp4 (or .gif); returns its path."""
+    fmt = fmt or ("mp4" if shutil.which("ffmpeg") else "gif")
+    rows = frame_rows(run, fps, max_frames)
+    box = run.view_box()
+    with plt.rc_context(STYLE):
+        width = 6.0
+        height = min(6.0, max(2.5, width * (box[3] - box[2]) / (box[1] - box[0]) + 0.6))
+        fig, ax = plt.subplots(figsize=(width, height))
+        ax.set_xlabel("x [m]")
+        ax.set_ylabel("y [m]")
+        collection = draw_bodies(ax, run, rows[0], box)
+        bodies = run.drawable()
+        label = ax.set_title("")
+
+        def update(row):
+            collection.set_verts([run.outline_at(b, row) for b in bodies])
+            label.set_text(f"{run.title()}   t = {run.t_s[row]:.2f} s")
+            return collection, label
+
+        movie = animation.FuncAnimation(fig, update, frames=rows, blit=False)
+        path = folder / f"animation.{fmt}"
+        folder.mkdir(parents=True, exist_ok=True)
+        if fmt == "mp4":
+            writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
+        else:
+            writer = animation.PillowWriter(fps=fps)
+        movie.save(path, writer=writer, dpi=100)
+        plt.close(fig)
+        return path

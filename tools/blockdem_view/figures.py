@@ -1,0 +1,177 @@
+"""Publication figures of one or several runs (matplotlib, Agg backend: no display needed).
+
+Each figure is saved in every requested format (png, svg, pdf) under the same stem."""
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
+
+KIND_COLOURS = {"dynamic": "#c0504d", "fixed": "#7f7f7f", "driven": "#4f81bd"}
+STYLE = {
+    "font.size": 9,
+    "axes.titlesize": 9,
+    "axes.labelsize": 9,
+    "legend.fontsize": 8,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "savefig.dpi": 200,
+    "savefig.bbox": "tight",
+}
+WIDTH_IN = 6.7  # [in] a two-column journal page
+
+
+def save(fig, folder, stem, formats):
+    """Writes fig as folder/stem.<format> for each format; returns the paths."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for fmt in formats:
+        path = folder / f"{stem}.{fmt}"
+        fig.savefig(path)
+        paths.append(path)
+    plt.close(fig)
+    return paths
+
+
+def dynamic_bodies(run, chosen=None, limit=6):
+    names = run.recorded("dynamic")
+    if chosen:
+        missing = [n for n in chosen if n not in names]
+        if missing:
+            raise KeyError(f"not recorded dynamic bodies: {', '.join(missing)}; recorded: {', '.join(names)}")
+        return list(chosen)
+    return names[:limit]
+
+
+def acceleration_figure(run, bodies, folder, formats):
+    """Fig. 5 style: the table's horizontal acceleration on top, each body's below it."""
+    table = run.table_name()
+    rows = ([table] if table else []) + bodies
+    with plt.rc_context(STYLE):
+        fig, axes = plt.subplots(len(rows), 1, sharex=True, squeeze=False,
+                                 figsize=(WIDTH_IN, 1.3 + 1.2 * len(rows)))
+        for ax, name in zip(axes[:, 0], rows):
+            colour = KIND_COLOURS[run.body(name)["kind"]]
+            ax.plot(run.t_s, run.series(name, "ax"), lw=0.7, color=colour)
+            ax.set_ylabel(f"{name}\n$a_x$ [m/s$^2$]")
+        axes[-1, 0].set_xlabel("time [s]")
+        axes[0, 0].set_title(f"{run.title()}: horizontal acceleration")
+        fig.align_ylabels(axes[:, 0])
+        return save(fig, folder, "acceleration", formats)
+
+
+def response_figure(run, bodies, folder, formats):
+    """Rotation and displacement relative to the table of each body."""
+    with plt.rc_context(STYLE):
+        fig, (rot, disp) = plt.subplots(2, 1, sharex=True, figsize=(WIDTH_IN, 4.2))
+        for name in bodies:
+            rot.plot(run.t_s, run.series(name, "rot"), lw=0.8, label=name)
+            disp.plot(run.t_s, run.relative_displacement_m(name, "x"), lw=0.8, label=name)
+        rot.set_ylabel("rotation [rad]\n(counter-clockwise +)")
+        ref = run.table_name() or "ground"
+        disp.set_ylabel(f"$u_x$ relative to\n{ref} [m]")
+        disp.set_xlabel("time [s]")
+        rot.set_title(f"{run.title()}: rotation and relative displacement")
+        if len(bodies) > 1:
+            rot.legend(loc="best")
+        fig.align_ylabels([rot, disp])
+        return save(fig, folder, "response", formats)
+
+
+ENERGY_TERMS = [
+    ("kinetic_J", "kinetic"),
+    ("gravitational_change_J", "gravitational (change)"),
+    ("elastic_J", "elastic (springs)"),
+    ("normal_dashpot_J", "normal dashpots (dissipated)"),
+    ("shear_dashpot_J", "shear dashpots (dissipated)"),
+    ("friction_J", "friction (dissipated)"),
+    ("table_work_J", "work done by the table"),
+]
+
+
+def energy_figure(run, folder, formats):
+    """Every ledger term over time, and the balance residual below."""
+    e = run.energy
+    if e is None:
+        return []
+    with plt.rc_context(STYLE):
+        fig, (terms, residual) = plt.subplots(2, 1, sharex=True, figsize=(WIDTH_IN, 4.6),
+                                              gridspec_kw={"height_ratios": [3, 1]})
+        for column, label in ENERGY_TERMS:
+            style = {"lw": 1.4, "color": "k"} if column == "table_work_J" else {"lw": 0.9}
+            terms.plot(e["t_s"], e[column], label=label, **style)
+        # stored + dissipated, less the initial kinetic and elastic energy: equals the table's work
+        # when the balance closes (residual_J is the difference).
+        held = sum(e[c] for c, _ in ENERGY_TERMS[:-1])
+        accounted = held - (held - e["table_work_J"] - e["residual_J"])[0]
+        terms.plot(e["t_s"], accounted, lw=1.0, ls="--", color="0.5", label="stored + dissipated - initial")
+        terms.set_ylabel("energy [J]")
+        terms.legend(loc="upper left", ncol=2)
+        terms.set_title(f"{run.title()}: energy balance")
+        residual.plot(e["t_s"], e["residual_J"], lw=0.8, color="#9467bd")
+        residual.set_ylabel("residual [J]")
+        residual.set_xlabel("time [s]")
+        fig.align_ylabels([terms, residual])
+        return save(fig, folder, "energy", formats)
+
+
+def draw_bodies(ax, run, row, box):
+    """The drawable bodies at one history row as filled polygons, clipped to box."""
+    bodies = run.drawable()
+    polygons = [run.outline_at(b, row) for b in bodies]
+    colours = [KIND_COLOURS[b["kind"]] for b in bodies]
+    collection = PolyCollection(polygons, facecolors=colours, edgecolors="k", linewidths=0.6, alpha=0.9)
+    ax.add_collection(collection)
+    ax.set_xlim(box[0], box[1])
+    ax.set_ylim(box[2], box[3])
+    ax.set_aspect("equal")
+    return collection
+
+
+def snapshot_figure(run, times, folder, formats):
+    """Fig. 6 style: the bodies side by side at the chosen times, on one common scale."""
+    rows = [run.row_at(t) for t in times]
+    box = run.view_box(range(0, rows[-1] + 1))
+    with plt.rc_context(STYLE):
+        aspect = (box[3] - box[2]) / (box[1] - box[0])
+        panel_w = WIDTH_IN / len(rows)
+        fig, axes = plt.subplots(1, len(rows), sharey=True, squeeze=False,
+                                 figsize=(WIDTH_IN, min(6.0, panel_w * aspect + 0.9)))
+        for ax, row in zip(axes[0], rows):
+            draw_bodies(ax, run, row, box)
+            ax.set_title(f"t = {run.t_s[row]:.2f} s")
+            ax.set_xlabel("x [m]")
+            ax.grid(False)
+        axes[0, 0].set_ylabel("y [m]")
+        return save(fig, folder, "snapshots", formats)
+
+
+def comparison_figure(runs, labels, body, folder, formats, overlay=False):
+    """Fig. 5 style for several runs: the first run's table acceleration on top, then the body's
+    acceleration of each run stacked (or all overlaid in one panel)."""
+    first = runs[0]
+    table = first.table_name()
+    panels = 1 + (1 if overlay else len(runs)) if table else (1 if overlay else len(runs))
+    with plt.rc_context(STYLE):
+        fig, axes = plt.subplots(panels, 1, sharex=True, sharey=not overlay, squeeze=False,
+                                 figsize=(WIDTH_IN, 1.3 + 1.1 * panels))
+        axes = list(axes[:, 0])
+        if table:
+            ax = axes.pop(0)
+            ax.plot(first.t_s, first.series(table, "ax"), lw=0.7, color=KIND_COLOURS["driven"])
+            ax.set_ylabel(f"{table}\n$a_x$ [m/s$^2$]")
+        for k, (run, label) in enumerate(zip(runs, labels)):
+            ax = axes[0] if overlay else axes[k]
+            ax.plot(run.t_s, run.series(body, "ax"), lw=0.7, label=label)
+            if not overlay:
+                ax.set_ylabel(f"{label}\n$a_x$ [m/s$^2$]")
+        if overlay:
+            axes[0].set_ylabel(f"{body} $a_x$ [m/s$^2$]")
+            axes[0].legend(loc="upper right")
+        fig.axes[-1].set_xlabel("time [s]")
+        fig.axes[0].set_title(f"{body}: horizontal acceleration, {len(runs)} runs")
+        fig.align_ylabels(fig.axes)
+        return save(fig, folder, "acceleration_comparison", formats)

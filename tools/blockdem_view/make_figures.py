@@ -1,0 +1,22 @@
+"""All figures of one run folder, written to DIR/figures/."""
+from pathlib import Path
+
+from . import figures
+from .animation import write_animation
+
+
+def make_run_figures(run, formats=("png", "svg"), bodies=None, times=None, animation=True, out=None):
+    """Writes acceleration, response, energy and snapshot figures (and the animation) of a run.
+    Returns {stem: [paths]}."""
+    folder = Path(out) if out else run.path / "figures"
+    chosen = figures.dynamic_bodies(run, bodies)
+    written = {
+        "acceleration": figures.acceleration_figure(run, chosen, folder, formats),
+        "energy": figures.energy_figure(run, folder, formats),
+        "snapshots": figures.snapshot_figure(run, times or run.snapshot_times(), folder, formats),
+    }
+    if chosen:
+        written["response"] = figures.response_figure(run, chosen, folder, formats)
+    if animation:
+        written["animation"] = [write_animation(run, folder)]
+    return written

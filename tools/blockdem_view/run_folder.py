@@ -1,0 +1,127 @@
+"""One run folder read into arrays: the time histories, the energy ledger, the body outlines."""
+import json
+import math
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+
+class RunFolderError(Exception):
+    """A folder that is not a complete blockdem run folder."""
+
+
+def _read_csv(path):
+    """Header names and a 2-D array (rows x columns) of a numeric CSV file."""
+    with open(path, encoding="utf-8") as f:
+        header = f.readline().strip().split(",")
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    if data.shape[0] == 0:
+        data = np.zeros((0, len(header)))
+    return header, data
+
+
+class RunFolder:
+    """history.csv, energy.csv, bodies.json, summary.json and scenario.toml of one run."""
+
+    def __init__(self, folder):
+        self.path = Path(folder)
+        for name in ("history.csv", "summary.json", "bodies.json"):
+            if not (self.path / name).is_file():
+                raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
+        header, data = _read_csv(self.path / "history.csv")
+        self.columns = {name: data[:, k] for k, name in enumerate(header)}
+        self.t_s = self.columns["t"]
+        self.summary = json.loads((self.path / "summary.json").read_text(encoding="utf-8"))
+        self.bodies = json.loads((self.path / "bodies.json").read_text(encoding="utf-8"))["bodies"]
+        self.energy = None
+        if (self.path / "energy.csv").is_file():
+            header, data = _read_csv(self.path / "energy.csv")
+            self.energy = {name: data[:, k] for k, name in enumerate(header)}
+        scenario = self.path / "scenario.toml"
+        self.scenario_text = scenario.read_text(encoding="utf-8") if scenario.is_file() else ""
+        try:
+            self.scenario = tomllib.loads(self.scenario_text)
+        except tomllib.TOMLDecodeError:
+            self.scenario = {}
+
+    # ----- bodies -----
+    def body(self, name):
+        for b in self.bodies:
+            if b["name"] == name:
+                return b
+        raise KeyError(name)
+
+    def recorded(self, kind=None):
+        """Names of the bodies in history.csv, optionally of one kind (dynamic, fixed, driven)."""
+        return [b["name"] for b in self.bodies if b["recorded"] and (kind is None or b["kind"] == kind)]
+
+    def table_name(self):
+        """The body displacements are measured against (the driven table), or None for the ground."""
+        ref = self.summary.get("displacements_relative_to", "ground")
+        return None if ref == "ground" else ref
+
+    def title(self):
+        return str(self.scenario.get("title", self.path.name))
+
+    # ----- time histories -----
+    def series(self, body, field):
+        """history.csv column <body>.<field> (x, y, rot, vx, vy, vrot, ax, ay, arot)."""
+        return self.columns[f"{body}.{field}"]
+
+    def relative_displacement_m(self, body, axis="x"):
+        """Centroid displacement of body since t = 0 relative to the table's [m]."""
+        u = self.series(body, axis) - self.series(body, axis)[0]
+        table = self.table_name()
+        if table is not None and f"{table}.{axis}" in self.columns:
+            u = u - (self.series(table, axis) - self.series(table, axis)[0])
+        return u
+
+    def response(self, body):
+        """The summary.json entry of a body."""
+        for b in self.summary.get("bodies", []):
+            if b["name"] == body:
+                return b
+        return {}
+
+    # ----- outlines -----
+    def outline_at(self, body, row):
+        """Corners [m] (n x 2) of a body at history row `row`; static unrecorded bodies stay put."""
+        corners = np.asarray(body["corners_m"], dtype=float)
+        if body["recorded"]:
+            x, y, rot = (self.columns[f"{body['name']}.{f}"][row] for f in ("x", "y", "rot"))
+        else:
+            (x, y), rot = body["initial_centroid_m"], 0.0
+        c, s = math.cos(rot), math.sin(rot)
+        return np.column_stack((x + c * corners[:, 0] - s * corners[:, 1], y + s * corners[:, 0] + c * corners[:, 1]))
+
+    def drawable(self):
+        """Bodies whose outline is known at every time: recorded ones and unrecorded fixed ones."""
+        return [b for b in self.bodies if b["recorded"] or b["kind"] == "fixed"]
+
+    def row_at(self, time_s):
+        """The history row nearest to time_s."""
+        return int(np.clip(np.searchsorted(self.t_s, time_s), 0, len(self.t_s) - 1))
+
+    def view_box(self, rows=None, margin=0.15):
+        """(xmin, xmax, ymin, ymax) [m] enclosing the dynamic bodies over the rows, with a margin.
+
+        Only dynamic bodies set the view: a 4 m table under a 0.5 m block would make the block
+        a speck. With no dynamic body, every drawable body sets it."""
+        chosen = [b for b in self.drawable() if b["kind"] == "dynamic"] or self.drawable()
+        rows = range(len(self.t_s)) if rows is None else rows
+        step = max(1, len(rows) // 400)  # extents change slowly: 400 samples are plenty
+        pts = np.vstack([self.outline_at(b, r) for r in list(rows)[::step] + [list(rows)[-1]] for b in chosen])
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        size = max(hi[0] - lo[0], hi[1] - lo[1])
+        pad = margin * size
+        # Show a strip below the lowest body so that what it stands on is visible.
+        return lo[0] - pad, hi[0] + pad, lo[1] - 2 * pad, hi[1] + pad
+
+    def snapshot_times(self, count=6):
+        """Evenly spaced times [s]; for a toppling body they end shortly after it overturned."""
+        end = float(self.t_s[-1])
+        overturned = [b["overturning_time_s"] for b in self.summary.get("bodies", []) if b.get("overturned")]
+        if overturned:
+            end = min(end, max(overturned) + 0.25 * max(overturned) + 0.5)
+        return list(np.linspace(0.0, end, count))
