@@ -40,10 +40,10 @@ std::optional<double> target_pga(TableReader& keys) {
     return *value * *acceleration_unit_factor(unit);
 }
 
-BaselineCorrection baseline(TableReader& keys) {
+BaselineCorrection baseline(TableReader& keys, const std::string& fallback) {
     BaselineCorrection c;
-    c.method = parse_baseline_method(keys.choice("baseline", baseline_choices, "none"));
-    const int lowest = c.method == BaselineMethod::displacement_polynomial ? 2 : 1;
+    c.method = parse_baseline_method(keys.choice("baseline", baseline_choices, fallback));
+    const int lowest = c.method == BaselineMethod::displacement_polynomial ? 3 : 2;
     c.order = whole_number(keys, "baseline_order", std::max(3, lowest), lowest, 6);
     return c;
 }
@@ -66,7 +66,7 @@ RecordProcessing processing(TableReader& keys) {
     p.duration_s = keys.optional_positive("duration").value_or(0.0);
     p.taper_s = non_negative(keys, "taper", 0.0);
     p.pad_s = non_negative(keys, "pad", 0.0);
-    p.baseline = baseline(keys);
+    p.baseline = baseline(keys, "none");
     const auto scale = keys.optional_number("scale");
     p.target_pga_m_s2 = target_pga(keys);
     if (scale && p.target_pga_m_s2) keys.fail("target_pga", "give either scale or target_pga, not both");
@@ -119,7 +119,8 @@ AccelerationSeries read_synthetic_motion(TableReader& keys) {
     p.end_level = keys.optional_positive("end_level").value_or(p.end_level);
     p.rise_time_s = non_negative(keys, "rise_time", p.rise_time_s);
     p.strong_duration_s = non_negative(keys, "strong_duration", p.strong_duration_s);
-    const BaselineCorrection correction = baseline(keys);
+    // Filtered noise drifts in velocity: by default the table is brought back to rest.
+    const BaselineCorrection correction = baseline(keys, "polynomial");
     const double pad = non_negative(keys, "pad", 0.0);
     const double delay = non_negative(keys, "delay", 0.0);
     keys.reject_unknown_keys();

@@ -26,51 +26,81 @@ constexpr std::array method_names{
     MethodName{BaselineMethod::displacement_polynomial, "displacement_polynomial"},
 };
 
-// Least squares min |sum_j c_j columns_j - rhs| by modified Gram-Schmidt (well conditioned
-// enough for the few normalized monomials used here).
-std::vector<double> least_squares(std::vector<std::vector<double>> columns, std::vector<double> rhs) {
-    const std::size_t m = columns.size();
-    std::vector<std::vector<double>> r(m, std::vector<double>(m, 0.0));
-    for (std::size_t j = 0; j < m; ++j) {
-        for (std::size_t i = 0; i < j; ++i) {
-            r[i][j] = std::inner_product(columns[i].begin(), columns[i].end(), columns[j].begin(), 0.0);
-            for (std::size_t k = 0; k < rhs.size(); ++k) columns[j][k] -= r[i][j] * columns[i][k];
+// Solves the square system m x = rhs by Gaussian elimination with partial pivoting.
+std::vector<double> solve(std::vector<std::vector<double>> m, std::vector<double> rhs) {
+    const std::size_t n = rhs.size();
+    for (std::size_t col = 0; col < n; ++col) {
+        std::size_t pivot = col;
+        for (std::size_t r = col + 1; r < n; ++r)
+            if (std::abs(m[r][col]) > std::abs(m[pivot][col])) pivot = r;
+        if (m[pivot][col] == 0.0) throw std::invalid_argument("baseline fit: singular system (record too short for this order)");
+        std::swap(m[col], m[pivot]);
+        std::swap(rhs[col], rhs[pivot]);
+        for (std::size_t r = col + 1; r < n; ++r) {
+            const double f = m[r][col] / m[col][col];
+            for (std::size_t c = col; c < n; ++c) m[r][c] -= f * m[col][c];
+            rhs[r] -= f * rhs[col];
         }
-        r[j][j] = std::sqrt(std::inner_product(columns[j].begin(), columns[j].end(), columns[j].begin(), 0.0));
-        if (r[j][j] == 0.0) throw std::invalid_argument("baseline fit: the record is too short for this order");
-        for (double& x : columns[j]) x /= r[j][j];
     }
-    std::vector<double> qtb(m);
-    for (std::size_t j = 0; j < m; ++j) qtb[j] = std::inner_product(columns[j].begin(), columns[j].end(), rhs.begin(), 0.0);
-    std::vector<double> c(m);
-    for (std::size_t j = m; j-- > 0;) {
-        double s = qtb[j];
-        for (std::size_t i = j + 1; i < m; ++i) s -= r[j][i] * c[i];
-        c[j] = s / r[j][j];
+    std::vector<double> x(n);
+    for (std::size_t r = n; r-- > 0;) {
+        double sum = rhs[r];
+        for (std::size_t c = r + 1; c < n; ++c) sum -= m[r][c] * x[c];
+        x[r] = sum / m[r][r];
     }
-    return c;
+    return x;
 }
 
-// Fits y(t) ~ sum_{p = lowest..order} c_p tau^p with tau = t / T and subtracts the `derivative`-th
-// time derivative of the fit from a (derivative 1 for velocity, 2 for displacement).
-std::vector<double> subtract_fitted_drift(std::span<const double> a, double dt, const std::vector<double>& y, int lowest,
-                                          int order, int derivative) {
+// min |sum_j c_j fit_j - target|^2 subject to sum_j c_j ends_j[i] = end_values[i] (Lagrange
+// multipliers: the KKT system [A^T A, C^T; C, 0]).
+std::vector<double> constrained_fit(const std::vector<std::vector<double>>& fit, const std::vector<double>& target,
+                                    const std::vector<std::array<double, 2>>& ends, const std::array<double, 2>& end_values) {
+    const std::size_t m = fit.size();
+    std::vector<std::vector<double>> kkt(m + 2, std::vector<double>(m + 2, 0.0));
+    std::vector<double> rhs(m + 2, 0.0);
+    for (std::size_t i = 0; i < m; ++i) {
+        for (std::size_t j = 0; j < m; ++j) kkt[i][j] = std::inner_product(fit[i].begin(), fit[i].end(), fit[j].begin(), 0.0);
+        rhs[i] = std::inner_product(fit[i].begin(), fit[i].end(), target.begin(), 0.0);
+        for (std::size_t e = 0; e < 2; ++e) kkt[i][m + e] = kkt[m + e][i] = ends[i][e];
+    }
+    rhs[m] = end_values[0];
+    rhs[m + 1] = end_values[1];
+    std::vector<double> x = solve(std::move(kkt), std::move(rhs));
+    x.resize(m);
+    return x;
+}
+
+// Acceleration corrections psi_p = d^n/dt^n tau^p (tau = t / T), p = lowest..order, where n = 1
+// for a velocity fit and 2 for a displacement fit. Each is integrated exactly as the table does,
+// so the end conditions hold to rounding, not just to O(dt^2).
+std::vector<double> subtract_fitted_drift(std::span<const double> a, double dt, int lowest, int order, int derivative) {
     const double total = static_cast<double>(a.size() - 1) * dt;  // [s]
-    std::vector<std::vector<double>> columns;
+    const RecordKinematics record = integrate_record(a, dt);
+    std::vector<std::vector<double>> psi, fit;
+    std::vector<std::array<double, 2>> ends;
     for (int p = lowest; p <= order; ++p) {
         std::vector<double> col(a.size());
-        for (std::size_t k = 0; k < a.size(); ++k) col[k] = std::pow(static_cast<double>(k) * dt / total, p);
-        columns.push_back(std::move(col));
+        const double falling = derivative == 1 ? p : p * (p - 1);  // d^n/dtau^n tau^p = falling tau^(p - n)
+        for (std::size_t k = 0; k < a.size(); ++k)
+            col[k] = falling * std::pow(static_cast<double>(k) * dt / total, p - derivative) / std::pow(total, derivative);
+        const RecordKinematics k = integrate_record(col, dt);
+        fit.push_back(derivative == 1 ? k.velocity_m_s : k.displacement_m);
+        ends.push_back({k.velocity_m_s.back(), k.displacement_m.back()});
+        psi.push_back(std::move(col));
     }
-    const std::vector<double> c = least_squares(columns, y);
+    const auto& target = derivative == 1 ? record.velocity_m_s : record.displacement_m;
+    const auto c = constrained_fit(fit, target, ends, {record.velocity_m_s.back(), record.displacement_m.back()});
     std::vector<double> out(a.begin(), a.end());
-    for (std::size_t k = 0; k < a.size(); ++k) {
-        const double tau = static_cast<double>(k) * dt / total;
-        for (int p = lowest; p <= order; ++p) {
-            const double falling = derivative == 1 ? p : p * (p - 1);  // d^n/dtau^n tau^p = falling * tau^(p-n)
-            out[k] -= c[static_cast<std::size_t>(p - lowest)] * falling * std::pow(tau, p - derivative) / std::pow(total, derivative);
-        }
-    }
+    for (std::size_t j = 0; j < psi.size(); ++j)
+        for (std::size_t k = 0; k < a.size(); ++k) out[k] -= c[j] * psi[j][k];
+    return out;
+}
+
+// v ends at 0: subtract the constant acceleration v_end / T.
+std::vector<double> subtract_end_velocity(std::span<const double> a, double dt) {
+    const double slope = integrate_record(a, dt).velocity_m_s.back() / (static_cast<double>(a.size() - 1) * dt);
+    std::vector<double> out(a.begin(), a.end());
+    for (double& x : out) x -= slope;
     return out;
 }
 
@@ -105,14 +135,13 @@ std::vector<double> correct_baseline(std::span<const double> a, double dt, Basel
             for (double& x : out) x -= mean;
             return out;
         }
-        case BaselineMethod::linear:
-            return subtract_fitted_drift(a, dt, integrate_record(a, dt).velocity_m_s, 1, 1, 1);
+        case BaselineMethod::linear: return subtract_end_velocity(a, dt);
         case BaselineMethod::polynomial:
-            check_order(correction, 1);
-            return subtract_fitted_drift(a, dt, integrate_record(a, dt).velocity_m_s, 1, correction.order, 1);
-        case BaselineMethod::displacement_polynomial:
             check_order(correction, 2);
-            return subtract_fitted_drift(a, dt, integrate_record(a, dt).displacement_m, 2, correction.order, 2);
+            return subtract_fitted_drift(a, dt, 1, correction.order, 1);
+        case BaselineMethod::displacement_polynomial:
+            check_order(correction, 3);
+            return subtract_fitted_drift(a, dt, 2, correction.order, 2);
         case BaselineMethod::none: break;
     }
     return {a.begin(), a.end()};

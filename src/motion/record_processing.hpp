@@ -4,16 +4,16 @@
 // axis. Why each step exists and the order they are applied in: docs/records.md.
 //
 // Baseline correction. A table driven kinematically needs a, v and u that agree and a table that
-// ends at rest near its start. Integrating a record from rest leaves a velocity drift (a small
-// acceleration offset) and a displacement drift. The corrections subtract from a(t) the
-// derivative(s) of a least-squares polynomial fitted to the drift, so that v = int a and
-// u = int v stay exact integrals (the table never sees inconsistent kinematics):
-//   mean                     a -= mean(a)
-//   linear                   v ~ c1 t                      a -= c1
-//   polynomial (order n)     v ~ c1 t + ... + cn t^n        a -= p'(t)
-//   displacement_polynomial  u ~ c2 t^2 + ... + cn t^n      a -= p''(t)
-// The fitted polynomials have no constant (and, for u, no linear) term, so v(0) = 0 and u(0) = 0
-// stay true: the table still starts at rest.
+// ends at rest near where it started. Integrating a record from rest leaves a velocity drift (a
+// small acceleration offset) and a displacement drift. Each correction subtracts from a(t) the
+// derivative of a polynomial fitted to the drift, so that v = int a and u = int v stay exact
+// integrals (the table never sees inconsistent kinematics), and v(0) = u(0) = 0 stay true:
+//   mean                     a -= mean(a)                               (nothing guaranteed)
+//   linear                   v -= (v_end / T) t, i.e. a -= v_end / T     (v_end = 0; u not controlled)
+//   polynomial (order n)     v -= p(t), p = c1 t + ... + cn t^n          (v_end = 0 and u_end = 0)
+//   displacement_polynomial  u -= p(t), p = c2 t^2 + ... + cn t^n        (v_end = 0 and u_end = 0)
+// For the polynomial fits, p is the least-squares fit to v (or u) under the two exact constraints
+// that the corrected v and u end at zero; order 2 (resp. 3) is fixed by the constraints alone.
 #include <optional>
 #include <span>
 #include <string>
@@ -26,7 +26,7 @@ enum class BaselineMethod { none, mean, linear, polynomial, displacement_polynom
 
 struct BaselineCorrection {
     BaselineMethod method = BaselineMethod::none;
-    int order = 3;  ///< polynomial order for polynomial (1..6) and displacement_polynomial (2..6)
+    int order = 3;  ///< polynomial order: polynomial 2..6, displacement_polynomial 3..6
 };
 
 /// "none", "mean", "linear", "polynomial", "displacement_polynomial"; std::invalid_argument otherwise.
