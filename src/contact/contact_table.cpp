@@ -21,15 +21,33 @@ void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<Bo
     table.swap(scratch);
 }
 
-void update_pair_geometry(PairContact& pair, const ContactManifold& manifold) {
+void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m) {
     ContactPoint updated[2];
+    bool taken[2] = {false, false};
     for (std::uint32_t i = 0; i < manifold.count; ++i) {
         ContactPoint& p = updated[i];
         p.feature = manifold.points[i].feature;
         p.point_m = manifold.points[i].point_m;
         p.overlap_m = manifold.points[i].overlap_m;
         for (std::uint32_t j = 0; j < pair.count; ++j)
-            if (pair.points[j].feature == p.feature) p.shear_spring_n = pair.points[j].shear_spring_n;
+            if (!taken[j] && pair.points[j].feature == p.feature) {
+                p.shear_spring_n = pair.points[j].shear_spring_n;
+                taken[j] = true;
+            }
+    }
+    // Two equal, aligned faces (stacked blocks of one width) give the same corner either owner's
+    // id depending on which face is the reference; a point that lost its id but sits where an
+    // unmatched old point was is the same contact and keeps its history.
+    for (std::uint32_t i = 0; i < manifold.count; ++i) {
+        bool matched = false;
+        for (std::uint32_t j = 0; j < pair.count; ++j) matched = matched || pair.points[j].feature == updated[i].feature;
+        if (matched) continue;
+        for (std::uint32_t j = 0; j < pair.count; ++j)
+            if (!taken[j] && length(pair.points[j].point_m - updated[i].point_m) < match_distance_m) {
+                updated[i].shear_spring_n = pair.points[j].shear_spring_n;
+                taken[j] = true;
+                break;
+            }
     }
     pair.count = manifold.count;
     pair.normal = manifold.normal;

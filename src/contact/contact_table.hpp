@@ -38,7 +38,9 @@ struct PairContact {
 void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<BodyPair>& pairs,
                            std::vector<PairContact>& scratch);
 
-/// Updates a pair with this step's geometry: matched points keep their shear history.
-void update_pair_geometry(PairContact& pair, const ContactManifold& manifold);
+/// Updates a pair with this step's geometry: matched points keep their shear history. A point
+/// matches last step's point with the same feature id, or else an unmatched old point closer
+/// than match_distance_m (see the .cpp for why).
+void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m);
 
 }  // namespace blockdem

@@ -18,14 +18,19 @@ ContactForce linear_spring_dashpot(const ContactParameters& p, const DashpotCoef
     const double normal_dashpot_n = f.normal_n - spring_n;
     f.normal_dashpot_work_j = -normal_dashpot_n * k.normal_speed_m_s * dt_s;
 
-    const double trial_spring_n = previous_shear_spring_n - p.ks_N_m * k.tangential_speed_m_s * dt_s;
+    // The slider's dissipation has two parts: if the cap fell below last step's spring force
+    // (the normal force dropped), the excess spring energy is released at once; then the slip
+    // beyond the cap, (|trial| - limit) / ks, happens against the force mu F_n.
     const double limit_n = p.mu * f.normal_n;
-    if (std::abs(trial_spring_n) > limit_n) {
+    const double previous_n = std::clamp(previous_shear_spring_n, -limit_n, limit_n);
+    const double released_j =
+        0.5 * (previous_shear_spring_n * previous_shear_spring_n - previous_n * previous_n) / p.ks_N_m;
+    const double trial_spring_n = previous_n - p.ks_N_m * k.tangential_speed_m_s * dt_s;
+    if (std::abs(trial_spring_n) > limit_n || released_j > 0.0) {
         f.sliding = true;
-        f.shear_spring_n = std::copysign(limit_n, trial_spring_n);
+        f.shear_spring_n = std::clamp(trial_spring_n, -limit_n, limit_n);
         f.shear_n = f.shear_spring_n;
-        // The slip beyond the spring's capacity, (|trial| - limit) / ks, happens against mu F_n.
-        f.friction_work_j = limit_n * (std::abs(trial_spring_n) - limit_n) / p.ks_N_m;
+        f.friction_work_j = released_j + limit_n * std::max(0.0, std::abs(trial_spring_n) - limit_n) / p.ks_N_m;
     } else {
         f.shear_spring_n = trial_spring_n;
         const double dashpot_n = -c.cs_N_s_m * k.tangential_speed_m_s;

@@ -18,15 +18,18 @@ struct EnergyLedger {
     double table_work_j = 0.0;       ///< [J] work done by driven bodies on the rest so far
     double initial_j = 0.0;          ///< [J] stored energy at t = 0
     double initial_gravitational_j = 0.0;  ///< [J] gravitational part of initial_j
+    double peak_scale_j = 0.0;       ///< [J] the largest term seen so far in the run
 
     double stored_j() const { return kinetic_j + gravitational_j + elastic_j; }
     double dissipated_j() const { return normal_dashpot_j + shear_dashpot_j + friction_j; }
     double residual_j() const { return stored_j() + dissipated_j() - table_work_j - initial_j; }
-    /// The largest term of the balance [J]; gravitational energy counts by its change since t = 0.
-    double scale_j() const {
+    /// The largest term of the balance now [J]; gravitational energy counts by its change since t = 0.
+    double current_scale_j() const {
         return std::max({kinetic_j, std::abs(gravitational_j - initial_gravitational_j), elastic_j, dissipated_j(),
                          std::abs(table_work_j), 1e-300});
     }
+    /// The largest term over the run so far [J] (a term passing through zero does not inflate the error).
+    double scale_j() const { return std::max(peak_scale_j, current_scale_j()); }
     double balance_error() const { return std::abs(residual_j()) / scale_j(); }
 };
 

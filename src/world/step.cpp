@@ -67,7 +67,9 @@ void update_contact_geometry(World& w) {
                             b.vertex_count[pair.b]};
         ContactManifold manifold;
         collide_polygons(a, c, pair.reference, manifold);
-        update_pair_geometry(pair, manifold);
+        // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
+        const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
+        update_pair_geometry(pair, manifold, match_distance);
     }
 }
 
@@ -111,12 +113,14 @@ void update_energy(World& w) {
     w.energy.kinetic_j = kinetic_energy(w);
     w.energy.gravitational_j = gravitational_energy(w);
     w.energy.elastic_j = contact_elastic_energy(w);
+    w.energy.peak_scale_j = std::max(w.energy.peak_scale_j, w.energy.current_scale_j());
 }
 
 void initialise_energy(World& w) {
     update_energy(w);
     w.energy.initial_j = w.energy.stored_j();
     w.energy.initial_gravitational_j = w.energy.gravitational_j;
+    w.energy.peak_scale_j = 0.0;
 }
 
 void check_stability(const World& w) {
