@@ -56,6 +56,12 @@ void add_run_command(CLI::App& app) {
         if (!*quiet) request.on_progress = print_progress;
         const nlohmann::json summary = run_scenario(request);
         print_outcome(summary, *out);
+        // [output] report = true: the report is made here, in the tool, because the library never
+        // starts processes.
+        if (summary.contains("outputs") && summary["outputs"].value("report", false)) {
+            write_report(*out);
+            fmt::print("report: {}/report.html\n", *out);
+        }
     });
 }
 

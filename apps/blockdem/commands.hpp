@@ -1,6 +1,8 @@
 #pragma once
 // The subcommands of the blockdem tool, one file each. Each adds itself to the CLI11 app and
 // runs through its callback; errors are thrown and reported by main().
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace blockdem::cli {
@@ -8,5 +10,9 @@ namespace blockdem::cli {
 void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_motion_command(CLI::App& app);
+void add_report_command(CLI::App& app);
+
+/// Writes out_dir/report.html and out_dir/figures/ through tools/blockdem_report.py (cmd_report.cpp).
+void write_report(const std::string& out_dir, bool animation_file = true);
 
 }  // namespace blockdem::cli

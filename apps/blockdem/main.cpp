@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     blockdem::cli::add_run_command(app);
     blockdem::cli::add_check_command(app);
     blockdem::cli::add_motion_command(app);
+    blockdem::cli::add_report_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
