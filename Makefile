@@ -8,7 +8,8 @@ DEMO_OUT ?= out/demo
 
 # Packages the build and the tests need (Debian 12 names).
 CORE_PACKAGES := g++ cmake make pkg-config libtomlplusplus-dev libcli11-dev libfmt-dev \
-                 nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+                 nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
+                 libopenmpi-dev openmpi-bin
 # Packages for figures and the report (not needed by the library or the core tests).
 VIEW_PACKAGES := python3-matplotlib python3-numpy
 

@@ -1,0 +1,230 @@
+#include "sweep/case_runner.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "analysis/housner_rocking.hpp"
+#include "analysis/rocking_mode.hpp"
+#include "io/history_writer.hpp"
+#include "io/input_error.hpp"
+#include "io/overrides.hpp"
+#include "io/scenario.hpp"
+#include "world/response_monitor.hpp"
+#include "world/simulation.hpp"
+#include "world/simulation_error.hpp"
+
+namespace blockdem::sweep {
+namespace {
+
+/// Thrown from the step callback to end a run whose blocks have all gone over.
+struct RunStoppedEarly {};
+
+std::vector<std::string> as_set_arguments(const std::vector<Assignment>& assignments) {
+    std::vector<std::string> out;
+    for (const auto& a : assignments) out.push_back(a.key + "=" + a.value);
+    return out;
+}
+
+// The scenario of one case: the unvaried TOML, the assignments, then the record (which replaces
+// the whole horizontal motion, since a sine's keys mean nothing to a record).
+World build_case_world(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c) {
+    toml::table root = scenario.root;
+    apply_overrides(root, as_set_arguments(c.assignments));
+    if (c.record) {
+        if (auto* motion = root["table_motion"].as_table()) motion->erase("horizontal");
+        apply_overrides(root, as_set_arguments(record_assignments(plan.suite, c)));
+    }
+    const Model model = read_model(root, scenario.file.string(), scenario.file.parent_path());
+    try {
+        return build_world(model);
+    } catch (const ModelError& e) {
+        throw InputError({scenario.file.string(), "", 0, 0}, e.what());
+    }
+}
+
+RockingWindow window_for(const World& w) {
+    const auto* sine = std::get_if<SineMotion>(&w.table_motion.horizontal);
+    const bool harmonic = sine && std::holds_alternative<RestMotion>(w.table_motion.vertical);
+    return harmonic ? rocking_window(*sine, w.settings.duration_s) : RockingWindow{};
+}
+
+bool slid(const World& w, const BodyResponse& r, std::size_t i) {
+    // As summary.json defines it (docs/outputs.md).
+    return r.sliding_time_s > 0.0 && r.peak_abs_relative_displacement_m > 1e-3 * w.bodies.bounding_radius_m[i];
+}
+
+// Past halfway between the critical angle and lying on its side, a block is down for good.
+bool all_blocks_down(const World& w, const ResponseMonitor& monitor) {
+    bool any = false;
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        if (w.bodies.kind[i] != BodyKind::dynamic) continue;
+        const BodyResponse& r = monitor.responses()[i];
+        const double theta = w.bodies.rotation_rad[i];
+        const double alpha = theta > 0.0 ? r.alpha_ccw_rad : r.alpha_cw_rad;
+        if (std::abs(theta) < 0.5 * (alpha + 0.5 * std::numbers::pi)) return false;
+        any = true;
+    }
+    return any;
+}
+
+BodyOutcome outcome_of(const ResponseMonitor& monitor, const World& w, const RockingModeObserver& modes, std::size_t i) {
+    const BodyResponse& r = monitor.responses()[i];
+    BodyOutcome o;
+    o.overturned = r.overturned();
+    o.overturning_time_s = o.overturned ? r.last_crossing_s : -1.0;
+    o.peak_rotation_rad = r.peak_abs_rotation_rad;
+    o.peak_sliding_m = r.peak_abs_relative_displacement_m;
+    o.residual_sliding_m = r.relative_displacement_m.x;
+    RockingSignal signal = modes.signal_of(i);
+    signal.rocking_threshold_rad = r.rocking_threshold_rad;
+    signal.overturned = r.overturned();
+    signal.slid = slid(w, r, i);
+    signal.rocked = r.rocked();
+    const RockingClassification mode = classify_rocking_mode(signal);
+    o.mode = to_string(mode.mode);
+    o.rocking_period_ratio = mode.period_ratio;
+    o.phase_lag_deg = mode.phase_lag_rad * 180.0 / std::numbers::pi;
+    return o;
+}
+
+void run_dem(World& w, const SweepScenario& scenario, const SweepCase& c, const CaseOptions& options,
+             const std::atomic<bool>* cancel, CaseResult& result) {
+    ResponseMonitor monitor(w);
+    RockingModeObserver modes(w, window_for(w));
+    RunOptions run;
+    std::unique_ptr<HistoryWriter> history;
+    if (!options.histories_dir.empty()) {
+        const auto dir = options.histories_dir / std::to_string(c.id);
+        std::filesystem::create_directories(dir);
+        history = std::make_unique<HistoryWriter>(dir / "history.csv", w);
+        run.recorders.push_back(history.get());
+    }
+    run.on_step = [&](const World& world) {
+        monitor.observe(world);
+        modes.observe(world);
+        if ((world.step_index & 1023) == 0 && cancel && cancel->load(std::memory_order_relaxed)) throw CaseCancelled{};
+        if (options.stop_when_overturned && all_blocks_down(world, monitor)) throw RunStoppedEarly{};
+    };
+    try {
+        run_simulation(w, run);
+        result.status = "completed";
+    } catch (const RunStoppedEarly&) {
+        result.status = "completed";
+    } catch (const SimulationError& e) {
+        result.status = "failed";
+        result.error = e.what();
+        return;
+    }
+    for (std::size_t k = 0; k < scenario.body_names.size(); ++k) {
+        for (std::size_t i = 0; i < w.bodies.size(); ++i)
+            if (w.bodies.name[i] == scenario.body_names[k] && w.bodies.kind[i] == BodyKind::dynamic)
+                result.bodies[k] = outcome_of(monitor, w, modes, i);
+    }
+}
+
+// The one dynamic block as Housner's rectangle: half sizes from its corners.
+HousnerBlock housner_block_of(const World& w, std::size_t& body, const CaseOptions& options) {
+    std::size_t found = 0;
+    for (std::size_t i = 0; i < w.bodies.size(); ++i)
+        if (w.bodies.kind[i] == BodyKind::dynamic) {
+            body = i;
+            ++found;
+        }
+    if (found != 1) throw std::invalid_argument("--solver housner needs exactly one dynamic body");
+    if (w.bodies.vertex_count[body] != 4) throw std::invalid_argument("--solver housner needs a rectangular block");
+    HousnerBlock b;
+    b.half_width_m = 0.0;
+    b.half_height_m = 0.0;
+    for (std::uint32_t k = 0; k < 4; ++k) {
+        const Vec2 v = w.bodies.local_vertices_m[w.bodies.vertex_begin[body] + k];
+        b.half_width_m = std::max(b.half_width_m, std::abs(v.x));
+        b.half_height_m = std::max(b.half_height_m, std::abs(v.y));
+    }
+    b.gravity_m_s2 = w.settings.gravity_m_s2;
+    b.restitution = options.housner_restitution;
+    return b;
+}
+
+// theta at the window's sample times from the RK4 history (nearest point at or after).
+RockingSignal housner_signal(const RockingResult& r, const World& w, const RockingWindow& window) {
+    RockingSignal s;
+    s.window = window;
+    if (!window.valid() || r.overturned) return s;
+    std::size_t j = 0;
+    const auto total = static_cast<std::size_t>(window.cycles * window.samples_per_cycle);
+    for (std::size_t k = 0; k < total; ++k) {
+        const double t = window.start_s + static_cast<double>(k) * window.sample_interval_s();
+        while (j + 1 < r.history.size() && r.history[j].time_s < t) ++j;
+        s.theta_rad.push_back(r.history[j].theta_rad);
+        s.table_acceleration_m_s2.push_back(sample(w.table_motion.horizontal, t).acceleration_m_s2);
+    }
+    return s;
+}
+
+void run_housner(const World& w, const SweepScenario& scenario, const CaseOptions& options, CaseResult& result) {
+    std::size_t body = 0;
+    const HousnerBlock block = housner_block_of(w, body, options);
+    const RockingResult r = housner_rocking(block, w.table_motion.horizontal, 0.0, 0.0, w.settings.duration_s, options.housner_dt_s);
+    const double alpha = block.alpha_rad();
+    BodyOutcome o;
+    o.overturned = r.overturned;
+    o.peak_rotation_rad = r.peak_abs_theta_rad;
+    if (r.overturned)
+        for (std::size_t k = 1; k < r.history.size(); ++k)
+            if (std::abs(r.history[k].theta_rad) >= alpha && std::abs(r.history[k - 1].theta_rad) < alpha)
+                o.overturning_time_s = r.history[k].time_s;
+    RockingSignal signal = housner_signal(r, w, window_for(w));
+    signal.rocking_threshold_rad = 0.01 * alpha;  // as the DEM's monitor
+    signal.overturned = r.overturned;
+    signal.rocked = r.peak_abs_theta_rad >= signal.rocking_threshold_rad;
+    const RockingClassification mode = classify_rocking_mode(signal);
+    o.mode = to_string(mode.mode);
+    o.rocking_period_ratio = mode.period_ratio;
+    o.phase_lag_deg = mode.phase_lag_rad * 180.0 / std::numbers::pi;
+    result.status = "completed";
+    for (std::size_t k = 0; k < scenario.body_names.size(); ++k)
+        if (scenario.body_names[k] == w.bodies.name[body]) result.bodies[k] = o;
+}
+
+}  // namespace
+
+SweepScenario load_sweep_scenario(const std::filesystem::path& file) {
+    SweepScenario s;
+    s.file = file;
+    LoadedScenario loaded = load_scenario(file, {});
+    s.root = loaded.root;
+    for (std::size_t i = 0; i < loaded.world.bodies.size(); ++i)
+        if (loaded.world.bodies.kind[i] == BodyKind::dynamic) s.body_names.push_back(loaded.world.bodies.name[i]);
+    return s;
+}
+
+CaseResult run_case(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c,
+                    const CaseOptions& options, const std::atomic<bool>* cancel) {
+    const auto started = std::chrono::steady_clock::now();
+    CaseResult result;
+    result.id = c.id;
+    result.bodies.resize(scenario.body_names.size());
+    try {
+        World w = build_case_world(scenario, plan, c);
+        result.table_pga_m_s2 = peak_acceleration(w.table_motion.horizontal);
+        if (options.solver == Solver::housner)
+            run_housner(w, scenario, options, result);
+        else
+            run_dem(w, scenario, c, options, cancel, result);
+    } catch (const CaseCancelled&) {
+        throw;
+    } catch (const std::exception& e) {
+        // Bad input for this case (a value out of range, a missing record): recorded, not fatal.
+        result.status = "error";
+        result.error = e.what();
+        result.bodies.assign(scenario.body_names.size(), std::nullopt);
+    }
+    result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return result;
+}
+
+}  // namespace blockdem::sweep
