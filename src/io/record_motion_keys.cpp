@@ -130,11 +130,12 @@ AccelerationSeries read_synthetic_motion(TableReader& keys) {
     } catch (const std::invalid_argument& e) {
         keys.fail("", e.what());
     }
-    // The baseline correction changes the peak slightly: scale back to the asked-for PGA.
+    // Pad first so that the correction brings the table to rest at the very end of the series;
+    // the correction changes the peak slightly: scale back to the asked-for PGA.
+    pad_with_zeros(a, p.dt_s, pad);
     a = correct_baseline(a, p.dt_s, correction);
     const double factor = scale_factor_for_pga(a, p.target_pga_m_s2);
     for (double& x : a) x *= factor;
-    pad_with_zeros(a, p.dt_s, pad);
     return to_series(a, p.dt_s, delay, fmt::format("synthetic Kanai-Tajimi motion, seed {}, PGA {:g} m/s^2", p.seed, p.target_pga_m_s2));
 }
 

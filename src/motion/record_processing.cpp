@@ -181,10 +181,13 @@ void pad_with_zeros(std::vector<double>& a, double dt, double pad_s) {
 std::vector<double> process_record(std::span<const double> a, double dt, const RecordProcessing& steps) {
     std::vector<double> out = time_window(a, dt, steps.start_s, steps.duration_s);
     apply_cosine_taper(out, dt, steps.taper_s);
+    // Padding before the correction: the end conditions then hold at the very end of the series,
+    // after which the table stays at rest (a last sample ramping to zero would otherwise leave
+    // a velocity of a_end dt / 2).
+    pad_with_zeros(out, dt, steps.pad_s);
     out = correct_baseline(out, dt, steps.baseline);
     const double factor = steps.target_pga_m_s2 ? scale_factor_for_pga(out, *steps.target_pga_m_s2) : steps.scale;
     for (double& x : out) x *= factor;
-    pad_with_zeros(out, dt, steps.pad_s);
     return out;
 }
 

@@ -57,13 +57,13 @@ struct RecordProcessing {
     double start_s = 0.0;                  ///< [s] window start in record time
     double duration_s = 0.0;               ///< [s] window length, 0 = to the end
     double taper_s = 0.0;                  ///< [s] cosine taper at both ends of the window
-    BaselineCorrection baseline;           ///< after windowing and tapering
+    double pad_s = 0.0;                    ///< [s] zeros appended to the window
+    BaselineCorrection baseline;           ///< over the padded window, so the table ends at rest
     double scale = 1.0;                    ///< amplitude factor (used when no target PGA)
     std::optional<double> target_pga_m_s2; ///< [m/s^2] scale so that the PGA is this (after baseline)
-    double pad_s = 0.0;                    ///< [s] zeros appended last
 };
 
-/// window -> taper -> baseline -> scale -> pad. Returns the acceleration [m/s^2] at k dt.
+/// window -> taper -> pad -> baseline -> scale. Returns the acceleration [m/s^2] at k dt.
 std::vector<double> process_record(std::span<const double> acceleration_m_s2, double dt_s, const RecordProcessing& steps);
 
 /// Samples [s] and accelerations [m/s^2] of a resampled record.

@@ -122,15 +122,16 @@ ground_frequency = 3.0
 envelope = "trapezoidal"
 rise_time = 1.0
 strong_duration = 4.0
+pad = 2.0
 )";
     Keys a(text), b(text);
     const auto s1 = read_synthetic_motion(*a.reader);
     const auto s2 = read_synthetic_motion(*b.reader);
     EXPECT_EQ(s1.acceleration_m_s2, s2.acceleration_m_s2);
-    EXPECT_EQ(s1.time_s.size(), 1001u);
+    EXPECT_EQ(s1.time_s.size(), 1201u);  // 10 s of motion and 2 s of padding at 0.01 s
     const auto m = intensity_measures(s1.acceleration_m_s2, 0.01);
     EXPECT_NEAR(m.pga_m_s2, 0.3 * 9.80665, 1e-9);
-    EXPECT_LT(std::abs(s1.velocity_m_s.back()), 1e-9);  // polynomial baseline by default
+    EXPECT_LT(std::abs(s1.velocity_m_s.back()), 1e-9);  // polynomial baseline by default, over the padding too
     EXPECT_LT(std::abs(s1.displacement_m.back()), 1e-9);
 }
 
