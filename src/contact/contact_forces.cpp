@@ -3,6 +3,15 @@
 #include "laws/linear_spring_dashpot.hpp"
 
 namespace blockdem {
+namespace {
+
+ContactParameters softened(ContactParameters p, double scale) {
+    p.kn_N_m *= scale;
+    p.ks_N_m *= scale;
+    return p;
+}
+
+}  // namespace
 
 ContactDissipation apply_contact_law(World& w) {
     Bodies& b = w.bodies;
@@ -11,7 +20,7 @@ ContactDissipation apply_contact_law(World& w) {
         if (pair.count == 0) continue;
         const std::uint32_t ia = pair.a;
         const std::uint32_t ib = pair.b;
-        const ContactParameters& params = w.contact.at(b.material[ia], b.material[ib]);
+        const ContactParameters params = softened(w.contact.at(b.material[ia], b.material[ib]), pair.stiffness_scale);
         const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
         const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
         const Vec2 n = pair.normal;
@@ -45,7 +54,8 @@ double contact_elastic_energy(const World& w) {
     double energy = 0.0;
     for (const PairContact& pair : w.contacts) {
         if (pair.count == 0) continue;
-        const ContactParameters& params = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
+        const ContactParameters params =
+            softened(w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]), pair.stiffness_scale);
         for (std::uint32_t k = 0; k < pair.count; ++k)
             energy += contact_elastic_energy(params, pair.points[k].overlap_m, pair.points[k].shear_spring_n);
     }

@@ -49,6 +49,11 @@ void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, do
                 break;
             }
     }
+    // The shear history is a spring stretch: if the contact softened, its force follows.
+    if (manifold.stiffness_scale != pair.stiffness_scale && pair.stiffness_scale > 0.0)
+        for (std::uint32_t i = 0; i < manifold.count; ++i)
+            updated[i].shear_spring_n *= manifold.stiffness_scale / pair.stiffness_scale;
+    pair.stiffness_scale = manifold.count > 0 ? manifold.stiffness_scale : 1.0;
     pair.count = manifold.count;
     pair.normal = manifold.normal;
     pair.reference = manifold.count > 0 ? manifold.reference : no_reference;

@@ -30,6 +30,7 @@ struct PairContact {
     Vec2 normal;                              ///< unit, from a to b
     std::uint32_t count = 0;                  ///< active points (0 = apart)
     std::uint32_t reference = no_reference;   ///< reference edge last step (hysteresis)
+    double stiffness_scale = 1.0;             ///< [-] softening of a shrinking overlap (polygon_contact.hpp)
     ContactPoint points[2];
 };
 

@@ -1,5 +1,6 @@
 #include "geometry/polygon_contact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -124,6 +125,12 @@ bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t 
         g.point_m = c.p + (0.5 * overlap) * n;
         g.overlap_m = overlap;
         g.feature = c.feature;
+    }
+    manifold.stiffness_scale = 1.0;
+    if (manifold.count == 2) {
+        const double shorter_edge = std::min(length(v2 - v1), length(inc.vertices[i2] - inc.vertices[i1]));
+        const double span = length(manifold.points[1].point_m - manifold.points[0].point_m);
+        manifold.stiffness_scale = std::min(1.0, span / (0.01 * shorter_edge));
     }
     return manifold.count > 0;
 }

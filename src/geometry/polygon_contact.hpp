@@ -14,6 +14,11 @@
 // Near-degenerate cases: when two candidate reference edges penetrate almost equally (parallel
 // faces, corner against corner) the previous step's reference edge is kept unless another edge
 // penetrates clearly less (hysteresis), so the normal does not flip back and forth between steps.
+// When the overlap shrinks to a point (a block sliding off the end of a step, two corners
+// meeting, bricks whose joints line up), the two points would carry full force until they
+// vanish together; instead the contact is softened by stiffness_scale = min(1, L / l), L the
+// distance between the two points and l = 1% of the shorter of the two edges, so its force
+// fades continuously to zero.
 #include <cstdint>
 
 #include "geometry/vec2.hpp"
@@ -45,6 +50,7 @@ struct ContactManifold {
     std::uint32_t count = 0;      ///< number of points (0: separated)
     ContactGeometry points[2];
     std::uint32_t reference = 0;  ///< make_feature(owner, edge) of the reference edge, for hysteresis
+    double stiffness_scale = 1.0; ///< [-] multiplies the contact's stiffnesses (short overlaps, see above)
 };
 
 /// No reference edge from a previous step.

@@ -45,7 +45,7 @@ ContactParameters read_contact_parameters(TableReader& t, const ContactParameter
         if (*mu < 0.0) t.fail("mu", fmt::format("must be >= 0, got {}", *mu));
         p.mu = *mu;
     } else if (require_all) {
-        t.fail("", fmt::format("missing required key '{}.mu'", t.path()));
+        t.fail_missing("mu");
     }
     const auto e = t.optional_number("e");
     const auto h_n = t.optional_number("h_n");
@@ -124,7 +124,7 @@ BodyDef read_body(TableReader t) {
         const double width = t.positive("width");
         const double height = t.positive("height");
         const auto center = t.optional_vec2("center");
-        if (!center) t.fail("", fmt::format("missing required key '{}.center' ([x, y] in m)", t.path()));
+        if (!center) t.fail_missing("center", " ([x, y] in m)");
         b.vertices_m = rectangle_vertices(width, height, *center, rotation);
     } else {
         b.vertices_m = t.vec2_list("vertices");

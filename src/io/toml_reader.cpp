@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -37,10 +38,12 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 std::string nearest(const std::string& word, const std::vector<std::string>& candidates) {
     std::string best;
-    std::size_t best_distance = std::max<std::size_t>(3, word.size() / 2) + 1;
+    std::size_t best_distance = std::numeric_limits<std::size_t>::max();
     for (const auto& c : candidates) {
         const std::size_t d = edit_distance(word, c);
-        if (d < best_distance) {
+        // A likely typo: at most about a third of the shorter word changed (at least one edit).
+        const std::size_t allowed = std::max<std::size_t>(1, (std::min(word.size(), c.size()) + 1) / 2);
+        if (d <= allowed && d < best_distance) {
             best_distance = d;
             best = c;
         }
@@ -72,6 +75,16 @@ void TableReader::fail(const std::string& key, const std::string& problem) const
     throw InputError(location(key), problem);
 }
 
+void TableReader::fail_missing(const std::string& key, const std::string& what) const {
+    // A missing key next to an unknown one is most likely a typo of it: point at the typo.
+    for (const auto& [k, node] : *table_) {
+        const std::string present(k.str());
+        if (known_.count(present) || nearest(present, {key}).empty()) continue;
+        fail(present, fmt::format("unknown key (did you mean '{}'?); '{}' is required{}", key, key_path(key), what));
+    }
+    fail("", fmt::format("missing required key '{}'{}", key_path(key), what));
+}
+
 const toml::node* TableReader::get(const std::string& key) {
     known_.insert(key);
     return table_->get(key);
@@ -95,7 +108,7 @@ std::optional<double> TableReader::optional_number(const std::string& key) {
 
 double TableReader::number(const std::string& key) {
     auto v = optional_number(key);
-    if (!v) fail("", fmt::format("missing required key '{}'", key_path(key)));
+    if (!v) fail_missing(key);
     return *v;
 }
 
@@ -109,7 +122,7 @@ std::optional<double> TableReader::optional_positive(const std::string& key) {
 
 double TableReader::positive(const std::string& key) {
     auto v = optional_positive(key);
-    if (!v) fail("", fmt::format("missing required key '{}'", key_path(key)));
+    if (!v) fail_missing(key);
     return *v;
 }
 
@@ -122,7 +135,7 @@ std::optional<std::string> TableReader::optional_string(const std::string& key) 
 
 std::string TableReader::string(const std::string& key) {
     auto v = optional_string(key);
-    if (!v) fail("", fmt::format("missing required key '{}'", key_path(key)));
+    if (!v) fail_missing(key);
     return *v;
 }
 
@@ -130,7 +143,7 @@ std::string TableReader::choice(const std::string& key, const std::vector<std::s
                                 const std::string& fallback) {
     auto v = optional_string(key);
     if (!v) {
-        if (fallback.empty()) fail("", fmt::format("missing required key '{}' (one of: {})", key_path(key), fmt::join(choices, ", ")));
+        if (fallback.empty()) fail_missing(key, fmt::format(" (one of: {})", fmt::join(choices, ", ")));
         return fallback;
     }
     if (std::find(choices.begin(), choices.end(), *v) != choices.end()) return *v;
@@ -159,7 +172,7 @@ std::optional<Vec2> TableReader::optional_vec2(const std::string& key) {
 
 std::vector<Vec2> TableReader::vec2_list(const std::string& key) {
     const toml::node* node = get(key);
-    if (!node) fail("", fmt::format("missing required key '{}'", key_path(key)));
+    if (!node) fail_missing(key);
     const toml::array* arr = node->as_array();
     if (!arr) fail(key, "must be a list of [x, y] pairs");
     std::vector<Vec2> out;
@@ -179,7 +192,7 @@ std::vector<Vec2> TableReader::vec2_list(const std::string& key) {
 
 std::vector<double> TableReader::number_list(const std::string& key) {
     const toml::node* node = get(key);
-    if (!node) fail("", fmt::format("missing required key '{}'", key_path(key)));
+    if (!node) fail_missing(key);
     const toml::array* arr = node->as_array();
     if (!arr) fail(key, "must be a list of numbers");
     std::vector<double> out;

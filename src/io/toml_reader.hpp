@@ -47,6 +47,8 @@ public:
 
     /// An error at this table or at one of its keys.
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
+    /// A required key is missing; names a present unknown key that looks like a typo of it.
+    [[noreturn]] void fail_missing(const std::string& key, const std::string& what = "") const;
     InputLocation location(const std::string& key) const;
     const std::string& path() const { return path_; }
     const std::string& file() const { return file_; }

@@ -30,7 +30,7 @@ MotionSample coast_after(MotionSample end, double dt_after) {
 
 MotionSample sample_sine(const SineMotion& m, double t) {
     const double tau = t - m.start_s;
-    if (tau <= 0.0) return {};
+    if (tau < 0.0) return {};
     const double tau_end = m.cycles > 0.0 ? m.cycles * m.period_s : INFINITY;
     if (tau <= tau_end) return sine_from_rest(m.amplitude_m_s2, m.period_s, m.phase_rad, tau);
     return coast_after(sine_from_rest(m.amplitude_m_s2, m.period_s, m.phase_rad, tau_end), tau - tau_end);
@@ -43,7 +43,7 @@ MotionSample sample_pulse(const PulseMotion& m, double t) {
 
 // d/dt[(t - t0) exp(-s^2)] = (1 - 2 s^2) exp(-s^2) with s = pi f (t - t0): the Ricker shape.
 MotionSample sample_ricker(const RickerMotion& m, double t) {
-    if (t <= 0.0) return {};
+    if (t < 0.0) return {};
     const double k = pi * m.peak_frequency_hz;
     const double s = k * (t - m.center_time_s);
     const double s0 = k * (0.0 - m.center_time_s);

@@ -1,0 +1,155 @@
+// Bad input gets a clear error naming the file, the key or the body, and the line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "io/input_error.hpp"
+#include "io/scenario.hpp"
+
+namespace blockdem {
+namespace {
+
+const char* valid = R"(
+[simulation]
+duration = 1.0
+dt = 1.0e-4
+
+[contact]
+kn = 2.0e4
+ks = 2.0e4
+mu = 0.3
+e = 0.4
+
+[[bodies]]
+name = "table"
+kind = "driven"
+shape = "rectangle"
+width = 4.0
+height = 0.2
+center = [0.0, -0.1]
+
+[[bodies]]
+name = "block"
+shape = "rectangle"
+width = 0.5
+height = 0.2
+center = [0.0, 0.1]
+mass = 1.0
+
+[table_motion.horizontal]
+type = "sine"
+amplitude = 350.0
+unit = "gal"
+period = 1.0
+)";
+
+std::filesystem::path write(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::temp_directory_path() / ("blockdem-test-" + name + ".toml");
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return text.replace(at, from.size(), to);
+}
+
+// The error message for loading text with overrides ("" if it loads).
+std::string error_of(const std::string& name, const std::string& text, std::vector<std::string> overrides = {}) {
+    try {
+        load_scenario(write(name, text), overrides);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+void expect_contains(const std::string& message, const std::string& part) {
+    EXPECT_NE(message.find(part), std::string::npos) << "message: " << message << "\nexpected to contain: " << part;
+}
+
+TEST(ScenarioErrors, ValidScenarioLoads) {
+    const LoadedScenario s = load_scenario(write("valid", valid), {});
+    EXPECT_EQ(s.world.bodies.size(), 2u);
+    EXPECT_NEAR(s.world.contact.at(0, 0).h_n, 0.28, 1e-4);
+    EXPECT_DOUBLE_EQ(s.world.contact.at(0, 0).h_s, 1.0);
+}
+
+TEST(ScenarioErrors, MisspelledKeySuggestsTheNearest) {
+    const std::string m = error_of("typo", replace(valid, "mu = 0.3", "muu = 0.3"));
+    expect_contains(m, "blockdem-test-typo.toml:");
+    expect_contains(m, "key 'contact.muu'");
+    expect_contains(m, "did you mean 'mu'?");
+}
+
+TEST(ScenarioErrors, MisspelledBodyKeyNamesTheBodyAndLine) {
+    const std::string m = error_of("bodytypo", replace(valid, "width = 0.5", "widht = 0.5"));
+    expect_contains(m, "key 'bodies.block.widht'");
+    expect_contains(m, "did you mean 'width'?");
+    expect_contains(m, ".toml:23:");
+}
+
+TEST(ScenarioErrors, MissingRequiredKey) {
+    expect_contains(error_of("missing", replace(valid, "duration = 1.0", "")), "missing required key 'simulation.duration'");
+}
+
+TEST(ScenarioErrors, WrongTypeAndUnits) {
+    expect_contains(error_of("type", replace(valid, "kn = 2.0e4", "kn = \"stiff\"")),
+                    "key 'contact.kn': must be a number, got the string \"stiff\"");
+    expect_contains(error_of("unit", replace(valid, "unit = \"gal\"", "unit = \"gall\"")), "did you mean 'gal'?");
+    expect_contains(error_of("negative", replace(valid, "mass = 1.0", "mass = -1.0")), "must be > 0");
+}
+
+TEST(ScenarioErrors, NonConvexAndSelfIntersectingPolygons) {
+    const std::string arrow = R"(shape = "polygon"
+vertices = [[0.0, 0.0], [0.5, 0.0], [0.5, 0.3], [0.25, 0.1], [0.0, 0.3]])";
+    std::string text = replace(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", arrow);
+    expect_contains(error_of("concave", text), "key 'bodies.block.vertices': not strictly convex at vertex 3");
+    const std::string bowtie = R"(shape = "polygon"
+vertices = [[0.0, 0.0], [0.5, 0.3], [0.5, 0.0], [0.0, 0.3]])";
+    text = replace(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", bowtie);
+    EXPECT_NE(error_of("bowtie", text), "");
+}
+
+TEST(ScenarioErrors, OverlapAtStartNamesBothBodies) {
+    expect_contains(error_of("overlap", replace(valid, "center = [0.0, 0.1]", "center = [0.0, 0.09]")),
+                    "bodies 'table' and 'block' overlap at the start by 0.01 m");
+}
+
+TEST(ScenarioErrors, TimeStepAboveStableLimitIsRefusedWithTheLimit) {
+    const std::string m = error_of("dt", replace(valid, "dt = 1.0e-4", "dt = 0.01"));
+    expect_contains(m, "time step dt = 0.01 s is above the stable limit 0.001669 s");
+    expect_contains(m, "body 'block'");
+}
+
+TEST(ScenarioErrors, OverridesReachAnyKey) {
+    const LoadedScenario s = load_scenario(write("override", valid), {"contact.h_s=0.5", "bodies.block.width=0.3",
+                                                                      "table_motion.horizontal.type=one_sine"});
+    EXPECT_DOUBLE_EQ(s.world.contact.at(0, 0).h_s, 0.5);
+    EXPECT_NEAR(s.world.bodies.bounding_radius_m[1], std::hypot(0.15, 0.1), 1e-12);
+    EXPECT_TRUE(std::holds_alternative<PulseMotion>(s.world.table_motion.horizontal));
+    expect_contains(error_of("badset", valid, {"contact.hs=0.5"}), "did you mean 'h_s'?");
+    expect_contains(error_of("badbody", valid, {"bodies.blok.width=1"}), "no element named or numbered 'blok'");
+}
+
+TEST(ScenarioErrors, MissingFileAndSyntaxError) {
+    try {
+        load_scenario("/nonexistent/scenario.toml", {});
+        FAIL();
+    } catch (const InputError& e) {
+        expect_contains(e.what(), "/nonexistent/scenario.toml: cannot open the file");
+    }
+    expect_contains(error_of("syntax", replace(valid, "mu = 0.3", "mu = = 0.3")), "TOML syntax error");
+}
+
+TEST(ScenarioErrors, DuplicateNamesAndBadMaterialPairs) {
+    expect_contains(error_of("dup", replace(valid, "name = \"block\"", "name = \"table\"")), "two bodies are named 'table'");
+    const std::string pairs = std::string(valid) + "\n[[contact.pairs]]\nmaterials = [\"default\", \"stone\"]\nmu = 0.5\n";
+    expect_contains(error_of("pairs", pairs), "no body uses material 'stone'");
+}
+
+}  // namespace
+}  // namespace blockdem
