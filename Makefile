@@ -11,7 +11,10 @@ CORE_PACKAGES := g++ cmake make pkg-config libtomlplusplus-dev libcli11-dev libf
                  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
                  libopenmpi-dev openmpi-bin
 # Packages for figures and the report (not needed by the library or the core tests).
-VIEW_PACKAGES := python3-matplotlib python3-numpy
+# python3-vtk9 reads the VTK output back in the tests; chromium and nodejs run the report test
+# (npm packages: tests/cli/report_browser/package.json); libjs-dygraphs is inlined in the report
+# for its zoomable plots; ffmpeg writes the MP4 animation (GIF without it).
+VIEW_PACKAGES := python3-matplotlib python3-numpy python3-vtk9 libjs-dygraphs ffmpeg chromium nodejs
 
 .PHONY: all deps deps-view build test demo bench clean
 

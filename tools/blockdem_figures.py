@@ -54,7 +54,7 @@ def main(argv=None):
             written = {"acceleration_comparison": figures.comparison_figure(
                 runs, labels, args.body, Path(args.out), split(args.formats), args.overlay)}
     except (RunFolderError, KeyError) as e:
-        print(f"blockdem_figures: {e}", file=sys.stderr)
+        print(f"blockdem_figures: {e.args[0] if isinstance(e, KeyError) else e}", file=sys.stderr)
         return 2
     for paths in written.values():
         for p in paths:

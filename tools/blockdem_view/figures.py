@@ -152,6 +152,9 @@ def snapshot_figure(run, times, folder, formats):
 def comparison_figure(runs, labels, body, folder, formats, overlay=False):
     """Fig. 5 style for several runs: the first run's table acceleration on top, then the body's
     acceleration of each run stacked (or all overlaid in one panel)."""
+    for run in runs:
+        if body not in run.recorded():
+            raise KeyError(f"{run.path}: no recorded body '{body}'; recorded: {', '.join(run.recorded())}")
     first = runs[0]
     table = first.table_name()
     panels = 1 + (1 if overlay else len(runs)) if table else (1 if overlay else len(runs))

@@ -111,7 +111,9 @@
       if (p.thinned) holder.insertAdjacentHTML("beforeend", "<p class='note'>Thinned for display; the full record is in the CSV files.</p>");
       return new Dygraph(div, p.rows, {
         labels: p.labels, xlabel: "time [s]", ylabel: p.ylabel, showRangeSelector: true,
-        legend: "follow", strokeWidth: 1.0, rangeSelectorHeight: 30,
+        legend: "always", strokeWidth: 1.0, rangeSelectorHeight: 30,
+        // Room for values such as -1.23e-13, written with 3 significant digits.
+        axes: { y: { axisLabelWidth: 72, axisLabelFormatter: (v) => Number(v).toPrecision(3) } },
         clickCallback: (event, x) => seek(x),
       });
     });
