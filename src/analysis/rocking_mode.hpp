@@ -10,8 +10,9 @@
 //      block slid during the run, else "none";
 //   3. the rocking period: n* = the n in {1, 2, 3} (n dividing W) whose Fourier amplitude of
 //      theta - mean at the frequency 1/(n T) is largest;
-//   4. periodicity: the RMS of theta(t) - theta(t - n* T) over the window, relative to the RMS of
-//      theta - mean, must be below 0.3, else "irregular" (no stable period);
+//   4. periodicity: the RMS of theta(t) - theta(t - n* T) over the second half of the window,
+//      relative to the RMS of theta - mean there, must be below 0.3, else "irregular" (no
+//      stable period yet);
 //   5. n* >= 2: "subharmonic" (rocking period n* T);
 //   6. n* = 1: the phase lag of theta's component at 1/T behind the table acceleration's:
 //      |lag| < 90 deg "in_phase" (the block leans the way the inertia force -m a pushes it when
@@ -72,21 +73,33 @@ struct RockingClassification {
 /// overturned from the flags alone.
 RockingClassification classify_rocking_mode(const RockingSignal& signal);
 
-/// Watches every dynamic body during a run and samples its rotation in the window.
+/// Watches every dynamic body during a run: samples its rotation in the window, and follows the
+/// slip of its base. Slip is measured at the midpoint of the base (the lowest corners at the
+/// start), horizontally and relative to the table: rocking about a corner moves that point by
+/// only b (1 - cos theta), while it moves the centroid by about h theta, so a rocking block
+/// that does not slide shows (almost) no slip.
 class RockingModeObserver {
 public:
-    /// window.valid() false: only the peaks are kept (non-harmonic motion).
+    /// window.valid() false: no samples are kept (non-harmonic motion); slip is still followed.
     RockingModeObserver(const World& w, RockingWindow window);
     /// Called once per step with the state at t.
     void observe(const World& w);
     /// The signal of body i, to be completed with the threshold and the flags.
     RockingSignal signal_of(std::size_t body) const;
+    double peak_abs_base_slip_m(std::size_t body) const { return peak_slip_m_[body]; }  ///< [m]
+    double base_slip_m(std::size_t body) const { return slip_m_[body]; }               ///< [m] now, signed (+x)
 
 private:
+    void observe_slip(const World& w);
+
     RockingWindow window_;
     std::size_t next_sample_ = 0;
     std::vector<std::vector<double>> theta_rad_;  ///< per body, the window samples
     std::vector<double> table_acceleration_m_s2_;
+    std::int64_t table_ = -1;                     ///< the driven body slip is measured against
+    std::vector<Vec2> base_offset_m_;             ///< [m] base midpoint - centroid at the start
+    std::vector<double> slip_m_;                  ///< [m]
+    std::vector<double> peak_slip_m_;             ///< [m]
 };
 
 }  // namespace blockdem

@@ -52,9 +52,10 @@ RockingWindow window_for(const World& w) {
     return harmonic ? rocking_window(*sine, w.settings.duration_s) : RockingWindow{};
 }
 
-bool slid(const World& w, const BodyResponse& r, std::size_t i) {
-    // As summary.json defines it (docs/outputs.md).
-    return r.sliding_time_s > 0.0 && r.peak_abs_relative_displacement_m > 1e-3 * w.bodies.bounding_radius_m[i];
+// Slip of the base beyond a thousandth of the block's size (the tolerance summary.json uses for
+// its centroid-based "slid", which a rocking block would pass without slipping).
+bool slid(const World& w, const RockingModeObserver& modes, std::size_t i) {
+    return modes.peak_abs_base_slip_m(i) > 1e-3 * w.bodies.bounding_radius_m[i];
 }
 
 // Past halfway between the critical angle and lying on its side, a block is down for good.
@@ -77,12 +78,12 @@ BodyOutcome outcome_of(const ResponseMonitor& monitor, const World& w, const Roc
     o.overturned = r.overturned();
     o.overturning_time_s = o.overturned ? r.last_crossing_s : -1.0;
     o.peak_rotation_rad = r.peak_abs_rotation_rad;
-    o.peak_sliding_m = r.peak_abs_relative_displacement_m;
-    o.residual_sliding_m = r.relative_displacement_m.x;
+    o.peak_sliding_m = modes.peak_abs_base_slip_m(i);
+    o.residual_sliding_m = modes.base_slip_m(i);
     RockingSignal signal = modes.signal_of(i);
     signal.rocking_threshold_rad = r.rocking_threshold_rad;
     signal.overturned = r.overturned();
-    signal.slid = slid(w, r, i);
+    signal.slid = slid(w, modes, i);
     signal.rocked = r.rocked();
     const RockingClassification mode = classify_rocking_mode(signal);
     o.mode = to_string(mode.mode);

@@ -43,8 +43,8 @@ struct BodyOutcome {
     bool overturned = false;
     double overturning_time_s = -1.0;     ///< [s], -1 when it did not overturn
     double peak_rotation_rad = 0.0;       ///< [rad] peak |rotation|
-    double peak_sliding_m = 0.0;          ///< [m] peak |centroid displacement relative to the table|
-    double residual_sliding_m = 0.0;      ///< [m] horizontal displacement relative to the table at the end
+    double peak_sliding_m = 0.0;          ///< [m] peak |slip of the base midpoint relative to the table| (x)
+    double residual_sliding_m = 0.0;      ///< [m] that slip at the end, signed (+x)
     std::string mode;                     ///< rocking mode (analysis/rocking_mode.hpp)
     int rocking_period_ratio = 0;         ///< [-] rocking period / table period (0: not rocking)
     double phase_lag_deg = 0.0;           ///< [deg] rotation behind the table acceleration (in/anti-phase)
