@@ -90,6 +90,29 @@ TEST(Sliding, AccelerationClippedAtMuG) {
     std::printf("sliding plateau: %zu samples, largest | |a| - mu g | / mu g = %.4f\n", count, worst);
 }
 
+TEST(Sliding, VerticalTableMotionChangesTheFrictionCapacity) {
+    // The table also accelerates downwards at 0.3 g (after a smooth 0.3 s start): the normal
+    // force drops to m (g - 0.3 g), and a horizontal shaking at 0.8 mu g that could not move the
+    // block before now makes it slide at mu (g - 0.3 g).
+    Model m = scenes::paper_sliding(1.0, 2.0);
+    m.table_motion.horizontal = SineMotion{0.8 * 0.3 * g, 1.0, std::numbers::pi / 2.0, 0.0, 0.0};
+    m.table_motion.vertical = make_acceleration_series({0.0, 0.3, 2.0}, {0.0, -0.3 * g, -0.3 * g});
+    const SlidingRun r = run(m);
+    const double capacity = 0.3 * 0.7 * g;
+    std::size_t count = 0;
+    double worst = 0.0;
+    std::size_t run_length = 0;
+    for (std::size_t i = static_cast<std::size_t>(0.5 / 1e-4); i < r.t.size(); ++i) {
+        run_length = r.sliding_points[i] == 2 ? run_length + 1 : 0;
+        if (run_length < 200) continue;
+        ++count;
+        worst = std::max(worst, std::abs(std::abs(r.a_block[i]) - capacity) / capacity);
+    }
+    EXPECT_GT(count, 1000u);
+    EXPECT_LT(worst, 0.01);
+    std::printf("vertical -0.3 g: sliding plateau %zu samples, largest deviation from mu (g + a_v) %.4f\n", count, worst);
+}
+
 TEST(Sliding, ResidualSlipMatchesNewmarkRigidPlastic) {
     for (double h_s : {1.0, 0.5}) {
         Model m = scenes::paper_sliding(h_s, 5.0);
