@@ -7,6 +7,8 @@ from matplotlib import animation
 
 from .figures import STYLE, draw_bodies, plt
 
+DPI = 100  # [pixels per inch] of the animation frames (600 pixels wide)
+
 
 def frame_rows(run, fps, max_frames):
     """History rows of the frames: one per 1/fps of simulated time, thinned to max_frames
@@ -41,9 +43,11 @@ def write_animation(run, folder, fps=25, max_frames=750, fmt=None):
         path = folder / f"animation.{fmt}"
         folder.mkdir(parents=True, exist_ok=True)
         if fmt == "mp4":
-            writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=["-pix_fmt", "yuv420p"])
+            # H.264 in yuv420p (what every player plays) needs even pixel sizes: pad by one if odd.
+            writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=[
+                "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p"])
         else:
             writer = animation.PillowWriter(fps=fps)
-        movie.save(path, writer=writer, dpi=100)
+        movie.save(path, writer=writer, dpi=DPI)
         plt.close(fig)
         return path

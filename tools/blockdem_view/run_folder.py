@@ -123,5 +123,5 @@ class RunFolder:
         end = float(self.t_s[-1])
         overturned = [b["overturning_time_s"] for b in self.summary.get("bodies", []) if b.get("overturned")]
         if overturned:
-            end = min(end, max(overturned) + 0.25 * max(overturned) + 0.5)
+            end = min(end, 1.25 * max(overturned) + 1.0)  # the fall to the ground takes about a second
         return list(np.linspace(0.0, end, count))
