@@ -13,4 +13,7 @@ example=examples/paper/rocking.toml
 "$build_dir/blockdem" report "$out_dir"
 echo
 echo "Report: $(cd "$out_dir" && pwd)/report.html   (open it in any browser; no server needed)"
-echo "ParaView: $out_dir/vtk/bodies.pvd and $out_dir/vtk/contacts.pvd; figures in $out_dir/figures/"
+echo "Figures: $out_dir/figures/"
+if [ -f "$out_dir/vtk/bodies.pvd" ]; then
+  echo "ParaView: $out_dir/vtk/bodies.pvd and $out_dir/vtk/contacts.pvd"
+fi
