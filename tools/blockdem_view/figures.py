@@ -135,17 +135,26 @@ def snapshot_figure(run, times, folder, formats):
     """Fig. 6 style: the bodies side by side at the chosen times, on one common scale."""
     rows = [run.row_at(t) for t in times]
     box = run.view_box(range(0, rows[-1] + 1))
+    aspect = (box[3] - box[2]) / (box[1] - box[0])
+    # Tall scenes (a tombstone) side by side as in the paper; wide ones (a row of blocks) stacked.
+    side_by_side = aspect >= 0.5
     with plt.rc_context(STYLE):
-        aspect = (box[3] - box[2]) / (box[1] - box[0])
-        panel_w = WIDTH_IN / len(rows)
-        fig, axes = plt.subplots(1, len(rows), sharey=True, squeeze=False,
-                                 figsize=(WIDTH_IN, min(6.0, panel_w * aspect + 0.9)))
-        for ax, row in zip(axes[0], rows):
+        if side_by_side:
+            size = (WIDTH_IN, min(6.0, WIDTH_IN / len(rows) * aspect + 0.9))
+            fig, axes = plt.subplots(1, len(rows), sharey=True, squeeze=False, figsize=size)
+            panels = axes[0]
+        else:
+            size = (WIDTH_IN, min(9.0, len(rows) * (WIDTH_IN * aspect + 0.35) + 0.5))
+            fig, axes = plt.subplots(len(rows), 1, sharex=True, squeeze=False, figsize=size)
+            panels = axes[:, 0]
+        for ax, row in zip(panels, rows):
             draw_bodies(ax, run, row, box)
             ax.set_title(f"t = {run.t_s[row]:.2f} s")
-            ax.set_xlabel("x [m]")
             ax.grid(False)
-        axes[0, 0].set_ylabel("y [m]")
+        for ax in panels if side_by_side else panels[-1:]:
+            ax.set_xlabel("x [m]")
+        for ax in panels[:1] if side_by_side else panels:
+            ax.set_ylabel("y [m]")
         return save(fig, folder, "snapshots", formats)
 
 

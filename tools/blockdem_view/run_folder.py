@@ -113,10 +113,13 @@ class RunFolder:
         step = max(1, len(rows) // 400)  # extents change slowly: 400 samples are plenty
         pts = np.vstack([self.outline_at(b, r) for r in list(rows)[::step] + [list(rows)[-1]] for b in chosen])
         lo, hi = pts.min(axis=0), pts.max(axis=0)
-        size = max(hi[0] - lo[0], hi[1] - lo[1])
-        pad = margin * size
-        # Show a strip below the lowest body so that what it stands on is visible.
-        return lo[0] - pad, hi[0] + pad, lo[1] - 2 * pad, hi[1] + pad
+        width, height = hi - lo
+        # Each direction padded by its own size (a wide scene needs no tall margins), but never
+        # by less than a quarter of the other, so that a flat scene keeps some height.
+        pad_x = margin * max(width, 0.25 * height)
+        pad_y = margin * max(height, 0.25 * width)
+        # A deeper strip below the lowest body, so that what it stands on is visible.
+        return lo[0] - pad_x, hi[0] + pad_x, lo[1] - 2 * pad_y, hi[1] + pad_y
 
     def snapshot_times(self, count=6):
         """Evenly spaced times [s]; for a toppling body they end shortly after it overturned."""
