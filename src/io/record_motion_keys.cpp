@@ -51,8 +51,8 @@ BaselineCorrection baseline(TableReader& keys, const std::string& fallback) {
 RecordReadOptions read_options(TableReader& keys) {
     RecordReadOptions o;
     o.format = parse_record_format(keys.choice("format", {"auto", "peer-at2", "knet", "cosmos-v2", "jma-csv", "plain"}, "auto"));
-    if (auto units = keys.optional_string("units")) {
-        if (!acceleration_unit_factor(*units)) keys.fail("units", fmt::format("unknown units '{}'; use one of: {}", *units, acceleration_unit_names));
+    if (auto units = keys.optional_string("unit")) {
+        if (!acceleration_unit_factor(*units)) keys.fail("unit", fmt::format("unknown unit '{}'; use one of: {}", *units, acceleration_unit_names));
         o.units = *units;
     }
     o.dt_s = keys.optional_positive("dt").value_or(0.0);

@@ -43,7 +43,7 @@ TEST(RecordMotionKeys, PlainTextNeedsItsUnitsAndDt) {
 type = "record"
 file = "values_only.txt"
 format = "plain"
-units = "gal"
+unit = "gal"
 dt = 0.02
 scale = 2.0
 pad = 0.1
@@ -59,7 +59,7 @@ TEST(RecordMotionKeys, BaselineBringsTheTableBackToRest) {
 [table_motion.horizontal]
 type = "record"
 file = "plain-text/elCentro.dat"
-units = "g"
+unit = "g"
 dt = 0.02
 baseline = "polynomial"
 baseline_order = 4
@@ -91,7 +91,7 @@ TEST(RecordMotionKeys, Errors) {
                      "table_motion.horizontal.target_pga", "not both");
     expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"nothing.AT2\"\n", "table_motion.horizontal.file",
                      "no record file");
-    expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"legacy_pea.AT2\"\nunits = \"kine\"\n",
+    expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"legacy_pea.AT2\"\nunit = \"kine\"\n",
                      "table_motion.horizontal.units", "unknown units");
     expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"legacy_pea.AT2\"\nstart = 5.0\n",
                      "table_motion.horizontal.start", "fewer than 2 samples");
