@@ -92,7 +92,7 @@ TEST(RecordMotionKeys, Errors) {
     expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"nothing.AT2\"\n", "table_motion.horizontal.file",
                      "no record file");
     expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"legacy_pea.AT2\"\nunit = \"kine\"\n",
-                     "table_motion.horizontal.units", "unknown units");
+                     "table_motion.horizontal.unit", "unknown unit");
     expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"legacy_pea.AT2\"\nstart = 5.0\n",
                      "table_motion.horizontal.start", "fewer than 2 samples");
     expect_key_error("[table_motion.horizontal]\ntype = \"record\"\nfile = \"legacy_pea.AT2\"\nbaseline = \"cubic\"\n",
