@@ -31,12 +31,19 @@ bool ResultCollector::is_failure(const std::string& row) const {
 }
 
 void ResultCollector::record(std::int64_t id, const std::string& row) {
+    {
+        std::lock_guard lock(mutex_);
+        const bool again = log_.rows().count(id) > 0;  // a case redone after a lost reply: count once
+        log_.append(id, row);
+        if (!again) {
+            ++done_this_run_;
+            if (is_failure(row)) ++failed_;
+        }
+    }
+    // The fsync waits for the disk, not the CPU: outside the lock, so that other workers'
+    // rows do not queue behind it (the kernel serves concurrent syncs of one file together).
+    log_.sync();
     std::lock_guard lock(mutex_);
-    const bool again = log_.rows().count(id) > 0;  // a case redone after a lost reply: count once
-    log_.append(id, row);
-    if (again) return;
-    ++done_this_run_;
-    if (is_failure(row)) ++failed_;
     const auto now = std::chrono::steady_clock::now();
     if (on_progress_ && now - last_report_ >= std::chrono::seconds(1)) {
         last_report_ = now;

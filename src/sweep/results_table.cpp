@@ -119,8 +119,11 @@ FinishedCasesLog::~FinishedCasesLog() {
 
 void FinishedCasesLog::append(std::int64_t id, const std::string& row) {
     write_all(fd_, row + "\n", file_);  // one write: a crash leaves a whole row or a torn last one
-    if (::fsync(fd_) != 0) throw std::runtime_error(system_error("cannot sync", file_));
     rows_[id] = row;
+}
+
+void FinishedCasesLog::sync() const {
+    if (::fsync(fd_) != 0) throw std::runtime_error(system_error("cannot sync", file_));
 }
 
 void write_file_atomically(const std::filesystem::path& file, const std::string& text) {

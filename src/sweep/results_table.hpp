@@ -37,8 +37,12 @@ public:
     FinishedCasesLog(const FinishedCasesLog&) = delete;
     FinishedCasesLog& operator=(const FinishedCasesLog&) = delete;
 
-    /// Appends one row durably (write, then fsync) and keeps it. Not thread safe: callers lock.
+    /// Appends one row with a single write() (so that a killed process leaves it whole) and
+    /// keeps it. Not thread safe: callers lock. Follow with sync() to make it durable.
     void append(std::int64_t id, const std::string& row);
+    /// fsync: the rows appended so far survive a crash of the machine. Thread safe, and may
+    /// run while another thread appends.
+    void sync() const;
     /// Finished rows by case id.
     const std::map<std::int64_t, std::string>& rows() const { return rows_; }
 
