@@ -28,7 +28,7 @@ GROUND_MOTIONS = pathlib.Path("/work/shared/data/ground-motions")
 # Horizontal components (the vertical RinaldiUP and the RSN6 copy of IELC180 are left out).
 SUITE = ["peer-at2/IELC180.AT2", "peer-at2/ARL360.at2", "peer-at2/Rinaldi228.AT2", "peer-at2/Rinaldi318.AT2",
          "peer-at2/RSN763_LOMAP_GIL067.AT2", "peer-at2/RSN763_LOMAP_GIL337.AT2", "peer-at2/NIS090.AT2",
-         "plain-text/Northridge.dat", "plain-text/elCentro.dat dt=0.02 units=g"]
+         "plain-text/Northridge.dat", "plain-text/elCentro.dat dt=0.02 unit=g"]
 DURATION_S = 15.0
 
 

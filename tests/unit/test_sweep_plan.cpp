@@ -72,7 +72,7 @@ TEST(SweepPlan, CaseListAndRecordListFiles) {
     write(dir / "bad.csv", "a,b\n1\n");
     EXPECT_THROW(read_case_list(dir / "bad.csv"), std::invalid_argument);
 
-    write(dir / "suite.txt", "# a suite\nsub/one.AT2\nvalues.dat dt=0.02 units=g  # values only\n");
+    write(dir / "suite.txt", "# a suite\nsub/one.AT2\nvalues.dat dt=0.02 unit=g  # values only\n");
     const auto suite = read_record_suite(dir / "suite.txt");
     ASSERT_EQ(suite.size(), 2u);
     EXPECT_EQ(suite[0].file, (dir / "sub/one.AT2").lexically_normal());
