@@ -11,6 +11,7 @@ void add_run_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_motion_command(CLI::App& app);
 void add_report_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 
 /// Writes out_dir/report.html and out_dir/figures/ through tools/blockdem_report.py (cmd_report.cpp).

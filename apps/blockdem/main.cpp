@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
     blockdem::cli::add_check_command(app);
     blockdem::cli::add_motion_command(app);
     blockdem::cli::add_report_command(app);
+    blockdem::cli::add_bench_command(app);
     blockdem::cli::add_sweep_command(app);
     try {
         app.parse(argc, argv);

@@ -28,10 +28,10 @@ void GridBroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vecto
     extents_.resize(n);
     for (std::uint32_t i = 0; i < n; ++i)
         extents_[i] = std::max(boxes[i].hi.x - boxes[i].lo.x, boxes[i].hi.y - boxes[i].lo.y);
-    std::vector<double> sorted_extents = extents_;
-    std::nth_element(sorted_extents.begin(), sorted_extents.begin() + n / 2, sorted_extents.end());
+    sorted_extents_.assign(extents_.begin(), extents_.end());  // scratch kept between rebuilds
+    std::nth_element(sorted_extents_.begin(), sorted_extents_.begin() + n / 2, sorted_extents_.end());
     Grid grid;
-    grid.cell_m = std::max(2.0 * sorted_extents[n / 2], 1e-9);
+    grid.cell_m = std::max(2.0 * sorted_extents_[n / 2], 1e-9);
 
     large_.clear();
     small_.clear();
@@ -66,11 +66,11 @@ void GridBroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vecto
                     ++cell_start_[static_cast<std::size_t>(cy * grid.nx + cx) + 1];
         for (std::size_t c = 0; c < cells; ++c) cell_start_[c + 1] += cell_start_[c];
         cell_items_.resize(cell_start_[cells]);
-        std::vector<std::uint32_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+        fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
         for (std::uint32_t i : small_)
             for (auto cy = grid.iy(boxes[i].lo.y); cy <= grid.iy(boxes[i].hi.y); ++cy)
                 for (auto cx = grid.ix(boxes[i].lo.x); cx <= grid.ix(boxes[i].hi.x); ++cx)
-                    cell_items_[fill[static_cast<std::size_t>(cy * grid.nx + cx)]++] = i;
+                    cell_items_[fill_[static_cast<std::size_t>(cy * grid.nx + cx)]++] = i;
 
         for (std::size_t c = 0; c < cells; ++c) {
             const std::int64_t cx = static_cast<std::int64_t>(c) % grid.nx;

@@ -29,6 +29,13 @@ public:
     void find_pairs(const std::vector<Aabb>& boxes, const std::vector<std::uint8_t>& is_static,
                     std::vector<BodyPair>& pairs);
 
+    /// Bytes held by the scratch arrays.
+    std::size_t memory_bytes() const {
+        return (cell_start_.capacity() + cell_items_.capacity() + large_.capacity() + small_.capacity() +
+                fill_.capacity()) * sizeof(std::uint32_t) +
+               (extents_.capacity() + sorted_extents_.capacity()) * sizeof(double);
+    }
+
 private:
     // Scratch arrays kept between calls so that a rebuild allocates nothing in steady state.
     std::vector<std::uint32_t> cell_start_;
@@ -36,6 +43,8 @@ private:
     std::vector<std::uint32_t> large_;
     std::vector<std::uint32_t> small_;
     std::vector<double> extents_;
+    std::vector<double> sorted_extents_;
+    std::vector<std::uint32_t> fill_;
 };
 
 }  // namespace blockdem

@@ -1,6 +1,7 @@
 #include "contact/contact_forces.hpp"
 
 #include "laws/linear_spring_dashpot.hpp"
+#include "world/parallel.hpp"
 
 namespace blockdem {
 namespace {
@@ -11,55 +12,108 @@ ContactParameters softened(ContactParameters p, double scale) {
     return p;
 }
 
-}  // namespace
+// The law at every point of one pair: updates the points' forces and history, and writes what
+// they add to the two bodies into the pair's own slot (no shared sums: parallel.hpp, rule 1).
+void pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, double dt_s, PairForces& out) {
+    out.normal_dashpot_j = out.shear_dashpot_j = out.friction_j = 0.0;
+    out.count = pair.count;
+    if (pair.count == 0) return;
+    const std::uint32_t ia = pair.a;
+    const std::uint32_t ib = pair.b;
+    const ContactParameters params = softened(contact.at(b.material[ia], b.material[ib]), pair.stiffness_scale);
+    const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
+    const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
+    const Vec2 n = pair.normal;
+    const Vec2 t = perp(n);
+    for (std::uint32_t k = 0; k < pair.count; ++k) {
+        ContactPoint& point = pair.points[k];
+        const Vec2 ra = point.point_m - b.position_m[ia];
+        const Vec2 rb = point.point_m - b.position_m[ib];
+        const Vec2 relative = (b.velocity_m_s[ib] + cross(b.angular_velocity_rad_s[ib], rb)) -
+                              (b.velocity_m_s[ia] + cross(b.angular_velocity_rad_s[ia], ra));
+        const ContactKinematics kin{point.overlap_m, dot(relative, n), dot(relative, t)};
+        const ContactForce f = linear_spring_dashpot(params, dash, kin, point.shear_spring_n, dt_s);
+        point.normal_force_n = f.normal_n;
+        point.shear_spring_n = f.shear_spring_n;
+        point.shear_force_n = f.shear_n;
+        point.sliding = f.sliding;
+        const Vec2 on_b = f.normal_n * n + f.shear_n * t;
+        out.on_b_n[k] = on_b;
+        out.torque_on_b_n_m[k] = cross(rb, on_b);
+        out.torque_on_a_n_m[k] = cross(ra, on_b);
+        out.normal_dashpot_j += f.normal_dashpot_work_j;
+        out.shear_dashpot_j += f.shear_dashpot_work_j;
+        out.friction_j += f.friction_work_j;
+    }
+}
 
-ContactDissipation apply_contact_law(World& w) {
-    Bodies& b = w.bodies;
-    ContactDissipation lost;
-    for (PairContact& pair : w.contacts) {
-        if (pair.count == 0) continue;
-        const std::uint32_t ia = pair.a;
-        const std::uint32_t ib = pair.b;
-        const ContactParameters params = softened(w.contact.at(b.material[ia], b.material[ib]), pair.stiffness_scale);
-        const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
-        const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
-        const Vec2 n = pair.normal;
-        const Vec2 t = perp(n);
-        for (std::uint32_t k = 0; k < pair.count; ++k) {
-            ContactPoint& point = pair.points[k];
-            const Vec2 ra = point.point_m - b.position_m[ia];
-            const Vec2 rb = point.point_m - b.position_m[ib];
-            const Vec2 relative = (b.velocity_m_s[ib] + cross(b.angular_velocity_rad_s[ib], rb)) -
-                                  (b.velocity_m_s[ia] + cross(b.angular_velocity_rad_s[ia], ra));
-            const ContactKinematics kin{point.overlap_m, dot(relative, n), dot(relative, t)};
-            const ContactForce f = linear_spring_dashpot(params, dash, kin, point.shear_spring_n, w.dt_s);
-            point.normal_force_n = f.normal_n;
-            point.shear_spring_n = f.shear_spring_n;
-            point.shear_force_n = f.shear_n;
-            point.sliding = f.sliding;
-            const Vec2 on_b = f.normal_n * n + f.shear_n * t;
-            b.force_n[ib] += on_b;
-            b.torque_n_m[ib] += cross(rb, on_b);
-            b.force_n[ia] -= on_b;
-            b.torque_n_m[ia] -= cross(ra, on_b);
-            lost.normal_dashpot_j += f.normal_dashpot_work_j;
-            lost.shear_dashpot_j += f.shear_dashpot_work_j;
-            lost.friction_j += f.friction_work_j;
+// Adds body i's pair slots to its force and torque, in table order (parallel.hpp, rule 2).
+void gather_body(std::size_t i, const World& w, Vec2& force_n, double& torque_n_m) {
+    for (std::uint32_t e = w.body_pair_start[i]; e < w.body_pair_start[i + 1]; ++e) {
+        const std::uint32_t p = w.body_pair_entries[e] >> 1;
+        const bool is_b = (w.body_pair_entries[e] & 1u) != 0;
+        const PairForces& f = w.pair_forces[p];
+        for (std::uint32_t k = 0; k < f.count; ++k) {
+            if (is_b) {
+                force_n += f.on_b_n[k];
+                torque_n_m += f.torque_on_b_n_m[k];
+            } else {
+                force_n -= f.on_b_n[k];
+                torque_n_m -= f.torque_on_a_n_m[k];
+            }
         }
     }
+}
+
+}  // namespace
+
+void index_pairs_by_body(World& w) {
+    const std::size_t n = w.bodies.size();
+    w.body_pair_start.assign(n + 1, 0);
+    for (const PairContact& pair : w.contacts) {
+        ++w.body_pair_start[pair.a + 1];
+        ++w.body_pair_start[pair.b + 1];
+    }
+    for (std::size_t i = 0; i < n; ++i) w.body_pair_start[i + 1] += w.body_pair_start[i];
+    w.body_pair_entries.resize(w.body_pair_start[n]);
+    // Filled in table order, so every body's list is in table order too.
+    w.contacts_fill.assign(w.body_pair_start.begin(), w.body_pair_start.end() - 1);
+    for (std::uint32_t p = 0; p < w.contacts.size(); ++p) {
+        w.body_pair_entries[w.contacts_fill[w.contacts[p].a]++] = 2 * p;
+        w.body_pair_entries[w.contacts_fill[w.contacts[p].b]++] = 2 * p + 1;
+    }
+    w.pair_forces.resize(w.contacts.size());
+}
+
+ContactDissipation apply_contact_law(World& w) {
+    if (w.pair_forces.size() != w.contacts.size() || w.body_pair_start.size() != w.bodies.size() + 1)
+        index_pairs_by_body(w);
+    Bodies& b = w.bodies;
+    const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
+    parallel_for(pairs, [&](std::ptrdiff_t p) { pair_law(w.contacts[p], b, w.contact, w.dt_s, w.pair_forces[p]); });
+
+    const auto bodies = static_cast<std::ptrdiff_t>(b.size());
+    parallel_for(bodies,
+                 [&](std::ptrdiff_t i) { gather_body(static_cast<std::size_t>(i), w, b.force_n[i], b.torque_n_m[i]); });
+
+    ContactDissipation lost;
+    lost.normal_dashpot_j = deterministic_sum(pairs, [&](std::ptrdiff_t p) { return w.pair_forces[p].normal_dashpot_j; });
+    lost.shear_dashpot_j = deterministic_sum(pairs, [&](std::ptrdiff_t p) { return w.pair_forces[p].shear_dashpot_j; });
+    lost.friction_j = deterministic_sum(pairs, [&](std::ptrdiff_t p) { return w.pair_forces[p].friction_j; });
     return lost;
 }
 
 double contact_elastic_energy(const World& w) {
-    double energy = 0.0;
-    for (const PairContact& pair : w.contacts) {
-        if (pair.count == 0) continue;
+    return deterministic_sum(static_cast<std::ptrdiff_t>(w.contacts.size()), [&](std::ptrdiff_t p) {
+        const PairContact& pair = w.contacts[p];
+        if (pair.count == 0) return 0.0;
         const ContactParameters params =
             softened(w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]), pair.stiffness_scale);
+        double energy = 0.0;
         for (std::uint32_t k = 0; k < pair.count; ++k)
             energy += contact_elastic_energy(params, pair.points[k].overlap_m, pair.points[k].shear_spring_n);
-    }
-    return energy;
+        return energy;
+    });
 }
 
 }  // namespace blockdem

@@ -1,7 +1,9 @@
 #pragma once
 // Applies the contact law to every closed contact point and adds the forces and torques to the
-// two bodies. Pairs are visited in table order (sorted by body ids), so the sums, and therefore
-// the results, do not depend on how the pairs were found.
+// two bodies. The law runs on all pairs in parallel, each writing its own slot (PairForces);
+// then each body adds its pairs' slots in table order (sorted by body ids), so every body's sum
+// has the same terms in the same order as a serial loop over the table: the results depend
+// neither on how the pairs were found nor on the number of threads (world/parallel.hpp).
 //
 // Which mass the dashpots use: a pair's reduced mass m_a m_b / (m_a + m_b) (the dynamic body's
 // own mass against a fixed or driven one) shared equally by the pair's active points. A block
@@ -25,6 +27,10 @@ struct ContactDissipation {
 /// Adds contact forces and torques to w.bodies.force_n / torque_n_m and updates each point's
 /// forces and history.
 ContactDissipation apply_contact_law(World& w);
+
+/// Lists each body's pairs in table order (World::body_pair_start/entries) and sizes the force
+/// slots; called whenever the table's pairs change (a broad-phase rebuild).
+void index_pairs_by_body(World& w);
 
 /// Elastic energy stored in all contact springs [J].
 double contact_elastic_energy(const World& w);

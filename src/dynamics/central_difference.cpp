@@ -1,5 +1,7 @@
 #include "dynamics/central_difference.hpp"
 
+#include "world/parallel.hpp"
+
 namespace blockdem {
 
 void place_driven_bodies(World& w, double t_s) {
@@ -20,12 +22,13 @@ void update_velocities(World& w) {
     const double dt = w.dt_s;
     const MotionSample h = sample(w.table_motion.horizontal, w.time_s);
     const MotionSample v = sample(w.table_motion.vertical, w.time_s);
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] == BodyKind::driven) {
-            b.acceleration_m_s2[i] = {h.acceleration_m_s2, v.acceleration_m_s2};
-            b.velocity_at_t_m_s[i] = {h.velocity_m_s, v.velocity_m_s};
-        }
-        if (b.kind[i] != BodyKind::dynamic) continue;
+    for (std::uint32_t i : w.driven_bodies) {
+        b.acceleration_m_s2[i] = {h.acceleration_m_s2, v.acceleration_m_s2};
+        b.velocity_at_t_m_s[i] = {h.velocity_m_s, v.velocity_m_s};
+    }
+    const auto n = static_cast<std::ptrdiff_t>(b.size());
+    parallel_for(n, [&](std::ptrdiff_t i) {
+        if (b.kind[i] != BodyKind::dynamic) return;
         const Vec2 a = b.inv_mass_1_kg[i] * b.force_n[i];
         const double alpha = b.inv_inertia_1_kg_m2[i] * b.torque_n_m[i];
         const Vec2 v_old = b.velocity_m_s[i];
@@ -36,7 +39,7 @@ void update_velocities(World& w) {
         b.angular_velocity_rad_s[i] = w_old + dt * alpha;
         b.velocity_at_t_m_s[i] = 0.5 * (v_old + b.velocity_m_s[i]);
         b.angular_velocity_at_t_rad_s[i] = 0.5 * (w_old + b.angular_velocity_rad_s[i]);
-    }
+    });
 }
 
 double update_positions(World& w) {
@@ -45,19 +48,21 @@ double update_positions(World& w) {
     const double t_next = w.time_s + dt;
     const Vec2 next_table{sample(w.table_motion.horizontal, t_next).displacement_m,
                           sample(w.table_motion.vertical, t_next).displacement_m};
+    const auto n = static_cast<std::ptrdiff_t>(b.size());
+    parallel_for(n, [&](std::ptrdiff_t i) {
+        if (b.kind[i] != BodyKind::dynamic) return;
+        b.position_m[i] += dt * b.velocity_m_s[i];
+        b.rotation_rad[i] += dt * b.angular_velocity_rad_s[i];
+    });
+    // Driven bodies in id order (a few): the table work is summed serially, deterministic.
     double table_work_j = 0.0;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] == BodyKind::dynamic) {
-            b.position_m[i] += dt * b.velocity_m_s[i];
-            b.rotation_rad[i] += dt * b.angular_velocity_rad_s[i];
-        } else if (b.kind[i] == BodyKind::driven) {
-            const Vec2 next = b.initial_position_m[i] + next_table;
-            const Vec2 moved = next - b.position_m[i];
-            // The contacts push on the table with force_n; the table does work -force . dx on them.
-            table_work_j -= dot(b.force_n[i], moved);
-            b.velocity_m_s[i] = (1.0 / dt) * moved;
-            b.position_m[i] = next;
-        }
+    for (std::uint32_t i : w.driven_bodies) {
+        const Vec2 next = b.initial_position_m[i] + next_table;
+        const Vec2 moved = next - b.position_m[i];
+        // The contacts push on the table with force_n; the table does work -force . dx on them.
+        table_work_j -= dot(b.force_n[i], moved);
+        b.velocity_m_s[i] = (1.0 / dt) * moved;
+        b.position_m[i] = next;
     }
     return table_work_j;
 }

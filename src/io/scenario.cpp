@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "geometry/polygon.hpp"
+#include "io/assembly_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/time_series_csv.hpp"
@@ -229,13 +230,14 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     Model model;
     model.settings = read_settings(top.table("simulation"));
     const std::vector<TableReader> body_tables = top.table_array("bodies");
-    if (body_tables.empty()) top.fail("", "the scenario has no [[bodies]]");
+    if (body_tables.empty() && !top.has("assemblies")) top.fail("", "the scenario has no [[bodies]] or [[assemblies]]");
     std::set<std::string> names;
     for (const TableReader& bt : body_tables) {
         model.bodies.push_back(read_body(bt));
         if (!names.insert(model.bodies.back().name).second)
             bt.fail("name", fmt::format("two bodies are named '{}'", model.bodies.back().name));
     }
+    read_assemblies(top, model);  // generated blocks and [settling] (io/assembly_keys.hpp)
     model.contact = read_contact(top.table("contact"), model.bodies);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
     top.allow({"title", "description", "output"});  // [output] is read by load_scenario: not physics

@@ -58,8 +58,17 @@ struct SimulationSettings {
     double max_energy_error = 0.5;           ///< [-] stop when the balance error exceeds this fraction
 };
 
+/// A settling stage before the run (world/settling.hpp): the assembly is stepped under gravity,
+/// table at rest, until kinetic / potential energy stays below kinetic_ratio for window_s.
+struct SettlingSettings {
+    double kinetic_ratio = 1e-8;   ///< [-]
+    double window_s = 0.05;        ///< [s]
+    double max_time_s = 5.0;       ///< [s] give up (and report) after this much simulated time
+};
+
 struct Model {
     SimulationSettings settings;
+    std::optional<SettlingSettings> settling;  ///< settle before t = 0 (build_world does it)
     std::vector<BodyDef> bodies;
     MaterialPairs contact;
     TableMotion table_motion;

@@ -13,7 +13,10 @@ ResponseMonitor::ResponseMonitor(const World& w) : responses_(w.bodies.size()), 
             break;
         }
     for (std::size_t i = 0; i < b.size(); ++i) {
-        // Base corners: the lowest corners at the start (within round-off of the lowest).
+        // Base corners: the lowest corners at the start. A settled assembly (world/settling.hpp)
+        // starts slightly tilted (rotations of order 1e-4 rad), so "as low" means within 1e-3 of
+        // the body's size, not within round-off: otherwise one corner alone is the base, alpha
+        // is zero on one side and the block is reported overturned at t = 0.
         double lowest = INFINITY;
         double size = b.bounding_radius_m[i];
         for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k)
@@ -22,7 +25,7 @@ ResponseMonitor::ResponseMonitor(const World& w) : responses_(w.bodies.size()), 
         double right = -INFINITY;
         for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k) {
             const Vec2 v = b.world_vertices_m[b.vertex_begin[i] + k];
-            if (v.y > lowest + 1e-6 * size) continue;
+            if (v.y > lowest + 1e-3 * size) continue;
             left = std::min(left, v.x);
             right = std::max(right, v.x);
         }

@@ -1,5 +1,6 @@
 #include "world/step.hpp"
 
+#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -7,42 +8,47 @@
 #include "contact/contact_forces.hpp"
 #include "geometry/polygon.hpp"
 #include "dynamics/central_difference.hpp"
+#include "world/parallel.hpp"
 #include "world/simulation_error.hpp"
 
 namespace blockdem {
 
 void update_body_geometry(World& w) {
     Bodies& b = w.bodies;
-    for (std::size_t i = 0; i < b.size(); ++i) {
+    const auto n = static_cast<std::ptrdiff_t>(b.size());
+    // Normals are turned with the body rather than recomputed from the corners: no square root.
+    parallel_for(n, [&](std::ptrdiff_t i) {
         const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
         const std::uint32_t first = b.vertex_begin[i];
         const std::uint32_t count = b.vertex_count[i];
-        for (std::uint32_t k = 0; k < count; ++k)
-            b.world_vertices_m[first + k] = b.position_m[i] + r.apply(b.local_vertices_m[first + k]);
-        for (std::uint32_t k = 0; k < count; ++k)
-            b.world_normals[first + k] =
-                edge_normal(b.world_vertices_m[first + k], b.world_vertices_m[first + (k + 1) % count]);
-    }
+        for (std::uint32_t k = first; k < first + count; ++k) {
+            b.world_vertices_m[k] = b.position_m[i] + r.apply(b.local_vertices_m[k]);
+            b.world_normals[k] = r.apply(b.local_normals[k]);
+        }
+    });
 }
 
 bool broad_phase_is_stale(const World& w) {
     const Bodies& b = w.bodies;
     if (b.position_at_rebuild_m.size() != b.size()) return true;
     const double allowed = 0.5 * w.broad_phase_margin_m;
-    for (std::size_t i = 0; i < b.size(); ++i) {
+    const auto n = static_cast<std::ptrdiff_t>(b.size());
+    const double moved_too_far = deterministic_sum(n, [&](std::ptrdiff_t i) {
         // Largest motion of any point of the body since the rebuild: translation + r |rotation|.
-        const double moved = length(b.position_m[i] - b.position_at_rebuild_m[i]) +
+        const Vec2 d = b.position_m[i] - b.position_at_rebuild_m[i];
+        const double moved = std::sqrt(dot(d, d)) +
                              b.bounding_radius_m[i] * std::abs(b.rotation_rad[i] - b.rotation_at_rebuild_rad[i]);
-        if (moved > allowed) return true;
-    }
-    return false;
+        return moved > allowed ? 1.0 : 0.0;
+    });
+    return moved_too_far > 0.0;
 }
 
 void rebuild_candidate_pairs(World& w) {
     Bodies& b = w.bodies;
     const double pad = 0.5 * w.broad_phase_margin_m;
+    const auto n = static_cast<std::ptrdiff_t>(b.size());
     w.boxes.resize(b.size());
-    for (std::size_t i = 0; i < b.size(); ++i) {
+    parallel_for(n, [&](std::ptrdiff_t i) {
         Aabb box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
         for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k) {
             const Vec2 v = b.world_vertices_m[b.vertex_begin[i] + k];
@@ -50,9 +56,10 @@ void rebuild_candidate_pairs(World& w) {
             box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y)};
         }
         w.boxes[i] = {box.lo - Vec2{pad, pad}, box.hi + Vec2{pad, pad}};
-    }
+    });
     w.broad_phase.find_pairs(w.boxes, b.is_static, w.candidate_pairs);
     merge_candidate_pairs(w.contacts, w.candidate_pairs, w.contacts_scratch);
+    index_pairs_by_body(w);
     b.position_at_rebuild_m = b.position_m;
     b.rotation_at_rebuild_rad = b.rotation_rad;
     ++w.broad_phase_rebuilds;
@@ -60,7 +67,9 @@ void rebuild_candidate_pairs(World& w) {
 
 void update_contact_geometry(World& w) {
     const Bodies& b = w.bodies;
-    for (PairContact& pair : w.contacts) {
+    const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
+    parallel_for(pairs, [&](std::ptrdiff_t p) {
+        PairContact& pair = w.contacts[p];
         const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
                             b.vertex_count[pair.a]};
         const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
@@ -70,39 +79,40 @@ void update_contact_geometry(World& w) {
         // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
         const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
         update_pair_geometry(pair, manifold, match_distance);
-    }
+    });
 }
 
 namespace {
 
 double gravitational_energy(const World& w) {
-    double energy = 0.0;
-    for (std::size_t i = 0; i < w.bodies.size(); ++i)
-        if (w.bodies.kind[i] == BodyKind::dynamic)
-            energy += w.bodies.mass_kg[i] * w.settings.gravity_m_s2 * w.bodies.position_m[i].y;
-    return energy;
+    const Bodies& b = w.bodies;
+    const double g = w.settings.gravity_m_s2;
+    return deterministic_sum(static_cast<std::ptrdiff_t>(b.size()), [&](std::ptrdiff_t i) {
+        return b.kind[i] == BodyKind::dynamic ? b.mass_kg[i] * g * b.position_m[i].y : 0.0;
+    });
 }
 
 double kinetic_energy(const World& w) {
-    double energy = 0.0;
     const Bodies& b = w.bodies;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] != BodyKind::dynamic) continue;
+    return deterministic_sum(static_cast<std::ptrdiff_t>(b.size()), [&](std::ptrdiff_t i) {
+        if (b.kind[i] != BodyKind::dynamic) return 0.0;
         const Vec2 v = b.velocity_at_t_m_s[i];
         const double omega = b.angular_velocity_at_t_rad_s[i];
-        energy += 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
-    }
-    return energy;
+        return 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
+    });
 }
 
 }  // namespace
 
 void compute_forces(World& w) {
+    // Gravity is the first term of every body's sum; apply_contact_law adds the contacts.
     Bodies& b = w.bodies;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        b.force_n[i] = {0.0, -w.settings.gravity_m_s2 * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
+    const auto n = static_cast<std::ptrdiff_t>(b.size());
+    const double g = w.settings.gravity_m_s2;
+    parallel_for(n, [&](std::ptrdiff_t i) {
+        b.force_n[i] = {0.0, -g * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
         b.torque_n_m[i] = 0.0;
-    }
+    });
     const ContactDissipation lost = apply_contact_law(w);
     w.energy.normal_dashpot_j += lost.normal_dashpot_j;
     w.energy.shear_dashpot_j += lost.shear_dashpot_j;
@@ -123,15 +133,30 @@ void initialise_energy(World& w) {
     w.energy.peak_scale_j = 0.0;
 }
 
+namespace {
+
+// The first body whose state is not finite, or b.size() if none.
+std::size_t first_non_finite_body(const Bodies& b) {
+    auto finite = [&](std::size_t i) {
+        return std::isfinite(b.position_m[i].x) && std::isfinite(b.position_m[i].y) && std::isfinite(b.rotation_rad[i]) &&
+               std::isfinite(b.velocity_m_s[i].x) && std::isfinite(b.velocity_m_s[i].y);
+    };
+    const double bad = deterministic_sum(static_cast<std::ptrdiff_t>(b.size()),
+                                         [&](std::ptrdiff_t i) { return finite(static_cast<std::size_t>(i)) ? 0.0 : 1.0; });
+    if (bad == 0.0) return b.size();
+    std::size_t i = 0;
+    while (finite(i)) ++i;
+    return i;
+}
+
+}  // namespace
+
 void check_stability(const World& w) {
     const Bodies& b = w.bodies;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        if (!std::isfinite(b.position_m[i].x) || !std::isfinite(b.position_m[i].y) || !std::isfinite(b.rotation_rad[i]) ||
-            !std::isfinite(b.velocity_m_s[i].x) || !std::isfinite(b.velocity_m_s[i].y))
-            throw SimulationError(fmt::format("unstable: the state of body '{}' is not finite at t = {:.6g} s (step {}); "
-                                              "reduce dt (now {:g} s, stable limit {:.4g} s)",
-                                              b.name[i], w.time_s, w.step_index, w.dt_s, w.critical_dt_s));
-    }
+    if (const std::size_t i = first_non_finite_body(b); i < b.size())
+        throw SimulationError(fmt::format("unstable: the state of body '{}' is not finite at t = {:.6g} s (step {}); "
+                                          "reduce dt (now {:g} s, stable limit {:.4g} s)",
+                                          b.name[i], w.time_s, w.step_index, w.dt_s, w.critical_dt_s));
     const double error = w.energy.balance_error();
     if (w.step_index > 100 && w.energy.scale_j() > 1e-9 && error > w.settings.max_energy_error) {
         std::size_t fastest = 0;
@@ -145,20 +170,51 @@ void check_stability(const World& w) {
     }
 }
 
+namespace {
+
+// Adds the time since the last lap to one phase of w.timings; reads no clock when disabled.
+class PhaseClock {
+public:
+    explicit PhaseClock(StepTimings& t) : timings_(t) {
+        if (timings_.enabled) last_ = std::chrono::steady_clock::now();
+    }
+    void lap(double StepTimings::*phase) {
+        if (!timings_.enabled) return;
+        const auto now = std::chrono::steady_clock::now();
+        timings_.*phase += std::chrono::duration<double>(now - last_).count();
+        last_ = now;
+    }
+
+private:
+    StepTimings& timings_;
+    std::chrono::steady_clock::time_point last_;
+};
+
+}  // namespace
+
 void step_begin(World& w) {
+    PhaseClock clock(w.timings);
     update_body_geometry(w);
+    clock.lap(&StepTimings::geometry_s);
     if (broad_phase_is_stale(w)) rebuild_candidate_pairs(w);
+    clock.lap(&StepTimings::broad_phase_s);
     update_contact_geometry(w);
+    clock.lap(&StepTimings::narrow_phase_s);
     compute_forces(w);
+    clock.lap(&StepTimings::forces_s);
     update_velocities(w);
+    clock.lap(&StepTimings::integration_s);
     update_energy(w);
     check_stability(w);
+    clock.lap(&StepTimings::energy_s);
 }
 
 void step_end(World& w) {
+    PhaseClock clock(w.timings);
     w.energy.table_work_j += update_positions(w);
     w.time_s += w.dt_s;
     ++w.step_index;
+    clock.lap(&StepTimings::integration_s);
 }
 
 }  // namespace blockdem

@@ -8,6 +8,7 @@
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
 #include "geometry/polygon.hpp"
+#include "world/settling.hpp"
 #include "world/step.hpp"
 
 namespace blockdem {
@@ -54,6 +55,10 @@ void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
         radius = std::max(radius, length(v - props.centroid_m));
     }
     b.bounding_radius_m.push_back(radius);
+    const std::size_t first = b.local_vertices_m.size() - def.vertices_m.size();
+    for (std::size_t k = 0; k < def.vertices_m.size(); ++k)
+        b.local_normals.push_back(
+            edge_normal(b.local_vertices_m[first + k], b.local_vertices_m[first + (k + 1) % def.vertices_m.size()]));
     b.position_m.push_back(props.centroid_m);
     b.initial_position_m.push_back(props.centroid_m);
     b.rotation_rad.push_back(0.0);
@@ -81,6 +86,36 @@ void check_no_initial_overlap(World& w) {
 
 }  // namespace
 
+namespace {
+
+template <class T>
+std::size_t bytes_of(const std::vector<T>& v) {
+    return v.capacity() * sizeof(T);
+}
+
+}  // namespace
+
+std::size_t memory_bytes(const World& w) {
+    const Bodies& b = w.bodies;
+    std::size_t total = sizeof(World) + bytes_of(b.name) + bytes_of(b.kind) + bytes_of(b.is_static) + bytes_of(b.record) +
+                        bytes_of(b.material) + bytes_of(b.mass_kg) + bytes_of(b.inv_mass_1_kg) + bytes_of(b.inertia_kg_m2) +
+                        bytes_of(b.inv_inertia_1_kg_m2) + bytes_of(b.bounding_radius_m) + bytes_of(b.vertex_begin) +
+                        bytes_of(b.vertex_count) + bytes_of(b.local_vertices_m) + bytes_of(b.world_vertices_m) + bytes_of(b.local_normals) +
+                        bytes_of(b.world_normals) + bytes_of(b.position_m) + bytes_of(b.rotation_rad) +
+                        bytes_of(b.velocity_m_s) + bytes_of(b.angular_velocity_rad_s) + bytes_of(b.acceleration_m_s2) +
+                        bytes_of(b.angular_acceleration_rad_s2) + bytes_of(b.velocity_at_t_m_s) +
+                        bytes_of(b.angular_velocity_at_t_rad_s) + bytes_of(b.force_n) + bytes_of(b.torque_n_m) +
+                        bytes_of(b.initial_position_m) + bytes_of(b.position_at_rebuild_m) +
+                        bytes_of(b.rotation_at_rebuild_rad);
+    for (const std::string& name : b.name)
+        if (name.capacity() > 15) total += name.capacity() + 1;  // beyond the small-string buffer
+    total += bytes_of(w.boxes) + bytes_of(w.candidate_pairs) + bytes_of(w.contacts) + bytes_of(w.contacts_scratch) +
+             bytes_of(w.pair_forces) + bytes_of(w.body_pair_start) + bytes_of(w.body_pair_entries) +
+             bytes_of(w.contacts_fill) + bytes_of(w.driven_bodies);
+    total += w.broad_phase.memory_bytes();
+    return total;
+}
+
 World build_world(const Model& model) {
     World w;
     w.settings = model.settings;
@@ -94,6 +129,8 @@ World build_world(const Model& model) {
     w.bodies.angular_acceleration_rad_s2.assign(n, 0.0);
     w.bodies.force_n.assign(n, {});
     w.bodies.torque_n_m.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+        if (w.bodies.kind[i] == BodyKind::driven) w.driven_bodies.push_back(static_cast<std::uint32_t>(i));
 
     const CriticalTimeStep limit = critical_time_step(w.bodies, w.contact);
     w.critical_dt_s = limit.dt_s;
@@ -115,6 +152,14 @@ World build_world(const Model& model) {
     place_driven_bodies(w, 0.0);
     check_no_initial_overlap(w);
     initialise_energy(w);
+    if (model.settling) {
+        const SettlingReport settled = settle(w, *model.settling);
+        if (!settled.settled)
+            throw ModelError(fmt::format("the assembly did not settle within {:g} s (kinetic / potential energy {:.3g}, "
+                                         "asked for < {:.3g}); raise settling.max_time or settling.kinetic_ratio",
+                                         model.settling->max_time_s, settled.kinetic_ratio, model.settling->kinetic_ratio));
+        w.settling_time_s = settled.time_s;
+    }
     return w;
 }
 

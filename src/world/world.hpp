@@ -30,6 +30,7 @@ struct Bodies {
     std::vector<std::uint32_t> vertex_count;
     std::vector<Vec2> local_vertices_m;         ///< [m] corners relative to the centroid at rotation 0
     std::vector<Vec2> world_vertices_m;         ///< [m] corners now
+    std::vector<Vec2> local_normals;            ///< outward unit edge normals at rotation 0
     std::vector<Vec2> world_normals;            ///< outward unit edge normals now
 
     std::vector<Vec2> position_m;               ///< [m] centroid at t
@@ -50,6 +51,29 @@ struct Bodies {
     std::size_t size() const { return name.size(); }
 };
 
+/// One pair's contact forces this step: what each of its points adds to the two bodies.
+struct PairForces {
+    Vec2 on_b_n[2];              ///< [N] force on b from point k (a gets minus it)
+    double torque_on_a_n_m[2];   ///< [N m] torque on a from point k
+    double torque_on_b_n_m[2];   ///< [N m] torque on b from point k
+    double normal_dashpot_j = 0.0;  ///< [J] dissipated this step by the pair's points
+    double shear_dashpot_j = 0.0;   ///< [J]
+    double friction_j = 0.0;        ///< [J]
+    std::uint32_t count = 0;        ///< points this step (a copy, so the sum per body stays in this array)
+};
+
+/// Wall-clock seconds spent in each phase of the step, summed while enabled (benchmarks and
+/// `blockdem bench`; off by default, when the step reads no clock).
+struct StepTimings {
+    bool enabled = false;
+    double geometry_s = 0.0;      ///< [s] body corners and normals
+    double broad_phase_s = 0.0;   ///< [s] staleness check and rebuilds
+    double narrow_phase_s = 0.0;  ///< [s] contact points and history matching
+    double forces_s = 0.0;        ///< [s] gravity and the contact law
+    double integration_s = 0.0;   ///< [s] velocities and positions
+    double energy_s = 0.0;        ///< [s] energy ledger and stability check
+};
+
 struct World {
     SimulationSettings settings;
     MaterialPairs contact;
@@ -60,6 +84,7 @@ struct World {
     double critical_dt_s = 0.0;           ///< [s] the stable limit it was checked against
     double time_s = 0.0;                  ///< [s] time of the current state
     std::int64_t step_index = 0;
+    double settling_time_s = 0.0;         ///< [s] simulated before t = 0 by the settling stage (0: none)
 
     GridBroadPhase broad_phase;
     double broad_phase_margin_m = 0.0;    ///< [m] boxes are enlarged by this; rebuild after margin/2 motion
@@ -67,12 +92,24 @@ struct World {
     std::vector<BodyPair> candidate_pairs;
     std::vector<PairContact> contacts;    ///< sorted by (a, b)
     std::vector<PairContact> contacts_scratch;
+    /// The contact law's result per pair, written in parallel, summed per body in table order.
+    std::vector<PairForces> pair_forces;
+    /// For each body, the pairs it belongs to in table order (entry = 2 pair + (body is b)):
+    /// entries body_pair_start[i] to body_pair_start[i + 1]. Rebuilt with the candidate pairs.
+    std::vector<std::uint32_t> body_pair_start;
+    std::vector<std::uint32_t> body_pair_entries;
+    std::vector<std::uint32_t> contacts_fill;   ///< scratch of the indexing
+    std::vector<std::uint32_t> driven_bodies;   ///< ids of driven bodies (the table work sums over them)
     std::int64_t broad_phase_rebuilds = 0;
 
     EnergyLedger energy;
+    StepTimings timings;
 
     std::uint32_t body_id(const std::string& name) const;  ///< throws std::out_of_range
 };
+
+/// Bytes held by the world's arrays (capacities, not sizes; names included), for benchmarks.
+std::size_t memory_bytes(const World& w);
 
 /// Builds a world from a model: mass properties, material ids, the time step and its check.
 /// Throws ModelError naming the body when a body is invalid, bodies overlap at the start, or

@@ -1,0 +1,181 @@
+// `blockdem bench [--scene wall|slope|rockfill] [--sizes 100,1000] [--threads 1,2] ...`
+// Throughput of the time step on the benchmark scenes (docs/performance.md): block-steps/s,
+// contact-steps/s, time per step split by phase, memory per block, speedup with threads. The
+// stepping loop alone is timed (scene building and 5 warm-up steps are not), and each case is
+// repeated and its fastest run kept: on a shared machine the minimum is the least disturbed.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "apps/blockdem/commands.hpp"
+#include "scenes/assemblies.hpp"
+#include "world/step.hpp"
+
+namespace blockdem::cli {
+namespace {
+
+struct BenchOptions {
+    std::vector<std::string> scenes{"wall"};
+    std::vector<int> sizes{100, 1000, 10000};
+    std::vector<int> threads{1, 2};
+    double work = 3e6;          ///< block-steps per timed run (steps = work / N, 3 to 5000)
+    int repeats = 3;
+    double idle_wait_s = 0.0;   ///< wait up to this long for the CPUs to be 90% idle before each run
+    std::string markdown;
+};
+
+struct BenchResult {
+    std::string scene;
+    int threads = 1;
+    std::size_t bodies = 0;
+    std::int64_t steps = 0;
+    double wall_s = INFINITY;   ///< [s] fastest run
+    StepTimings phases;         ///< of the fastest run
+    std::size_t pairs = 0;      ///< touching pairs at the end
+    std::size_t points = 0;     ///< contact points at the end
+    std::size_t world_bytes = 0;
+    double busy = 0.0;          ///< CPU busy fraction before the fastest run
+};
+
+// Fraction of the CPUs busy over half a second (/proc/stat), -1 if unreadable.
+double cpu_busy_fraction() {
+    auto read = [] {
+        std::ifstream in("/proc/stat");
+        std::string cpu;
+        double v[8] = {};
+        in >> cpu;
+        for (double& x : v) in >> x;
+        double total = 0.0;
+        for (double x : v) total += x;
+        return std::pair{total, v[3] + v[4]};
+    };
+    const auto [t0, i0] = read();
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const auto [t1, i1] = read();
+    return t1 > t0 ? 1.0 - (i1 - i0) / (t1 - t0) : -1.0;
+}
+
+double wait_for_idle(double max_wait_s) {
+    const auto start = std::chrono::steady_clock::now();
+    double busy = cpu_busy_fraction();
+    while (busy > 0.1 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < max_wait_s)
+        busy = cpu_busy_fraction();
+    return busy;
+}
+
+Model make_scene(const std::string& scene, int n) {
+    if (scene == "wall") return scenes::s3_wall_scene(n, 1e9);
+    if (scene == "slope") return scenes::rock_slope_scene(n, 1e9);
+    if (scene == "rockfill") return scenes::rockfill_scene(n, 1e9);
+    throw std::invalid_argument("unknown scene '" + scene + "' (wall, slope, rockfill)");
+}
+
+void set_threads(int n) {
+#ifdef _OPENMP
+    omp_set_num_threads(n);
+#else
+    if (n != 1) throw std::invalid_argument("this build has no OpenMP: only --threads 1");
+#endif
+}
+
+BenchResult run_case(const std::string& scene, int n, int threads, const BenchOptions& o) {
+    BenchResult r;
+    r.scene = scene;
+    r.threads = threads;
+    set_threads(threads);
+    World w = build_world(make_scene(scene, n));
+    r.bodies = w.bodies.size() - 1;  // the table is not a block
+    r.steps = std::clamp<std::int64_t>(std::llround(o.work / static_cast<double>(r.bodies)), 3, 5000);
+    for (int i = 0; i < 5; ++i) step(w);
+    for (int rep = 0; rep < o.repeats; ++rep) {
+        const double busy = o.idle_wait_s > 0.0 ? wait_for_idle(o.idle_wait_s) : 0.0;
+        w.timings = StepTimings{};
+        w.timings.enabled = true;
+        const auto start = std::chrono::steady_clock::now();
+        for (std::int64_t s = 0; s < r.steps; ++s) step(w);
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (wall < r.wall_s) {
+            r.wall_s = wall;
+            r.phases = w.timings;
+            r.busy = busy;
+        }
+    }
+    for (const PairContact& pair : w.contacts) {
+        r.pairs += pair.count > 0 ? 1 : 0;
+        r.points += pair.count;
+    }
+    r.world_bytes = memory_bytes(w);
+    return r;
+}
+
+std::string phase_split(const StepTimings& t) {
+    const double sum = t.geometry_s + t.broad_phase_s + t.narrow_phase_s + t.forces_s + t.integration_s + t.energy_s;
+    auto pct = [&](double x) { return 100.0 * x / std::max(sum, 1e-300); };
+    return fmt::format("{:.0f} / {:.0f} / {:.0f} / {:.0f} / {:.0f} / {:.0f}", pct(t.geometry_s), pct(t.broad_phase_s),
+                       pct(t.narrow_phase_s), pct(t.forces_s), pct(t.integration_s), pct(t.energy_s));
+}
+
+std::string row(const BenchResult& r, double one_thread_wall_s) {
+    const double per_step = r.wall_s / static_cast<double>(r.steps);
+    const double speedup = one_thread_wall_s > 0.0 ? one_thread_wall_s / per_step : NAN;
+    return fmt::format("| {} | {} | {} | {} | {:.4g} | {:.3g} | {:.3g} | {} | {} | {:.3g} | {} | {:.0f} | {:.2f} |", r.scene,
+                       r.bodies, r.threads, r.steps, 1e3 * per_step, static_cast<double>(r.bodies) / per_step,
+                       static_cast<double>(r.points) / per_step, r.pairs, r.points,
+                       std::isnan(speedup) ? 1.0 : speedup, phase_split(r.phases),
+                       static_cast<double>(r.world_bytes) / static_cast<double>(r.bodies), r.busy);
+}
+
+void run_bench(const BenchOptions& o) {
+    std::ostringstream table;
+    table << "| scene | blocks | threads | steps | ms/step (min) | block-steps/s | contact-steps/s | touching pairs | "
+             "contact points | speedup vs 1 thread | geometry / broad / narrow / forces / integration / energy [%] | "
+             "world bytes/block | CPU busy before |\n"
+          << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    fmt::print("{}", table.str());
+    for (const std::string& scene : o.scenes)
+        for (int n : o.sizes) {
+            double one_thread = 0.0;
+            for (int threads : o.threads) {
+                const BenchResult r = run_case(scene, n, threads, o);
+                const std::string line = row(r, threads == 1 ? 0.0 : one_thread);
+                if (threads == 1) one_thread = r.wall_s / static_cast<double>(r.steps);
+                fmt::print("{}\n", line);
+                std::fflush(stdout);
+                table << line << '\n';
+            }
+        }
+    if (!o.markdown.empty()) std::ofstream(o.markdown) << table.str();
+}
+
+}  // namespace
+
+void add_bench_command(CLI::App& app) {
+    auto* cmd = app.add_subcommand("bench", "Time the step on the benchmark scenes (docs/performance.md)");
+    auto o = std::make_shared<BenchOptions>();
+    cmd->add_option("--scene", o->scenes, "wall (scene S3), slope (jointed rock), rockfill (Voronoi); repeatable")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--sizes", o->sizes, "numbers of blocks, e.g. 100,1000,10000")->delimiter(',')->capture_default_str();
+    cmd->add_option("--threads", o->threads, "OpenMP thread counts, e.g. 1,2 (1 first gives the speedup)")
+        ->delimiter(',')
+        ->capture_default_str();
+    cmd->add_option("--work", o->work, "block-steps per timed run (steps = work / blocks, 3 to 5000)")->capture_default_str();
+    cmd->add_option("--repeats", o->repeats, "timed runs per case; the fastest is reported")->capture_default_str();
+    cmd->add_option("--idle-wait", o->idle_wait_s, "wait up to this many seconds for idle CPUs before each run")
+        ->capture_default_str();
+    cmd->add_option("--markdown", o->markdown, "also write the table to this file");
+    cmd->callback([o] { run_bench(*o); });
+}
+
+}  // namespace blockdem::cli

@@ -1,0 +1,130 @@
+#pragma once
+// Block-assembly generators (issue 5), shared by the scenario keys ([[assemblies]],
+// io/assembly_keys.hpp), the tests and the benchmarks. Each returns plain polygons or BodyDefs;
+// docs/assemblies.md describes every parameter with a picture in words.
+//
+//   block_column       drums of a column, each (width, height), stacked and centred;
+//   masonry_wall       running bond, flat or stepped ends, openings (window, door) with lintels;
+//   s3_wall_scene      the peers' scene S3 (../shared/peers/common/scen.h): N bricks 0.2 x 0.1 m;
+//   jointed_rock_mass  a region (convex or not) cut by joint sets (dip, spacing, random spread);
+//   voronoi_packing    a region cut into the Voronoi cells of jittered-grid seeds (rockfill).
+// Blocks are numbered in the order made, and each generator is deterministic for a given seed
+// (its own 64-bit generator, not std::*_distribution, whose output differs between libraries).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "world/model.hpp"
+
+namespace blockdem::scenes {
+
+using Polygon = std::vector<Vec2>;  ///< counter-clockwise corners [m]
+
+/// How generated blocks become bodies: names are prefix + number (from 0).
+struct BlockStyle {
+    std::string name_prefix = "block";
+    std::string material = "default";
+    double density_kg_m3 = 2500.0;  ///< [kg/m^3]
+    double thickness_m = 1.0;       ///< [m] out of plane
+    bool record = false;            ///< write every block to history.csv (off: large assemblies)
+};
+
+/// Dynamic bodies from polygons, named prefix0, prefix1, ...
+std::vector<BodyDef> as_bodies(const std::vector<Polygon>& polygons, const BlockStyle& style);
+
+/// Makes every body whose centroid lies inside zone (a polygon, convex or not) of the given kind:
+/// the fixed or driven boundary of a rock mass (its foundation and its back), as UDEC fixes
+/// the blocks along a model's boundary. Returns how many bodies changed.
+std::size_t set_kind_inside(std::vector<BodyDef>& bodies, const Polygon& zone, BodyKind kind);
+
+/// A column of blocks stacked from base_center_m upwards; sizes_m[i] = (width, height) [m].
+std::vector<Polygon> block_column(const std::vector<Vec2>& sizes_m, Vec2 base_center_m);
+
+/// A rectangular opening in a wall [m], relative to the wall's lower-left corner. Its bottom
+/// and top are rounded to whole courses. lintel_bearing_m > 0 puts one lintel block over it,
+/// reaching that far onto the masonry on each side.
+struct WallOpening {
+    double x_m = 0.0;
+    double y_m = 0.0;
+    double width_m = 0.0;
+    double height_m = 0.0;
+    double lintel_bearing_m = 0.0;
+};
+
+struct WallSpec {
+    Vec2 origin_m;                  ///< [m] lower-left corner of the wall
+    double length_m = 2.0;          ///< [m]
+    int courses = 10;
+    double brick_length_m = 0.2;    ///< [m]
+    double brick_height_m = 0.1;    ///< [m]
+    bool stepped_ends = false;      ///< odd courses half a brick shorter at each end (no half bricks)
+    double min_piece_fraction = 0.25;  ///< remainders shorter than this x brick length join their neighbour
+    std::vector<WallOpening> openings;
+};
+
+/// A running-bond wall: course r has joints at k L (r even) or (k + 1/2) L (r odd).
+std::vector<Polygon> masonry_wall(const WallSpec& spec);
+
+/// Scene S3 of the peers (signals.md): N bricks 0.2 x 0.1 m in C = round(sqrt(2N)) columns,
+/// odd rows C - 1 bricks shifted by 0.1 m, 40 kg each, on a driven table shaken at
+/// 0.3 g sin(4 pi t); mu = 0.6, kn = ks = 6e7 N/m (a full-face contact period of about 50 steps
+/// at dt = 1e-4 s, as in the LAMMPS run), e = 0.5 (rebound meaning).
+Model s3_wall_scene(int bricks, double duration_s = 1.0, double dt_s = 1e-4);
+
+/// One set of parallel joints. The dip is the angle of the joint trace from +x, counter-
+/// clockwise [deg]; spacing is measured normal to the joints; each gap is spacing x (1 + spacing
+/// spread x u) and each joint's dip is dip + dip spread x u, u uniform in [-1, 1].
+struct JointSet {
+    double dip_deg = 0.0;
+    double spacing_m = 1.0;
+    double spacing_spread = 0.0;    ///< [-] in [0, 1)
+    double dip_spread_deg = 0.0;    ///< [deg]
+    Vec2 origin_m;                  ///< [m] a point on one joint of the set
+};
+
+struct RockMassSpec {
+    Polygon region_m;                ///< [m] outline, convex or not, either orientation
+    std::vector<JointSet> joint_sets;
+    std::uint64_t seed = 1;
+    double min_block_area_m2 = 0.0;  ///< [m^2] smaller blocks are dropped (0: keep all)
+};
+
+struct GeneratedBlocks {
+    std::vector<Polygon> polygons;
+    std::size_t dropped = 0;         ///< blocks below the minimum area (or slivers at round-off)
+    double dropped_area_m2 = 0.0;    ///< [m^2]
+};
+
+/// The region cut into convex blocks by every joint of every set (full persistence).
+GeneratedBlocks jointed_rock_mass(const RockMassSpec& spec);
+
+/// A slope cross-section with its toe at the origin: a base layer of base_height_m under the
+/// whole section, toe_length_m of flat ground in front of the toe, a face rising at face_deg to
+/// height slope_height_m above the base, and crest_length_m of flat top behind the crest.
+/// Non-convex whenever toe_length_m > 0.
+Polygon slope_region(double base_height_m, double slope_height_m, double face_deg, double toe_length_m,
+                     double crest_length_m);
+
+struct VoronoiSpec {
+    Polygon region_m;                ///< [m] outline, convex or not
+    double cell_size_m = 0.1;        ///< [m] seeds on a square grid of this pitch
+    double jitter = 1.0;             ///< [-] 0: a regular grid (squares), 1: anywhere in its grid cell
+    std::uint64_t seed = 1;
+    double shrink = 0.0;             ///< [-] scale each cell about its centroid by 1 - shrink (gaps)
+};
+
+/// The region cut into the Voronoi cells of jittered-grid seeds (exact cells, clipped to the region).
+GeneratedBlocks voronoi_packing(const VoronoiSpec& spec);
+
+}  // namespace blockdem::scenes
+
+namespace blockdem::scenes {
+
+/// A jointed rock slope of about `blocks` blocks (two joint sets: 35 deg and 115 deg, 20%
+/// spacing spread, seeded) on a driven table shaken like S3; rock 2600 kg/m^3, mu = 0.6.
+Model rock_slope_scene(int blocks, double duration_s = 1.0);
+
+/// A dense Voronoi rockfill of about `blocks` blocks in a 2:1 box on a driven table shaken like S3.
+Model rockfill_scene(int blocks, double duration_s = 1.0);
+
+}  // namespace blockdem::scenes

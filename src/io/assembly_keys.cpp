@@ -1,0 +1,145 @@
+#include "io/assembly_keys.hpp"
+
+#include <set>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "scenes/assemblies.hpp"
+
+namespace blockdem {
+namespace {
+
+scenes::BlockStyle read_style(TableReader& t) {
+    scenes::BlockStyle s;
+    s.name_prefix = t.string("name");
+    s.material = t.optional_string("material").value_or("default");
+    s.density_kg_m3 = t.positive("density");
+    s.thickness_m = t.optional_positive("thickness").value_or(1.0);
+    s.record = t.boolean_or("record", false);
+    return s;
+}
+
+std::vector<scenes::Polygon> read_column(TableReader& t) {
+    const Vec2 base = t.optional_vec2("base_center").value_or(Vec2{});
+    std::vector<Vec2> sizes;
+    if (t.has("sizes")) {
+        sizes = t.vec2_list("sizes");
+        for (const Vec2& s : sizes)
+            if (!(s.x > 0.0 && s.y > 0.0)) t.fail("sizes", "every [width, height] must be > 0");
+    } else {
+        const double count = t.positive("count");
+        sizes.assign(static_cast<std::size_t>(count), Vec2{t.positive("width"), t.positive("height")});
+    }
+    return scenes::block_column(sizes, base);
+}
+
+std::vector<scenes::Polygon> read_wall(TableReader& t) {
+    scenes::WallSpec w;
+    w.origin_m = t.optional_vec2("origin").value_or(Vec2{});
+    w.length_m = t.positive("length");
+    w.courses = static_cast<int>(t.positive("courses"));
+    w.brick_length_m = t.optional_positive("brick_length").value_or(w.brick_length_m);
+    w.brick_height_m = t.optional_positive("brick_height").value_or(w.brick_height_m);
+    w.stepped_ends = t.boolean_or("stepped_ends", false);
+    w.min_piece_fraction = t.number_or("min_piece_fraction", w.min_piece_fraction);
+    for (TableReader o : t.table_array("openings")) {
+        scenes::WallOpening opening{o.number("x"), o.number("y"), o.positive("width"), o.positive("height"),
+                                    o.number_or("lintel_bearing", 0.0)};
+        if (opening.x_m < 0.0 || opening.x_m + opening.width_m > w.length_m)
+            o.fail("x", fmt::format("the opening must lie within the wall's length {} m", w.length_m));
+        o.reject_unknown_keys();
+        w.openings.push_back(opening);
+    }
+    return scenes::masonry_wall(w);
+}
+
+// region = [[x, y], ...] or a [slope] table (scenes::slope_region).
+std::vector<Vec2> read_region(TableReader& t) {
+    if (auto slope = t.optional_table("slope")) {
+        std::vector<Vec2> region = scenes::slope_region(slope->number_or("base_height", 0.0), slope->positive("height"),
+                                                        slope->positive("face_angle_deg"), slope->number_or("toe_length", 0.0),
+                                                        slope->number_or("crest_length", 0.0));
+        slope->reject_unknown_keys();
+        if (t.has("region")) t.fail("region", "give either region or [slope], not both");
+        return region;
+    }
+    return t.vec2_list("region");
+}
+
+scenes::GeneratedBlocks read_rock_mass(TableReader& t) {
+    scenes::RockMassSpec spec;
+    spec.region_m = read_region(t);
+    spec.seed = static_cast<std::uint64_t>(t.number_or("seed", 1.0));
+    spec.min_block_area_m2 = t.number_or("min_block_area", 0.0);
+    for (TableReader j : t.table_array("joint_sets")) {
+        scenes::JointSet set;
+        set.dip_deg = j.number("dip_deg");
+        set.spacing_m = j.positive("spacing");
+        set.spacing_spread = j.number_or("spacing_spread", 0.0);
+        set.dip_spread_deg = j.number_or("dip_spread_deg", 0.0);
+        set.origin_m = j.optional_vec2("origin").value_or(Vec2{});
+        j.reject_unknown_keys();
+        spec.joint_sets.push_back(set);
+    }
+    if (spec.joint_sets.empty()) t.fail("joint_sets", "a rock mass needs at least one [[assemblies.joint_sets]]");
+    return scenes::jointed_rock_mass(spec);
+}
+
+scenes::GeneratedBlocks read_voronoi(TableReader& t) {
+    scenes::VoronoiSpec spec;
+    spec.region_m = read_region(t);
+    spec.cell_size_m = t.positive("cell_size");
+    spec.jitter = t.number_or("jitter", spec.jitter);
+    spec.seed = static_cast<std::uint64_t>(t.number_or("seed", 1.0));
+    spec.shrink = t.number_or("shrink", 0.0);
+    return scenes::voronoi_packing(spec);
+}
+
+std::vector<BodyDef> read_assembly(TableReader t) {
+    const std::string type = t.choice("type", {"column", "wall", "rock_mass", "voronoi"}, "");
+    const scenes::BlockStyle style = read_style(t);
+    std::vector<scenes::Polygon> polygons;
+    try {
+        if (type == "column") polygons = read_column(t);
+        if (type == "wall") polygons = read_wall(t);
+        if (type == "rock_mass") polygons = read_rock_mass(t).polygons;
+        if (type == "voronoi") polygons = read_voronoi(t).polygons;
+    } catch (const std::invalid_argument& e) {
+        t.fail("", e.what());  // a generator's own check (region outline, spread range, ...)
+    }
+    std::vector<BodyDef> bodies = scenes::as_bodies(polygons, style);
+    // Boundary blocks: those whose centroid lies in a zone move with the table (or stay fixed).
+    for (const char* key : {"driven_zone", "fixed_zone"})
+        if (t.has(key) && scenes::set_kind_inside(bodies, t.vec2_list(key), key[0] == 'd' ? BodyKind::driven : BodyKind::fixed) == 0)
+            t.fail(key, "no block has its centroid in this zone");
+    t.reject_unknown_keys();
+    if (polygons.empty()) t.fail("", "the assembly has no blocks (check its size and region)");
+    return bodies;
+}
+
+SettlingSettings read_settling(TableReader t) {
+    SettlingSettings s;
+    s.kinetic_ratio = t.optional_positive("kinetic_ratio").value_or(s.kinetic_ratio);
+    s.window_s = t.optional_positive("window").value_or(s.window_s);
+    s.max_time_s = t.optional_positive("max_time").value_or(s.max_time_s);
+    t.reject_unknown_keys();
+    return s;
+}
+
+}  // namespace
+
+void read_assemblies(TableReader& top, Model& model) {
+    std::set<std::string> names;
+    for (const BodyDef& b : model.bodies) names.insert(b.name);
+    for (const TableReader& t : top.table_array("assemblies")) {
+        for (BodyDef& b : read_assembly(t)) {
+            if (!names.insert(b.name).second)
+                t.fail("name", fmt::format("the generated block '{}' has the name of another body; choose another name", b.name));
+            model.bodies.push_back(std::move(b));
+        }
+    }
+    if (auto settling = top.optional_table("settling")) model.settling = read_settling(*settling);
+}
+
+}  // namespace blockdem

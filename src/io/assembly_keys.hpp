@@ -1,0 +1,14 @@
+#pragma once
+// Scenario keys for generated assemblies (docs/assemblies.md): each [[assemblies]] entry runs
+// one generator of scenes/assemblies.hpp and appends its blocks to the model's bodies; the
+// optional [settling] table asks for the settling stage (world/settling.hpp) before t = 0.
+#include "io/toml_reader.hpp"
+#include "world/model.hpp"
+
+namespace blockdem {
+
+/// Reads [[assemblies]] and [settling] from the scenario's top table into model (bodies are
+/// appended after the [[bodies]] already read). Throws InputError naming the key.
+void read_assemblies(TableReader& top, Model& model);
+
+}  // namespace blockdem
