@@ -120,8 +120,9 @@ GeneratedBlocks voronoi_packing(const VoronoiSpec& spec);
 
 namespace blockdem::scenes {
 
-/// A jointed rock slope of about `blocks` blocks (two joint sets: 35 deg and 115 deg, 20%
-/// spacing spread, seeded) on a driven table shaken like S3; rock 2600 kg/m^3, mu = 0.6.
+/// A jointed rock slope of about `blocks` blocks (two joint sets: -20 deg and 80 deg, 20%
+/// spacing spread, seeded) on a driven table shaken like S3, its foundation and back blocks
+/// driven with the table; rock 2600 kg/m^3, mu = 0.6.
 Model rock_slope_scene(int blocks, double duration_s = 1.0);
 
 /// A dense Voronoi rockfill of about `blocks` blocks in a 2:1 box on a driven table shaken like S3.

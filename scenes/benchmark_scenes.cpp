@@ -48,13 +48,13 @@ Model rock_slope_scene(int blocks, double duration_s) {
     const double height = 10.0;
     const Polygon region = slope_region(0.3 * height, height, 60.0, 0.5 * height, 0.6 * height);
     const double area = std::abs(signed_area(region));
-    const double spacing = std::sqrt(area / std::max(blocks, 1) * std::sin(80.0 * 3.14159265358979 / 180.0));
+    const double spacing = std::sqrt(area / std::max(blocks, 1) * std::sin(100.0 * 3.14159265358979 / 180.0));
     RockMassSpec spec;
     spec.region_m = region;
-    spec.joint_sets = {JointSet{35.0, spacing, 0.2, 3.0, {0.0, 0.0}}, JointSet{115.0, spacing, 0.2, 3.0, {0.1, 0.0}}};
-    // Bedding at 35 deg dips out of the face: the face blocks are free to slide when shaken.
+    // Bedding dipping 20 deg into the slope and steep cross joints, as examples/assemblies/rock_slope.toml.
+    spec.joint_sets = {JointSet{-20.0, spacing, 0.2, 3.0, {0.0, 0.0}}, JointSet{80.0, spacing, 0.2, 3.0, {0.1, 0.0}}};
     spec.seed = 2024;
-    spec.min_block_area_m2 = 0.02 * spacing * spacing;  // slivers would set a tiny time step
+    spec.min_block_area_m2 = 0.1 * spacing * spacing;  // slivers would set a tiny time step
     Model m = shaken_base(region, duration_s);
     BlockStyle style;
     style.name_prefix = "rock";

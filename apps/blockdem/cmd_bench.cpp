@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -41,6 +42,7 @@ struct BenchResult {
     std::size_t bodies = 0;
     std::int64_t steps = 0;
     double wall_s = INFINITY;   ///< [s] fastest run
+    double cpu_s = 0.0;         ///< [s] CPU time of the fastest run, all threads (below wall_s x threads: contended)
     StepTimings phases;         ///< of the fastest run
     std::size_t pairs = 0;      ///< touching pairs at the end
     std::size_t points = 0;     ///< contact points at the end
@@ -102,11 +104,13 @@ BenchResult run_case(const std::string& scene, int n, int threads, const BenchOp
         const double busy = o.idle_wait_s > 0.0 ? wait_for_idle(o.idle_wait_s) : 0.0;
         w.timings = StepTimings{};
         w.timings.enabled = true;
+        const std::clock_t cpu_start = std::clock();
         const auto start = std::chrono::steady_clock::now();
         for (std::int64_t s = 0; s < r.steps; ++s) step(w);
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (wall < r.wall_s) {
             r.wall_s = wall;
+            r.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
             r.phases = w.timings;
             r.busy = busy;
         }
@@ -129,8 +133,8 @@ std::string phase_split(const StepTimings& t) {
 std::string row(const BenchResult& r, double one_thread_wall_s) {
     const double per_step = r.wall_s / static_cast<double>(r.steps);
     const double speedup = one_thread_wall_s > 0.0 ? one_thread_wall_s / per_step : NAN;
-    return fmt::format("| {} | {} | {} | {} | {:.4g} | {:.3g} | {:.3g} | {} | {} | {:.3g} | {} | {:.0f} | {:.2f} |", r.scene,
-                       r.bodies, r.threads, r.steps, 1e3 * per_step, static_cast<double>(r.bodies) / per_step,
+    return fmt::format("| {} | {} | {} | {} | {:.4g} | {:.4g} | {:.3g} | {:.3g} | {} | {} | {:.3g} | {} | {:.0f} | {:.2f} |",
+                       r.scene, r.bodies, r.threads, r.steps, 1e3 * per_step, 1e3 * r.cpu_s / static_cast<double>(r.steps), static_cast<double>(r.bodies) / per_step,
                        static_cast<double>(r.points) / per_step, r.pairs, r.points,
                        std::isnan(speedup) ? 1.0 : speedup, phase_split(r.phases),
                        static_cast<double>(r.world_bytes) / static_cast<double>(r.bodies), r.busy);
@@ -138,10 +142,10 @@ std::string row(const BenchResult& r, double one_thread_wall_s) {
 
 void run_bench(const BenchOptions& o) {
     std::ostringstream table;
-    table << "| scene | blocks | threads | steps | ms/step (min) | block-steps/s | contact-steps/s | touching pairs | "
+    table << "| scene | blocks | threads | steps | ms/step (min) | CPU ms/step | block-steps/s | contact-steps/s | touching pairs | "
              "contact points | speedup vs 1 thread | geometry / broad / narrow / forces / integration / energy [%] | "
              "world bytes/block | CPU busy before |\n"
-          << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+          << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     fmt::print("{}", table.str());
     for (const std::string& scene : o.scenes)
         for (int n : o.sizes) {
