@@ -24,8 +24,11 @@ nlohmann::json body_summary(const World& w, const BodyResponse& r, std::size_t i
     j["rocked"] = r.rocked();
     j["overturned"] = r.overturned();
     j["overturning_time_s"] = r.overturned() ? nlohmann::json(r.last_crossing_s) : nlohmann::json(nullptr);
-    j["slid"] = r.sliding_time_s > 0.0 && r.peak_abs_relative_displacement_m > 1e-3 * b.bounding_radius_m[i];
+    j["initial_base_tilt_rad"] = r.base_tilt_rad;
+    j["slid"] = r.slid();
     j["sliding_time_s"] = r.sliding_time_s;
+    j["peak_abs_base_slip_m"] = r.peak_abs_base_slip_m;
+    j["final_base_slip_m"] = r.base_slip_m;
     j["peak_abs_relative_displacement_m"] = r.peak_abs_relative_displacement_m;
     j["final_relative_displacement_m"] = {r.relative_displacement_m.x, r.relative_displacement_m.y};
     return j;

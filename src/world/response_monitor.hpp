@@ -4,10 +4,15 @@
 // whether it slid or rocked (definitions in docs/outputs.md).
 //
 // Overturning: a body resting on its base tips about a base corner; past the critical angle
-// alpha (the angle at that corner between the vertical and the line to the centroid, atan(b/h)
-// for a b x h half-size rectangle) gravity no longer brings it back. A body has overturned when
-// it ends the run rotated beyond alpha; the overturning time is the last time it crossed alpha
-// outwards.
+// alpha (the angle at that corner between the normal to the base and the line to the centroid,
+// atan(b/h) for a b x h half-size rectangle) gravity no longer brings it back. The base is the
+// edge facing most nearly down at the start, so a body that starts tilted is judged by its
+// base's angle from level (start tilt + rotation). A body has overturned when it ends the run
+// tilted beyond alpha; the overturning time is the last time it crossed alpha outwards.
+//
+// Sliding is measured at the base corner the body is tipping about (either, when level),
+// horizontally and relative to the table: rocking moves the centroid by about h theta but
+// leaves that corner in place, so a block that rocks without sliding shows no base slip.
 #include <cstdint>
 #include <vector>
 
@@ -18,17 +23,26 @@ namespace blockdem {
 struct BodyResponse {
     double alpha_ccw_rad = 0.0;          ///< [rad] critical angle tipping counter-clockwise (towards -x)
     double alpha_cw_rad = 0.0;           ///< [rad] critical angle tipping clockwise (towards +x)
+    double base_tilt_rad = 0.0;          ///< [rad] the base's angle from level at the start
+    Vec2 base_left_offset_m;             ///< [m] base's left corner minus centroid at the start
+    Vec2 base_right_offset_m;            ///< [m] base's right corner minus centroid at the start
+    double base_length_m = 0.0;          ///< [m]
     double peak_abs_rotation_rad = 0.0;  ///< [rad]
     double time_of_peak_rotation_s = 0.0;///< [s]
     bool beyond_alpha = false;           ///< rotated past alpha now
     double last_crossing_s = -1.0;       ///< [s] last outward crossing of alpha, -1 if never
     double peak_abs_relative_displacement_m = 0.0;  ///< [m] centroid displacement relative to the table
     Vec2 relative_displacement_m;        ///< [m] now
+    double base_slip_m = 0.0;            ///< [m] horizontal slip of the base relative to the table, now
+    double peak_abs_base_slip_m = 0.0;   ///< [m]
     double sliding_time_s = 0.0;         ///< [s] time with at least one of its contact points sliding
     double rocking_threshold_rad = 0.0;  ///< [rad] rotation above which it counts as rocking (0.01 alpha)
 
     bool overturned() const { return beyond_alpha; }
     bool rocked() const { return peak_abs_rotation_rad >= rocking_threshold_rad; }
+    /// Slid: some contact point slid and the base moved on the table by more than 0.1% of its
+    /// length (well above the elastic shear deformation of the contacts).
+    bool slid() const { return sliding_time_s > 0.0 && peak_abs_base_slip_m > 1e-3 * base_length_m; }
 };
 
 class ResponseMonitor {
