@@ -6,7 +6,9 @@
 // point of stiffness k at distance r from its centroid, the stiffest mode couples translation
 // and rotation: w^2 = k (1/m + r^2/I) (the inverse of the effective mass at the corner). We
 // take, for each dynamic body, the largest stiffness and damping ratio of any material pair it
-// can meet and its bounding radius, and return the least dt over all bodies. The damping ratio
+// can meet and its bounding radius, add the compliance of the most compliant other dynamic body
+// (its possible partner: w^2 = k (1/m_a + r_a^2/I_a + 1/m_b + r_b^2/I_b)), and return the least
+// dt over all bodies. The damping ratio
 // is that of the corner mode, which is higher than h because the dashpot is sized with the
 // body's mass while the corner moves with its smaller effective mass.
 //

@@ -54,7 +54,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
     auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
     try {
         run_simulation(world, options);
-    } catch (const SimulationError& e) {
+    } catch (const std::exception& e) {
         info.status = "failed";
         info.error = e.what();
         info.wall_s = wall();

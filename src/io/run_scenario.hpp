@@ -19,9 +19,9 @@ struct RunRequest {
     std::function<void(const RunProgress&)> on_progress;
 };
 
-/// Runs the scenario. Throws InputError for bad input (nothing is run). A run that becomes
-/// unstable writes summary.json with status "failed", keeps history.csv, and rethrows the
-/// SimulationError. Returns the summary.
+/// Runs the scenario. Throws InputError for bad input (nothing is run). A run that fails once
+/// started (unstable, or any other error) writes summary.json with status "failed", keeps
+/// history.csv, and rethrows. Returns the summary.
 nlohmann::json run_scenario(const RunRequest& request);
 
 }  // namespace blockdem

@@ -27,6 +27,7 @@ SimulationSettings read_settings(TableReader t) {
     s.dt_safety = t.optional_positive("dt_safety").value_or(s.dt_safety);
     if (s.dt_safety > 1.0) t.fail("dt_safety", fmt::format("must be <= 1 (a fraction of the stable limit), got {}", s.dt_safety));
     s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
+    if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -y and must be >= 0");
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
     s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
     t.reject_unknown_keys();
@@ -35,7 +36,9 @@ SimulationSettings read_settings(TableReader t) {
 
 // Contact parameters from t, starting from base (the defaults of [contact] for a pair).
 // Damping: h_n directly, or e with e_meaning = "paper" (default) or "rebound".
-ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_all) {
+// base_meaning: the e_meaning a pair inherits from [contact].
+ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_all,
+                                          const std::string& base_meaning = "paper") {
     ContactParameters p = base;
     auto required = [&](const char* key, double fallback) {
         return require_all ? t.positive(key) : t.optional_positive(key).value_or(fallback);
@@ -50,7 +53,7 @@ ContactParameters read_contact_parameters(TableReader& t, const ContactParameter
     }
     const auto e = t.optional_number("e");
     const auto h_n = t.optional_number("h_n");
-    const std::string meaning = t.choice("e_meaning", {"paper", "rebound"}, "paper");
+    const std::string meaning = t.choice("e_meaning", {"paper", "rebound"}, base_meaning);
     if (e && h_n) t.fail("h_n", "give either e (coefficient of restitution) or h_n (damping ratio), not both");
     if (e) {
         if (!(*e > 0.0 && *e <= 1.0)) t.fail("e", fmt::format("must be in (0, 1], got {}", *e));
@@ -70,6 +73,7 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
     ContactParameters defaults;
     defaults.h_s = 1.0;  // the paper's recommendation
     defaults = read_contact_parameters(t, defaults, true);
+    const std::string default_meaning = t.choice("e_meaning", {"paper", "rebound"}, "paper");
     MaterialPairs pairs;
     pairs.materials.push_back("default");
     for (const BodyDef& b : bodies)
@@ -99,7 +103,7 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
         }
         if (!seen.insert({std::min(ids[0], ids[1]), std::max(ids[0], ids[1])}).second)
             pair.fail("materials", fmt::format("the pair {} / {} is given twice", names.first, names.second));
-        pairs.set(ids[0], ids[1], read_contact_parameters(pair, defaults, false));
+        pairs.set(ids[0], ids[1], read_contact_parameters(pair, defaults, false, default_meaning));
         pair.reject_unknown_keys();
     }
     t.reject_unknown_keys();
@@ -117,6 +121,10 @@ std::optional<double> read_angle(TableReader& t, const std::string& base) {
 BodyDef read_body(TableReader t) {
     BodyDef b;
     b.name = t.string("name");
+    // Names head CSV columns and are path segments of --set: keep them to one plain word.
+    if (b.name.empty() || b.name.find_first_of(",.;\"' \t\r\n") != std::string::npos)
+        t.fail("name", fmt::format("'{}' is not a valid body name: use letters, digits, '_' or '-' (no spaces, commas, "
+                                   "dots or quotes)", b.name));
     const std::string kind = t.choice("kind", {"dynamic", "fixed", "driven"}, "dynamic");
     b.kind = kind == "dynamic" ? BodyKind::dynamic : kind == "fixed" ? BodyKind::fixed : BodyKind::driven;
     const std::string shape = t.choice("shape", {"rectangle", "polygon"}, "");

@@ -1,6 +1,7 @@
 #include "io/time_series_csv.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <fstream>
 
 #include <fmt/format.h>
@@ -11,25 +12,36 @@
 namespace blockdem {
 namespace {
 
+std::string trim(const std::string& text) {
+    const auto first = text.find_first_not_of(" \t\r");
+    if (first == std::string::npos) return "";
+    return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+// Comma- or semicolon-separated fields keep their empty fields (so "0.1,,0.5" is an error, not
+// a shifted column); otherwise fields are separated by white space.
 std::vector<std::string> split_fields(const std::string& line) {
     std::vector<std::string> fields;
+    const bool delimited = line.find_first_of(",;") != std::string::npos;
     std::string current;
     for (char c : line) {
-        if (c == ',' || c == ';' || c == ' ' || c == '\t' || c == '\r') {
-            if (!current.empty()) fields.push_back(current);
+        const bool separator = delimited ? (c == ',' || c == ';') : (c == ' ' || c == '\t' || c == '\r');
+        if (separator) {
+            if (delimited || !current.empty()) fields.push_back(trim(current));
             current.clear();
         } else {
             current += c;
         }
     }
-    if (!current.empty()) fields.push_back(current);
+    if (delimited || !trim(current).empty()) fields.push_back(trim(current));
+    if (fields.size() == 1 && fields[0].empty()) fields.clear();
     return fields;
 }
 
 std::optional<double> to_number(const std::string& text) {
     double value = 0.0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc{} || end != text.data() + text.size()) return std::nullopt;
+    if (error != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) return std::nullopt;
     return value;
 }
 
@@ -57,7 +69,7 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
         ++line_no;
         const InputLocation where{spec.file.string(), "", line_no, 0};
         const auto fields = split_fields(line);
-        if (fields.empty() || fields[0][0] == '#') continue;
+        if (fields.empty() || (!fields[0].empty() && fields[0][0] == '#')) continue;
         if (!columns_known) {
             const bool is_header = !to_number(fields[0]);
             if (is_header) header = fields;
@@ -70,13 +82,13 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
         if (fields.size() < needed)
             throw InputError(where, fmt::format("expected at least {} columns, found {}", needed, fields.size()));
         const auto a = to_number(fields[a_col]);
-        if (!a) throw InputError(where, fmt::format("'{}' is not a number", fields[a_col]));
+        if (!a) throw InputError(where, fmt::format("'{}' is not a finite number", fields[a_col]));
         double t = 0.0;
         if (spec.dt_s) {
             t = static_cast<double>(acc_m_s2.size()) * *spec.dt_s;
         } else {
             const auto tv = to_number(fields[t_col]);
-            if (!tv) throw InputError(where, fmt::format("'{}' is not a number", fields[t_col]));
+            if (!tv) throw InputError(where, fmt::format("'{}' is not a finite number", fields[t_col]));
             t = *tv;
             if (!time_s.empty() && !(t > time_s.back()))
                 throw InputError(where, fmt::format("time {} s does not increase (previous {} s)", t, time_s.back()));

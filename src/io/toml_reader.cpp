@@ -64,7 +64,8 @@ InputLocation TableReader::location(const std::string& key) const {
     const toml::node* node = key.empty() ? static_cast<const toml::node*>(table_) : table_->get(key);
     if (!node) node = table_;
     const auto& src = node->source();
-    if (src.begin) {
+    // A value given with --set was parsed from a one-line document: its position means nothing.
+    if (src.begin && src.path && !src.path->empty()) {
         where.line = static_cast<int>(src.begin.line);
         where.column = static_cast<int>(src.begin.column);
     }

@@ -85,6 +85,10 @@ AccelerationSeries make_acceleration_series(std::vector<double> time_s, std::vec
     s.source = std::move(source);
     s.velocity_m_s.assign(time_s.size(), 0.0);
     s.displacement_m.assign(time_s.size(), 0.0);
+    for (std::size_t i = 0; i < time_s.size(); ++i)
+        if (!std::isfinite(time_s[i]) || !std::isfinite(acceleration_m_s2[i]))
+            throw std::invalid_argument(fmt::format("sample {} is not finite (t = {} s, a = {} m/s^2)", i, time_s[i],
+                                                    acceleration_m_s2[i]));
     for (std::size_t i = 0; i + 1 < time_s.size(); ++i) {
         const double h = time_s[i + 1] - time_s[i];
         if (!(h > 0.0))

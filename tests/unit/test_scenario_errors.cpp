@@ -7,6 +7,7 @@
 
 #include "io/input_error.hpp"
 #include "io/scenario.hpp"
+#include "laws/restitution.hpp"
 
 namespace blockdem {
 namespace {
@@ -149,6 +150,34 @@ TEST(ScenarioErrors, DuplicateNamesAndBadMaterialPairs) {
     expect_contains(error_of("dup", replace(valid, "name = \"block\"", "name = \"table\"")), "two bodies are named 'table'");
     const std::string pairs = std::string(valid) + "\n[[contact.pairs]]\nmaterials = [\"default\", \"stone\"]\nmu = 0.5\n";
     expect_contains(error_of("pairs", pairs), "no body uses material 'stone'");
+}
+
+}  // namespace
+}  // namespace blockdem
+
+namespace blockdem {
+namespace {
+
+TEST(ScenarioErrors, PairsInheritTheRestitutionMeaning) {
+    std::string text = replace(valid, "e = 0.4", "e = 0.4\ne_meaning = \"rebound\"");
+    text = replace(text, "name = \"block\"", "name = \"block\"\nmaterial = \"stone\"");
+    text += "\n[[contact.pairs]]\nmaterials = [\"default\", \"stone\"]\ne = 0.4\n";
+    const LoadedScenario s = load_scenario(write("inherit", text), {});
+    const double rebound_h = damping_ratio_rebound(0.4);
+    EXPECT_NEAR(s.world.contact.at(0, 1).h_n, rebound_h, 1e-12);
+    EXPECT_NEAR(s.world.contact.at(0, 0).h_n, rebound_h, 1e-12);
+}
+
+TEST(ScenarioErrors, BodyNamesAndGravity) {
+    expect_contains(error_of("name", replace(valid, "name = \"block\"", "name = \"block, left\"")), "is not a valid body name");
+    expect_contains(error_of("emptyname", replace(valid, "name = \"block\"", "name = \"\"")), "is not a valid body name");
+    expect_contains(error_of("gravity", replace(valid, "dt = 1.0e-4", "dt = 1.0e-4\ngravity = -9.81")), "must be >= 0");
+}
+
+TEST(ScenarioErrors, OverriddenValuesAreReportedByKeyWithoutAFakeLine) {
+    const std::string m = error_of("setloc", valid, {"contact.kn=\"stiff\""});
+    expect_contains(m, "key 'contact.kn': must be a number");
+    EXPECT_EQ(m.find(".toml:1:"), std::string::npos) << m;
 }
 
 }  // namespace

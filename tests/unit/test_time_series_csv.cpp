@@ -49,7 +49,11 @@ TEST(TimeSeriesCsv, ErrorsNameFileAndLine) {
         FAIL();
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("blockdem-csv-bad.csv:3"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("'abc' is not a number"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("'abc' is not a finite number"), std::string::npos) << e.what();
+    }
+    for (const char* bad : {"0,0\n0.01,nan\n", "0,0\n0.01,inf\n", "0,0\n0.01,,0.5\n"}) {
+        spec.file = write("nonfinite.csv", bad);
+        EXPECT_THROW(read_time_series_csv(spec), InputError) << bad;
     }
     spec.file = write("back.csv", "0,0\n0.02,1\n0.01,2\n");
     EXPECT_THROW(read_time_series_csv(spec), InputError);
