@@ -128,52 +128,17 @@ RockingClassification classify_rocking_mode(const RockingSignal& s) {
     return c;
 }
 
-namespace {
-
-// Midpoint of the lowest corners (within round-off), relative to the centroid.
-Vec2 base_midpoint_offset(const Bodies& b, std::size_t i) {
-    double lowest = INFINITY;
-    for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k) lowest = std::min(lowest, b.world_vertices_m[b.vertex_begin[i] + k].y);
-    double left = INFINITY, right = -INFINITY;
-    for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k) {
-        const Vec2 v = b.world_vertices_m[b.vertex_begin[i] + k];
-        if (v.y > lowest + 1e-6 * b.bounding_radius_m[i]) continue;
-        left = std::min(left, v.x);
-        right = std::max(right, v.x);
-    }
-    return Vec2{0.5 * (left + right), lowest} - b.position_m[i];
-}
-
-}  // namespace
-
 RockingModeObserver::RockingModeObserver(const World& w, RockingWindow window)
-    : window_(window), theta_rad_(w.bodies.size()), base_offset_m_(w.bodies.size()), slip_m_(w.bodies.size(), 0.0),
-      peak_slip_m_(w.bodies.size(), 0.0) {
+    : window_(window), theta_rad_(w.bodies.size()) {
     const std::size_t n = static_cast<std::size_t>(window_.cycles) * static_cast<std::size_t>(window_.samples_per_cycle);
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
-        if (w.bodies.kind[i] == BodyKind::driven && table_ < 0) table_ = static_cast<std::int64_t>(i);
         if (w.bodies.kind[i] != BodyKind::dynamic) continue;
         theta_rad_[i].reserve(n);
-        base_offset_m_[i] = base_midpoint_offset(w.bodies, i);
     }
     table_acceleration_m_s2_.reserve(n);
 }
 
-void RockingModeObserver::observe_slip(const World& w) {
-    const Bodies& b = w.bodies;
-    const double table_moved_m =
-        table_ >= 0 ? b.position_m[static_cast<std::size_t>(table_)].x - b.initial_position_m[static_cast<std::size_t>(table_)].x : 0.0;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] != BodyKind::dynamic) continue;
-        const Vec2 now = b.position_m[i] + Rotation::from_angle(b.rotation_rad[i]).apply(base_offset_m_[i]);
-        const Vec2 start = b.initial_position_m[i] + base_offset_m_[i];
-        slip_m_[i] = now.x - start.x - table_moved_m;
-        peak_slip_m_[i] = std::max(peak_slip_m_[i], std::abs(slip_m_[i]));
-    }
-}
-
 void RockingModeObserver::observe(const World& w) {
-    observe_slip(w);
     if (!window_.valid()) return;
     const std::size_t total = static_cast<std::size_t>(window_.cycles) * static_cast<std::size_t>(window_.samples_per_cycle);
     // The step nearest to each sample time (the step is far shorter than the sample interval).

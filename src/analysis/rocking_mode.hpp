@@ -73,33 +73,22 @@ struct RockingClassification {
 /// overturned from the flags alone.
 RockingClassification classify_rocking_mode(const RockingSignal& signal);
 
-/// Watches every dynamic body during a run: samples its rotation in the window, and follows the
-/// slip of its base. Slip is measured at the midpoint of the base (the lowest corners at the
-/// start), horizontally and relative to the table: rocking about a corner moves that point by
-/// only b (1 - cos theta), while it moves the centroid by about h theta, so a rocking block
-/// that does not slide shows (almost) no slip.
+/// Watches every dynamic body during a run and samples its rotation in the window. (Base slip,
+/// overturning and rocking flags come from ResponseMonitor.)
 class RockingModeObserver {
 public:
-    /// window.valid() false: no samples are kept (non-harmonic motion); slip is still followed.
+    /// window.valid() false: no samples are kept (non-harmonic motion).
     RockingModeObserver(const World& w, RockingWindow window);
     /// Called once per step with the state at t.
     void observe(const World& w);
     /// The signal of body i, to be completed with the threshold and the flags.
     RockingSignal signal_of(std::size_t body) const;
-    double peak_abs_base_slip_m(std::size_t body) const { return peak_slip_m_[body]; }  ///< [m]
-    double base_slip_m(std::size_t body) const { return slip_m_[body]; }               ///< [m] now, signed (+x)
 
 private:
-    void observe_slip(const World& w);
-
     RockingWindow window_;
     std::size_t next_sample_ = 0;
     std::vector<std::vector<double>> theta_rad_;  ///< per body, the window samples
     std::vector<double> table_acceleration_m_s2_;
-    std::int64_t table_ = -1;                     ///< the driven body slip is measured against
-    std::vector<Vec2> base_offset_m_;             ///< [m] base midpoint - centroid at the start
-    std::vector<double> slip_m_;                  ///< [m]
-    std::vector<double> peak_slip_m_;             ///< [m]
 };
 
 }  // namespace blockdem

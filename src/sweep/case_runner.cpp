@@ -52,12 +52,6 @@ RockingWindow window_for(const World& w) {
     return harmonic ? rocking_window(*sine, w.settings.duration_s) : RockingWindow{};
 }
 
-// Slip of the base beyond a thousandth of the block's size (the tolerance summary.json uses for
-// its centroid-based "slid", which a rocking block would pass without slipping).
-bool slid(const World& w, const RockingModeObserver& modes, std::size_t i) {
-    return modes.peak_abs_base_slip_m(i) > 1e-3 * w.bodies.bounding_radius_m[i];
-}
-
 // Past halfway between the critical angle and lying on its side, a block is down for good.
 bool all_blocks_down(const World& w, const ResponseMonitor& monitor) {
     bool any = false;
@@ -72,18 +66,18 @@ bool all_blocks_down(const World& w, const ResponseMonitor& monitor) {
     return any;
 }
 
-BodyOutcome outcome_of(const ResponseMonitor& monitor, const World& w, const RockingModeObserver& modes, std::size_t i) {
+BodyOutcome outcome_of(const ResponseMonitor& monitor, const RockingModeObserver& modes, std::size_t i) {
     const BodyResponse& r = monitor.responses()[i];
     BodyOutcome o;
     o.overturned = r.overturned();
     o.overturning_time_s = o.overturned ? r.last_crossing_s : -1.0;
     o.peak_rotation_rad = r.peak_abs_rotation_rad;
-    o.peak_sliding_m = modes.peak_abs_base_slip_m(i);
-    o.residual_sliding_m = modes.base_slip_m(i);
+    o.peak_sliding_m = r.peak_abs_base_slip_m;
+    o.residual_sliding_m = r.base_slip_m;
     RockingSignal signal = modes.signal_of(i);
     signal.rocking_threshold_rad = r.rocking_threshold_rad;
     signal.overturned = r.overturned();
-    signal.slid = slid(w, modes, i);
+    signal.slid = r.slid();
     signal.rocked = r.rocked();
     const RockingClassification mode = classify_rocking_mode(signal);
     o.mode = to_string(mode.mode);
@@ -123,7 +117,7 @@ void run_dem(World& w, const SweepScenario& scenario, const SweepCase& c, const 
     for (std::size_t k = 0; k < scenario.body_names.size(); ++k) {
         for (std::size_t i = 0; i < w.bodies.size(); ++i)
             if (w.bodies.name[i] == scenario.body_names[k] && w.bodies.kind[i] == BodyKind::dynamic)
-                result.bodies[k] = outcome_of(monitor, w, modes, i);
+                result.bodies[k] = outcome_of(monitor, modes, i);
     }
 }
 
