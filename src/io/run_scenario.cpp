@@ -15,17 +15,35 @@
 #include "world/simulation_error.hpp"
 
 namespace blockdem {
+namespace {
+
+// The copy in the output folder must still find the files the scenario names (records, CSV
+// motions), which are relative to the original scenario's folder: make them absolute.
+void make_file_keys_absolute(toml::table& root, const std::filesystem::path& scenario_dir) {
+    for (const char* component : {"horizontal", "vertical"}) {
+        toml::node* file = root.at_path(std::string("table_motion.") + component + ".file").node();
+        if (!file || !file->is_string()) continue;
+        const std::filesystem::path path = *file->value<std::string>();
+        if (path.is_relative())
+            *file->as_string() = std::filesystem::absolute(scenario_dir / path).lexically_normal().string();
+    }
+}
+
+void write_scenario_copy(toml::table root, const std::filesystem::path& scenario, const std::filesystem::path& out_dir) {
+    make_file_keys_absolute(root, scenario.parent_path());
+    std::ofstream copy(out_dir / "scenario.toml");
+    copy << root << '\n';
+}
+
+}  // namespace
 
 nlohmann::json run_scenario(const RunRequest& request) {
     LoadedScenario loaded = load_scenario(request.scenario, request.overrides);
     std::error_code ec;
     std::filesystem::create_directories(request.out_dir, ec);
     if (ec) throw InputError({request.out_dir.string(), "", 0, 0}, "cannot create the output folder: " + ec.message());
-    {
-        // The scenario as run (after --set), so that the folder documents itself.
-        std::ofstream copy(request.out_dir / "scenario.toml");
-        copy << loaded.root << '\n';
-    }
+    // The scenario as run (after --set), so that the folder documents itself.
+    write_scenario_copy(loaded.root, request.scenario, request.out_dir);
     World& world = loaded.world;
     HistoryWriter history(request.out_dir / "history.csv", world);
     EnergyWriter energy(request.out_dir / "energy.csv");
