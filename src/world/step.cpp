@@ -21,10 +21,15 @@ void update_body_geometry(World& w) {
         const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
         const std::uint32_t first = b.vertex_begin[i];
         const std::uint32_t count = b.vertex_count[i];
+        Aabb box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
         for (std::uint32_t k = first; k < first + count; ++k) {
-            b.world_vertices_m[k] = b.position_m[i] + r.apply(b.local_vertices_m[k]);
+            const Vec2 v = b.position_m[i] + r.apply(b.local_vertices_m[k]);
+            b.world_vertices_m[k] = v;
             b.world_normals[k] = r.apply(b.local_normals[k]);
+            box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y)};
+            box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y)};
         }
+        b.box_m[i] = box;
     });
 }
 
@@ -48,15 +53,7 @@ void rebuild_candidate_pairs(World& w) {
     const double pad = 0.5 * w.broad_phase_margin_m;
     const auto n = static_cast<std::ptrdiff_t>(b.size());
     w.boxes.resize(b.size());
-    parallel_for(n, [&](std::ptrdiff_t i) {
-        Aabb box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
-        for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k) {
-            const Vec2 v = b.world_vertices_m[b.vertex_begin[i] + k];
-            box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y)};
-            box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y)};
-        }
-        w.boxes[i] = {box.lo - Vec2{pad, pad}, box.hi + Vec2{pad, pad}};
-    });
+    parallel_for(n, [&](std::ptrdiff_t i) { w.boxes[i] = {b.box_m[i].lo - Vec2{pad, pad}, b.box_m[i].hi + Vec2{pad, pad}}; });
     w.broad_phase.find_pairs(w.boxes, b.is_static, w.candidate_pairs);
     merge_candidate_pairs(w.contacts, w.candidate_pairs, w.contacts_scratch);
     index_pairs_by_body(w);
@@ -70,6 +67,14 @@ void update_contact_geometry(World& w) {
     const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
     parallel_for(pairs, [&](std::ptrdiff_t p) {
         PairContact& pair = w.contacts[p];
+        // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
+        // collide_polygons would return no points; the pair is updated exactly as it would be.
+        const Aabb& box_a = b.box_m[pair.a];
+        const Aabb& box_b = b.box_m[pair.b];
+        if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
+            if (pair.count > 0 || pair.reference != no_reference) update_pair_geometry(pair, ContactManifold{}, 0.0);
+            return;
+        }
         const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
                             b.vertex_count[pair.a]};
         const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],

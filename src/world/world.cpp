@@ -101,7 +101,7 @@ std::size_t memory_bytes(const World& w) {
                         bytes_of(b.material) + bytes_of(b.mass_kg) + bytes_of(b.inv_mass_1_kg) + bytes_of(b.inertia_kg_m2) +
                         bytes_of(b.inv_inertia_1_kg_m2) + bytes_of(b.bounding_radius_m) + bytes_of(b.vertex_begin) +
                         bytes_of(b.vertex_count) + bytes_of(b.local_vertices_m) + bytes_of(b.world_vertices_m) + bytes_of(b.local_normals) +
-                        bytes_of(b.world_normals) + bytes_of(b.position_m) + bytes_of(b.rotation_rad) +
+                        bytes_of(b.world_normals) + bytes_of(b.box_m) + bytes_of(b.position_m) + bytes_of(b.rotation_rad) +
                         bytes_of(b.velocity_m_s) + bytes_of(b.angular_velocity_rad_s) + bytes_of(b.acceleration_m_s2) +
                         bytes_of(b.angular_acceleration_rad_s2) + bytes_of(b.velocity_at_t_m_s) +
                         bytes_of(b.angular_velocity_at_t_rad_s) + bytes_of(b.force_n) + bytes_of(b.torque_n_m) +
@@ -125,6 +125,7 @@ World build_world(const Model& model) {
     const std::size_t n = w.bodies.size();
     w.bodies.world_vertices_m.resize(w.bodies.local_vertices_m.size());
     w.bodies.world_normals.resize(w.bodies.local_vertices_m.size());
+    w.bodies.box_m.resize(n);
     w.bodies.acceleration_m_s2.assign(n, {});
     w.bodies.angular_acceleration_rad_s2.assign(n, 0.0);
     w.bodies.force_n.assign(n, {});

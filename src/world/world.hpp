@@ -32,6 +32,7 @@ struct Bodies {
     std::vector<Vec2> world_vertices_m;         ///< [m] corners now
     std::vector<Vec2> local_normals;            ///< outward unit edge normals at rotation 0
     std::vector<Vec2> world_normals;            ///< outward unit edge normals now
+    std::vector<Aabb> box_m;                    ///< [m] tight bounding box now
 
     std::vector<Vec2> position_m;               ///< [m] centroid at t
     std::vector<double> rotation_rad;           ///< [rad] at t, counter-clockwise from the start
