@@ -1,7 +1,7 @@
 // `blockdem bench [--scene wall|slope|rockfill] [--sizes 100,1000] [--threads 1,2] ...`
 // Throughput of the time step on the benchmark scenes (docs/performance.md): block-steps/s,
 // contact-steps/s, time per step split by phase, memory per block, speedup with threads. The
-// stepping loop alone is timed (scene building and 5 warm-up steps are not), and each case is
+// stepping loop alone is timed (scene building and --warmup steps are not), and each case is
 // repeated and its fastest run kept: on a shared machine the minimum is the least disturbed.
 #include <algorithm>
 #include <chrono>
@@ -32,6 +32,7 @@ struct BenchOptions {
     std::vector<int> threads{1, 2};
     double work = 3e6;          ///< block-steps per timed run (steps = work / N, 3 to 5000)
     int repeats = 3;
+    int warmup = 5;             ///< untimed steps after building (contacts close as the blocks settle)
     double idle_wait_s = 0.0;   ///< wait up to this long for the CPUs to be 90% idle before each run
     std::string markdown;
 };
@@ -99,7 +100,7 @@ BenchResult run_case(const std::string& scene, int n, int threads, const BenchOp
     World w = build_world(make_scene(scene, n));
     r.bodies = w.bodies.size() - 1;  // the table is not a block
     r.steps = std::clamp<std::int64_t>(std::llround(o.work / static_cast<double>(r.bodies)), 3, 5000);
-    for (int i = 0; i < 5; ++i) step(w);
+    for (int i = 0; i < o.warmup; ++i) step(w);
     for (int rep = 0; rep < o.repeats; ++rep) {
         const double busy = o.idle_wait_s > 0.0 ? wait_for_idle(o.idle_wait_s) : 0.0;
         w.timings = StepTimings{};
@@ -175,6 +176,8 @@ void add_bench_command(CLI::App& app) {
         ->delimiter(',')
         ->capture_default_str();
     cmd->add_option("--work", o->work, "block-steps per timed run (steps = work / blocks, 3 to 5000)")->capture_default_str();
+    cmd->add_option("--warmup", o->warmup, "untimed steps before timing (same for every size: same state)")
+        ->capture_default_str();
     cmd->add_option("--repeats", o->repeats, "timed runs per case; the fastest is reported")->capture_default_str();
     cmd->add_option("--idle-wait", o->idle_wait_s, "wait up to this many seconds for idle CPUs before each run")
         ->capture_default_str();
