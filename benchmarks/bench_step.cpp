@@ -18,12 +18,7 @@ BENCHMARK(BM_SingleBlockSliding);
 
 void BM_BlockStack(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
-    ContactParameters c;
-    c.kn_N_m = 1e8;
-    c.ks_N_m = 1e8;
-    c.mu = 0.6;
-    c.h_n = damping_ratio_paper(0.4);
-    c.h_s = 1.0;
+    const ContactParameters c{.kn_N_m = 1e8, .ks_N_m = 1e8, .mu = 0.6, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
     World w = build_world(scenes::block_stack(n, 0.4, 0.2, 2400.0, c, 1e9));
     for (auto _ : state) step(w);
     state.counters["steps/s"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);

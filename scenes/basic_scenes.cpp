@@ -10,13 +10,7 @@
 namespace blockdem::scenes {
 
 ContactParameters paper_contact() {
-    ContactParameters p;
-    p.kn_N_m = 2.0e4;
-    p.ks_N_m = 2.0e4;
-    p.mu = 0.3;
-    p.h_n = damping_ratio_paper(0.4);
-    p.h_s = 1.0;
-    return p;
+    return {.kn_N_m = 2.0e4, .ks_N_m = 2.0e4, .mu = 0.3, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
 }
 
 Model block_on_table(double width_m, double height_m, double mass_kg, const ContactParameters& contact,

@@ -11,13 +11,7 @@ namespace blockdem::scenes {
 namespace {
 
 ContactParameters rock_contact() {
-    ContactParameters c;
-    c.kn_N_m = 1e9;
-    c.ks_N_m = 1e9;
-    c.mu = 0.6;
-    c.h_n = damping_ratio_rebound(0.5);
-    c.h_s = 0.2;
-    return c;
+    return {.kn_N_m = 1e9, .ks_N_m = 1e9, .mu = 0.6, .h_n = damping_ratio_rebound(0.5), .h_s = 0.2};
 }
 
 Model shaken_base(const Polygon& region, double duration_s) {

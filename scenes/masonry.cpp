@@ -156,13 +156,8 @@ Model s3_wall_scene(int bricks, double duration_s, double dt_s) {
     m.settings.duration_s = duration_s;
     m.settings.dt_s = dt_s;
     m.settings.gravity_m_s2 = 9.81;  // as the peers (scen.h)
-    ContactParameters c;
-    c.kn_N_m = 6e7;
-    c.ks_N_m = 6e7;
-    c.mu = 0.6;
-    c.h_n = damping_ratio_rebound(0.5);
-    c.h_s = 0.2;
-    m.contact = MaterialPairs::uniform(c);
+    m.contact = MaterialPairs::uniform(
+        {.kn_N_m = 6e7, .ks_N_m = 6e7, .mu = 0.6, .h_n = damping_ratio_rebound(0.5), .h_s = 0.2});
     m.table_motion.horizontal = SineMotion{0.3 * 9.81, 0.5, 0.0, 0.0, 0.0};
 
     const int columns = std::max(2, static_cast<int>(std::lround(std::sqrt(2.0 * bricks))));

@@ -19,13 +19,8 @@ Model small_wall(double length_m, int courses, bool stepped_ends) {
     Model m;
     m.settings.dt_s = 2e-4;
     m.settings.duration_s = 1e9;
-    ContactParameters c;
-    c.kn_N_m = 1e7;
-    c.ks_N_m = 1e7;
-    c.mu = 0.6;
-    c.h_n = damping_ratio_rebound(0.5);
-    c.h_s = 0.2;
-    m.contact = MaterialPairs::uniform(c);
+    m.contact = MaterialPairs::uniform(
+        {.kn_N_m = 1e7, .ks_N_m = 1e7, .mu = 0.6, .h_n = damping_ratio_rebound(0.5), .h_s = 0.2});
     BodyDef table;
     table.name = "table";
     table.kind = BodyKind::driven;
