@@ -31,6 +31,7 @@ struct PairContact {
     std::uint32_t count = 0;                  ///< active points (0 = apart)
     std::uint32_t reference = no_reference;   ///< reference edge last step (hysteresis)
     double stiffness_scale = 1.0;             ///< [-] softening of a shrinking overlap (polygon_contact.hpp)
+    AxisCache axis_cache;                     ///< lets lasting contacts skip the full separating-axis test
     ContactPoint points[2];
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace blockdem {
 namespace {
@@ -68,20 +69,21 @@ int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double
     return n;
 }
 
-}  // namespace
+struct Reference {
+    std::uint32_t owner = 0;
+    std::uint32_t edge = 0;
+};
 
-bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                      ContactManifold& manifold) {
-    manifold.count = 0;
+// The full separating-axis test: the reference edge (least penetration, with last step's edge
+// kept within a small tolerance so that nearly equal candidates do not alternate), or nullopt
+// when some edge separates the polygons.
+std::optional<Reference> choose_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference) {
     const Axis on_a = best_axis(a, b);
-    if (on_a.separation_m > 0.0) return false;
+    if (on_a.separation_m > 0.0) return std::nullopt;
     const Axis on_b = best_axis(b, a);
-    if (on_b.separation_m > 0.0) return false;
-
-    // Choose the reference edge: the least penetration, but keep last step's edge within a
-    // small tolerance so that nearly equal candidates do not alternate.
-    std::uint32_t owner = on_a.separation_m >= on_b.separation_m ? 0u : 1u;
-    std::uint32_t edge = owner == 0 ? on_a.edge : on_b.edge;
+    if (on_b.separation_m > 0.0) return std::nullopt;
+    Reference r{on_a.separation_m >= on_b.separation_m ? 0u : 1u, 0};
+    r.edge = r.owner == 0 ? on_a.edge : on_b.edge;
     if (previous_reference != no_reference) {
         const std::uint32_t prev_owner = feature_owner(previous_reference);
         const std::uint32_t prev_edge = feature_vertex(previous_reference);
@@ -90,12 +92,60 @@ bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t 
         if (prev_edge < ref.count) {
             const double best = std::max(on_a.separation_m, on_b.separation_m);
             const double tolerance = 0.02 * std::abs(best) + 1e-15;
-            if (edge_separation(ref, prev_edge, other) >= best - tolerance) {
-                owner = prev_owner;
-                edge = prev_edge;
-            }
+            if (edge_separation(ref, prev_edge, other) >= best - tolerance) r = {prev_owner, prev_edge};
         }
     }
+    return r;
+}
+
+// The largest separation over every edge of both polygons except the two named ones.
+double largest_other_separation(const PolygonView& a, const PolygonView& b, std::uint32_t skip1, std::uint32_t skip2) {
+    double largest = -std::numeric_limits<double>::infinity();
+    for (std::uint32_t owner = 0; owner < 2; ++owner) {
+        const PolygonView& poly = owner == 0 ? a : b;
+        const PolygonView& other = owner == 0 ? b : a;
+        for (std::uint32_t i = 0; i < poly.count; ++i) {
+            const std::uint32_t f = make_feature(owner, i);
+            if (f != skip1 && f != skip2) largest = std::max(largest, edge_separation(poly, i, other));
+        }
+    }
+    return largest;
+}
+
+// The fast path for a pair in lasting contact: if last step's reference edge still penetrates
+// no more than the incident edge and than every other edge can (their separations at the last
+// full test, moved by at most the drift since), the full test would choose it again, so it is
+// the reference. Returns nullopt when the full test is needed, and a reference with owner 2
+// when the reference edge now separates the polygons.
+std::optional<Reference> cached_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
+                                          const AxisCache& cache) {
+    if (previous_reference == no_reference || !(cache.others_max_separation_m < INFINITY)) return std::nullopt;
+    const Reference r{feature_owner(previous_reference), feature_vertex(previous_reference)};
+    const PolygonView& ref = r.owner == 0 ? a : b;
+    const PolygonView& inc = r.owner == 0 ? b : a;
+    if (r.edge >= ref.count) return std::nullopt;
+    const double separation = edge_separation(ref, r.edge, inc);
+    if (separation > 0.0) return Reference{2, 0};
+    const std::uint32_t i1 = incident_edge(inc, ref.normals[r.edge]);
+    if (make_feature(1u - r.owner, i1) != cache.incident) return std::nullopt;
+    if (separation >= edge_separation(inc, i1, ref) && separation >= cache.others_max_separation_m + cache.drift_m) return r;
+    return std::nullopt;
+}
+
+}  // namespace
+
+bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
+                      ContactManifold& manifold, AxisCache* cache) {
+    manifold.count = 0;
+    std::optional<Reference> chosen = cache ? cached_reference(a, b, previous_reference, *cache) : std::nullopt;
+    const bool cached = chosen.has_value();
+    if (!cached) chosen = choose_reference(a, b, previous_reference);
+    if (!chosen || chosen->owner == 2) {
+        if (cache) *cache = AxisCache{};
+        return false;
+    }
+    const std::uint32_t owner = chosen->owner;
+    const std::uint32_t edge = chosen->edge;
     const PolygonView& ref = owner == 0 ? a : b;
     const PolygonView& inc = owner == 0 ? b : a;
     const std::uint32_t inc_owner = 1u - owner;
@@ -109,6 +159,11 @@ bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t 
 
     const std::uint32_t i1 = incident_edge(inc, n);
     const std::uint32_t i2 = (i1 + 1) % inc.count;
+    if (cache && !cached) {
+        cache->incident = make_feature(inc_owner, i1);
+        cache->others_max_separation_m = largest_other_separation(a, b, make_feature(owner, edge), cache->incident);
+        cache->drift_m = 0.0;
+    }
     const ClipPoint segment[2] = {{inc.vertices[i1], make_feature(inc_owner, i1)},
                                   {inc.vertices[i2], make_feature(inc_owner, i2)}};
     ClipPoint once[2];

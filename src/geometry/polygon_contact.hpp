@@ -19,6 +19,7 @@
 // vanish together; instead the contact is softened by stiffness_scale = min(1, L / l), L the
 // distance between the two points and l = 1% of the shorter of the two edges, so its force
 // fades continuously to zero.
+#include <cmath>
 #include <cstdint>
 
 #include "geometry/vec2.hpp"
@@ -56,9 +57,22 @@ struct ContactManifold {
 /// No reference edge from a previous step.
 inline constexpr std::uint32_t no_reference = 0xffffffffu;
 
+/// What a pair in lasting contact keeps so that most steps skip the full separating-axis test:
+/// at the last full test, the largest separation of every edge but the reference and the
+/// incident edge, and how far any separation may have moved since (the caller adds each step's
+/// bound of the two bodies' relative motion to drift_m). With the reference still penetrating
+/// no more than the incident edge and than others_max + drift, the full test would choose the
+/// same reference, so the result is the same as without the cache, bit for bit.
+struct AxisCache {
+    double others_max_separation_m = INFINITY;  ///< [m]; infinity: nothing cached
+    double drift_m = 0.0;                       ///< [m]
+    std::uint32_t incident = no_reference;      ///< make_feature(owner, edge) of the incident edge then
+};
+
 /// Fills manifold with the contact points of a and b. previous_reference: the reference edge
-/// chosen at the last step for this pair (no_reference if none). Returns true if they touch.
+/// chosen at the last step for this pair (no_reference if none). cache: optional, see AxisCache.
+/// Returns true if they touch.
 bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                      ContactManifold& manifold);
+                      ContactManifold& manifold, AxisCache* cache = nullptr);
 
 }  // namespace blockdem

@@ -73,14 +73,24 @@ void update_contact_geometry(World& w) {
         const Aabb& box_b = b.box_m[pair.b];
         if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
             if (pair.count > 0 || pair.reference != no_reference) update_pair_geometry(pair, ContactManifold{}, 0.0);
+            pair.axis_cache = AxisCache{};
             return;
         }
+        // How far any edge's separation can have moved since the last step: both bodies'
+        // translations plus their rotations times a lever covering every corner of either
+        // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
+        const double radii = b.bounding_radius_m[pair.a] + b.bounding_radius_m[pair.b];
+        const double lever = length(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
+        pair.axis_cache.drift_m +=
+            w.dt_s * (length(b.velocity_m_s[pair.a]) + length(b.velocity_m_s[pair.b]) +
+                      (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b])) * lever) +
+            1e-9 * radii;
         const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
                             b.vertex_count[pair.a]};
         const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
                             b.vertex_count[pair.b]};
         ContactManifold manifold;
-        collide_polygons(a, c, pair.reference, manifold);
+        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
         // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
         const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
         update_pair_geometry(pair, manifold, match_distance);
