@@ -24,13 +24,14 @@ double edge_separation(const PolygonView& poly, std::uint32_t i, const PolygonVi
     return least - dot(n, poly.vertices[i]);
 }
 
-// The edge of poly that other penetrates least. Stops early once a separating edge is found.
+// The edge of poly that other penetrates least. Stops early once a separating edge is found
+// (separation >= 0: polygons that only touch have no point with a positive overlap either).
 Axis best_axis(const PolygonView& poly, const PolygonView& other) {
     Axis best;
     for (std::uint32_t i = 0; i < poly.count; ++i) {
         const double s = edge_separation(poly, i, other);
         if (s > best.separation_m) best = {s, i};
-        if (s > 0.0) break;
+        if (s >= 0.0) break;
     }
     return best;
 }
@@ -69,6 +70,9 @@ int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double
     return n;
 }
 
+// How much more a reference edge may penetrate than the best edge and still be kept [m].
+double reference_tolerance(double best_separation_m) { return 0.02 * std::abs(best_separation_m) + 1e-15; }
+
 struct Reference {
     std::uint32_t owner = 0;
     std::uint32_t edge = 0;
@@ -77,11 +81,19 @@ struct Reference {
 // The full separating-axis test: the reference edge (least penetration, with last step's edge
 // kept within a small tolerance so that nearly equal candidates do not alternate), or nullopt
 // when some edge separates the polygons.
-std::optional<Reference> choose_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference) {
+// separating: set to the separating edge when there is one.
+std::optional<Reference> choose_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
+                                          std::uint32_t& separating) {
     const Axis on_a = best_axis(a, b);
-    if (on_a.separation_m > 0.0) return std::nullopt;
+    if (on_a.separation_m >= 0.0) {
+        separating = make_feature(0, on_a.edge);
+        return std::nullopt;
+    }
     const Axis on_b = best_axis(b, a);
-    if (on_b.separation_m > 0.0) return std::nullopt;
+    if (on_b.separation_m >= 0.0) {
+        separating = make_feature(1, on_b.edge);
+        return std::nullopt;
+    }
     Reference r{on_a.separation_m >= on_b.separation_m ? 0u : 1u, 0};
     r.edge = r.owner == 0 ? on_a.edge : on_b.edge;
     if (previous_reference != no_reference) {
@@ -91,8 +103,7 @@ std::optional<Reference> choose_reference(const PolygonView& a, const PolygonVie
         const PolygonView& other = prev_owner == 0 ? b : a;
         if (prev_edge < ref.count) {
             const double best = std::max(on_a.separation_m, on_b.separation_m);
-            const double tolerance = 0.02 * std::abs(best) + 1e-15;
-            if (edge_separation(ref, prev_edge, other) >= best - tolerance) r = {prev_owner, prev_edge};
+            if (edge_separation(ref, prev_edge, other) >= best - reference_tolerance(best)) r = {prev_owner, prev_edge};
         }
     }
     return r;
@@ -112,10 +123,10 @@ double largest_other_separation(const PolygonView& a, const PolygonView& b, std:
     return largest;
 }
 
-// The fast path for a pair in lasting contact: if last step's reference edge still penetrates
-// no more than the incident edge and than every other edge can (their separations at the last
-// full test, moved by at most the drift since), the full test would choose it again, so it is
-// the reference. Returns nullopt when the full test is needed, and a reference with owner 2
+// The fast path for a pair in lasting contact: if last step's reference edge is still within
+// the hysteresis tolerance of the incident edge and of every other edge (their separations at
+// the last full test, moved by at most the drift since), the full test would choose it again,
+// so it is the reference. Returns nullopt when the full test is needed, and a reference with owner 2
 // when the reference edge now separates the polygons.
 std::optional<Reference> cached_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
                                           const AxisCache& cache) {
@@ -128,7 +139,11 @@ std::optional<Reference> cached_reference(const PolygonView& a, const PolygonVie
     if (separation > 0.0) return Reference{2, 0};
     const std::uint32_t i1 = incident_edge(inc, ref.normals[r.edge]);
     if (make_feature(1u - r.owner, i1) != cache.incident) return std::nullopt;
-    if (separation >= edge_separation(inc, i1, ref) && separation >= cache.others_max_separation_m + cache.drift_m) return r;
+    // Every other edge separates by at most bound. The full test keeps last step's edge when it
+    // is within the tolerance of the best, and the tolerance only grows as the best falls, so
+    // meeting it against bound (>= the best, <= 0) is enough.
+    const double bound = std::max(edge_separation(inc, i1, ref), cache.others_max_separation_m + cache.drift_m);
+    if (bound <= 0.0 && separation >= bound - reference_tolerance(bound)) return r;
     return std::nullopt;
 }
 
@@ -137,11 +152,22 @@ std::optional<Reference> cached_reference(const PolygonView& a, const PolygonVie
 bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
                       ContactManifold& manifold, AxisCache* cache) {
     manifold.count = 0;
+    // A pair kept apart by an edge last step is most likely still apart along it.
+    if (cache && cache->separating != no_reference) {
+        const std::uint32_t owner = feature_owner(cache->separating);
+        const std::uint32_t edge = feature_vertex(cache->separating);
+        const PolygonView& poly = owner == 0 ? a : b;
+        if (edge < poly.count && edge_separation(poly, edge, owner == 0 ? b : a) >= 0.0) return false;
+    }
     std::optional<Reference> chosen = cache ? cached_reference(a, b, previous_reference, *cache) : std::nullopt;
     const bool cached = chosen.has_value();
-    if (!cached) chosen = choose_reference(a, b, previous_reference);
+    std::uint32_t separating = no_reference;
+    if (!cached) chosen = choose_reference(a, b, previous_reference, separating);
     if (!chosen || chosen->owner == 2) {
-        if (cache) *cache = AxisCache{};
+        if (cache) {
+            *cache = AxisCache{};
+            cache->separating = separating;
+        }
         return false;
     }
     const std::uint32_t owner = chosen->owner;
