@@ -55,32 +55,35 @@ void check(const SyntheticMotionParameters& p) {
             "rise_time + strong_duration must fit in the duration");
 }
 
-// Filters force samples f through x'' + 2 zeta w x' + w^2 x = f; returns the absolute
-// acceleration of the filter, -(2 zeta w x' + w^2 x) (= x'' - f), which passes the band near w.
-std::vector<double> band_filter(const std::vector<double>& f, double dt, double frequency_hz, double zeta) {
-    const double w = 2.0 * pi * frequency_hz;
-    const OscillatorStep step(w, zeta, dt);
+// Drives x'' + 2 zeta w x' + w^2 x = f with the force samples f (exact piecewise-linear steps)
+// and returns output(step, state, f) at every sample.
+template <class Output>
+std::vector<double> oscillator_response(const std::vector<double>& f, double dt, double frequency_hz, double zeta,
+                                        Output output) {
+    const OscillatorStep step(2.0 * pi * frequency_hz, zeta, dt);
     std::vector<double> out(f.size());
     OscillatorState s;
     for (std::size_t k = 0; k < f.size(); ++k) {
         if (k > 0) s = step.advance(s, f[k - 1], f[k]);
-        out[k] = -(2.0 * zeta * w * s.v + w * w * s.x);
+        out[k] = output(step, s, f[k]);
     }
     return out;
+}
+
+// Kanai-Tajimi: the absolute acceleration of the filter, -(2 zeta w x' + w^2 x) (= x'' - f),
+// which passes the band near w.
+std::vector<double> band_filter(const std::vector<double>& f, double dt, double frequency_hz, double zeta) {
+    const double w = 2.0 * pi * frequency_hz;
+    return oscillator_response(f, dt, frequency_hz, zeta, [w, zeta](const OscillatorStep&, OscillatorState s, double) {
+        return -(2.0 * zeta * w * s.v + w * w * s.x);
+    });
 }
 
 // Clough-Penzien: the relative acceleration y'' of an oscillator driven by f, which removes the
 // frequencies below its corner (|H| ~ (w / wf)^2 there) and passes those above.
 std::vector<double> high_pass(const std::vector<double>& f, double dt, double frequency_hz, double zeta) {
-    const double w = 2.0 * pi * frequency_hz;
-    const OscillatorStep step(w, zeta, dt);
-    std::vector<double> out(f.size());
-    OscillatorState s;
-    for (std::size_t k = 0; k < f.size(); ++k) {
-        if (k > 0) s = step.advance(s, f[k - 1], f[k]);
-        out[k] = step.acceleration(s, f[k]);
-    }
-    return out;
+    return oscillator_response(f, dt, frequency_hz, zeta,
+                               [](const OscillatorStep& step, OscillatorState s, double force) { return step.acceleration(s, force); });
 }
 
 }  // namespace
