@@ -14,10 +14,11 @@ ContactParameters softened(ContactParameters p, double scale) {
 
 // The law at every point of one pair: updates the points' forces and history, and writes what
 // they add to the two bodies into the pair's own slot (no shared sums: parallel.hpp, rule 1).
-void pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, double dt_s, PairForces& out) {
-    out.normal_dashpot_j = out.shear_dashpot_j = out.friction_j = 0.0;
+// Returns the pair's share of the ledger: this step's dissipation and the springs' energy now.
+ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, double dt_s, PairForces& out) {
+    ContactEnergy energy;
     out.count = pair.count;
-    if (pair.count == 0) return;
+    if (pair.count == 0) return energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const ContactParameters params = softened(contact.at(b.material[ia], b.material[ib]), pair.stiffness_scale);
@@ -41,14 +42,19 @@ void pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, 
         out.on_b_n[k] = on_b;
         out.torque_on_b_n_m[k] = cross(rb, on_b);
         out.torque_on_a_n_m[k] = cross(ra, on_b);
-        out.normal_dashpot_j += f.normal_dashpot_work_j;
-        out.shear_dashpot_j += f.shear_dashpot_work_j;
-        out.friction_j += f.friction_work_j;
+        energy.normal_dashpot_j += f.normal_dashpot_work_j;
+        energy.shear_dashpot_j += f.shear_dashpot_work_j;
+        energy.friction_j += f.friction_work_j;
+        energy.elastic_j += contact_elastic_energy(params, point.overlap_m, point.shear_spring_n);
     }
+    return energy;
 }
 
-// Adds body i's pair slots to its force and torque, in table order (parallel.hpp, rule 2).
+// Body i's force and torque: gravity, then its pair slots in table order (parallel.hpp, rule 2).
 void gather_body(std::size_t i, const World& w, Vec2& force_n, double& torque_n_m) {
+    const Bodies& b = w.bodies;
+    force_n = {0.0, -w.settings.gravity_m_s2 * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
+    torque_n_m = 0.0;
     for (std::uint32_t e = w.body_pair_start[i]; e < w.body_pair_start[i + 1]; ++e) {
         const std::uint32_t p = w.body_pair_entries[e] >> 1;
         const bool is_b = (w.body_pair_entries[e] & 1u) != 0;
@@ -85,22 +91,20 @@ void index_pairs_by_body(World& w) {
     w.pair_forces.resize(w.contacts.size());
 }
 
-ContactDissipation apply_contact_law(World& w) {
+ContactEnergy apply_contact_law(World& w) {
     if (w.pair_forces.size() != w.contacts.size() || w.body_pair_start.size() != w.bodies.size() + 1)
         index_pairs_by_body(w);
     Bodies& b = w.bodies;
     const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
-    parallel_for(pairs, [&](std::ptrdiff_t p) { pair_law(w.contacts[p], b, w.contact, w.dt_s, w.pair_forces[p]); });
+    // One pass: each pair writes its own slot and returns its ledger share (rule 1 and rule 3).
+    const ContactEnergy energy = deterministic_sum(
+        pairs, [&](std::ptrdiff_t p) { return pair_law(w.contacts[p], b, w.contact, w.dt_s, w.pair_forces[p]); });
 
     const auto bodies = static_cast<std::ptrdiff_t>(b.size());
     parallel_for(bodies,
                  [&](std::ptrdiff_t i) { gather_body(static_cast<std::size_t>(i), w, b.force_n[i], b.torque_n_m[i]); });
 
-    ContactDissipation lost;
-    lost.normal_dashpot_j = deterministic_sum(pairs, [&](std::ptrdiff_t p) { return w.pair_forces[p].normal_dashpot_j; });
-    lost.shear_dashpot_j = deterministic_sum(pairs, [&](std::ptrdiff_t p) { return w.pair_forces[p].shear_dashpot_j; });
-    lost.friction_j = deterministic_sum(pairs, [&](std::ptrdiff_t p) { return w.pair_forces[p].friction_j; });
-    return lost;
+    return energy;
 }
 
 double contact_elastic_energy(const World& w) {

@@ -17,16 +17,24 @@
 
 namespace blockdem {
 
-/// Energy dissipated by the contacts during this step [J].
-struct ContactDissipation {
-    double normal_dashpot_j = 0.0;
-    double shear_dashpot_j = 0.0;
-    double friction_j = 0.0;
+/// What the contacts add to the energy ledger: dissipated during this step, stored now [J].
+struct ContactEnergy {
+    double normal_dashpot_j = 0.0;  ///< [J] dissipated by the normal dashpots this step
+    double shear_dashpot_j = 0.0;   ///< [J] dissipated by the shear dashpots this step
+    double friction_j = 0.0;        ///< [J] dissipated by sliding this step
+    double elastic_j = 0.0;         ///< [J] stored in the springs after this step's update
+    ContactEnergy& operator+=(const ContactEnergy& o) {
+        normal_dashpot_j += o.normal_dashpot_j;
+        shear_dashpot_j += o.shear_dashpot_j;
+        friction_j += o.friction_j;
+        elastic_j += o.elastic_j;
+        return *this;
+    }
 };
 
-/// Adds contact forces and torques to w.bodies.force_n / torque_n_m and updates each point's
-/// forces and history.
-ContactDissipation apply_contact_law(World& w);
+/// Sets every body's force and torque: gravity plus the contact forces, and updates each
+/// point's forces and history. Returns the contacts' energy terms.
+ContactEnergy apply_contact_law(World& w);
 
 /// Lists each body's pairs in table order (World::body_pair_start/entries) and sizes the force
 /// slots; called whenever the table's pairs change (a broad-phase rebuild).

@@ -12,6 +12,7 @@
 // more than a small scene's whole step.
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 
 namespace blockdem {
 
@@ -33,23 +34,29 @@ void parallel_for(std::ptrdiff_t n, Body body) {
 }
 
 /// sum_{i < n} term(i), in the chunked order of rule 3 (parallel over chunks when n is large).
+/// The value may be a double or a small struct of totals with +=, summed member by member; a
+/// term may also write its own item's slots (rule 1), so one pass can both update and total.
 template <class Term>
-double deterministic_sum(std::ptrdiff_t n, Term term) {
+auto deterministic_sum(std::ptrdiff_t n, Term term) {
+    using Value = std::decay_t<decltype(term(std::ptrdiff_t{0}))>;
     const std::ptrdiff_t chunk = std::max(min_sum_chunk, (n + max_sum_chunks - 1) / max_sum_chunks);
     const std::ptrdiff_t chunks = (n + chunk - 1) / chunk;
-    if (chunks <= 1) {
-        double s = 0.0;
-        for (std::ptrdiff_t i = 0; i < n; ++i) s += term(i);
+    auto sum_range = [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+        Value s{};
+        for (std::ptrdiff_t i = begin; i < end; ++i) s += term(i);
         return s;
+    };
+    if (chunks <= 1) return sum_range(0, n);
+    Value partial[max_sum_chunks];  // on the stack: the step allocates nothing
+    // The chunks, not the items, are shared out: their number is below parallel_threshold, so
+    // this loop cannot go through parallel_for.
+    if (n >= parallel_threshold) {
+#pragma omp parallel for schedule(static)
+        for (std::ptrdiff_t c = 0; c < chunks; ++c) partial[c] = sum_range(c * chunk, std::min(n, (c + 1) * chunk));
+    } else {
+        for (std::ptrdiff_t c = 0; c < chunks; ++c) partial[c] = sum_range(c * chunk, std::min(n, (c + 1) * chunk));
     }
-    double partial[max_sum_chunks];  // on the stack: the step allocates nothing
-    parallel_for(n >= parallel_threshold ? chunks : 0, [&](std::ptrdiff_t c) {
-        double s = 0.0;
-        const std::ptrdiff_t end = std::min(n, (c + 1) * chunk);
-        for (std::ptrdiff_t i = c * chunk; i < end; ++i) s += term(i);
-        partial[c] = s;
-    });
-    double total = 0.0;
+    Value total{};
     for (std::ptrdiff_t c = 0; c < chunks; ++c) total += partial[c];
     return total;
 }

@@ -99,79 +99,74 @@ void update_contact_geometry(World& w) {
 
 namespace {
 
-double gravitational_energy(const World& w) {
+// The bodies' terms of the ledger, and how many bodies have a state that is not finite.
+struct BodyEnergy {
+    double kinetic_j = 0.0;        ///< [J]
+    double gravitational_j = 0.0;  ///< [J]
+    double non_finite = 0.0;       ///< bodies whose position, rotation or velocity is not finite
+    BodyEnergy& operator+=(const BodyEnergy& o) {
+        kinetic_j += o.kinetic_j;
+        gravitational_j += o.gravitational_j;
+        non_finite += o.non_finite;
+        return *this;
+    }
+};
+
+bool state_is_finite(const Bodies& b, std::size_t i) {
+    return std::isfinite(b.position_m[i].x) && std::isfinite(b.position_m[i].y) && std::isfinite(b.rotation_rad[i]) &&
+           std::isfinite(b.velocity_m_s[i].x) && std::isfinite(b.velocity_m_s[i].y);
+}
+
+BodyEnergy body_energy(const World& w) {
     const Bodies& b = w.bodies;
     const double g = w.settings.gravity_m_s2;
     return deterministic_sum(static_cast<std::ptrdiff_t>(b.size()), [&](std::ptrdiff_t i) {
-        return b.kind[i] == BodyKind::dynamic ? b.mass_kg[i] * g * b.position_m[i].y : 0.0;
-    });
-}
-
-double kinetic_energy(const World& w) {
-    const Bodies& b = w.bodies;
-    return deterministic_sum(static_cast<std::ptrdiff_t>(b.size()), [&](std::ptrdiff_t i) {
-        if (b.kind[i] != BodyKind::dynamic) return 0.0;
+        BodyEnergy e;
+        e.non_finite = state_is_finite(b, static_cast<std::size_t>(i)) ? 0.0 : 1.0;
+        if (b.kind[i] != BodyKind::dynamic) return e;
         const Vec2 v = b.velocity_at_t_m_s[i];
         const double omega = b.angular_velocity_at_t_rad_s[i];
-        return 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
+        e.kinetic_j = 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
+        e.gravitational_j = b.mass_kg[i] * g * b.position_m[i].y;
+        return e;
     });
 }
 
 }  // namespace
 
 void compute_forces(World& w) {
-    // Gravity is the first term of every body's sum; apply_contact_law adds the contacts.
-    Bodies& b = w.bodies;
-    const auto n = static_cast<std::ptrdiff_t>(b.size());
-    const double g = w.settings.gravity_m_s2;
-    parallel_for(n, [&](std::ptrdiff_t i) {
-        b.force_n[i] = {0.0, -g * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
-        b.torque_n_m[i] = 0.0;
-    });
-    const ContactDissipation lost = apply_contact_law(w);
-    w.energy.normal_dashpot_j += lost.normal_dashpot_j;
-    w.energy.shear_dashpot_j += lost.shear_dashpot_j;
-    w.energy.friction_j += lost.friction_j;
+    const ContactEnergy contacts = apply_contact_law(w);
+    w.energy.normal_dashpot_j += contacts.normal_dashpot_j;
+    w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
+    w.energy.friction_j += contacts.friction_j;
+    w.energy.elastic_j = contacts.elastic_j;
 }
 
-void update_energy(World& w) {
-    w.energy.kinetic_j = kinetic_energy(w);
-    w.energy.gravitational_j = gravitational_energy(w);
-    w.energy.elastic_j = contact_elastic_energy(w);
+bool update_energy(World& w) {
+    const BodyEnergy bodies = body_energy(w);
+    w.energy.kinetic_j = bodies.kinetic_j;
+    w.energy.gravitational_j = bodies.gravitational_j;
     w.energy.peak_scale_j = std::max(w.energy.peak_scale_j, w.energy.current_scale_j());
+    return bodies.non_finite == 0.0;
 }
 
 void initialise_energy(World& w) {
+    w.energy.elastic_j = contact_elastic_energy(w);
     update_energy(w);
     w.energy.initial_j = w.energy.stored_j();
     w.energy.initial_gravitational_j = w.energy.gravitational_j;
     w.energy.peak_scale_j = 0.0;
 }
 
-namespace {
-
-// The first body whose state is not finite, or b.size() if none.
-std::size_t first_non_finite_body(const Bodies& b) {
-    auto finite = [&](std::size_t i) {
-        return std::isfinite(b.position_m[i].x) && std::isfinite(b.position_m[i].y) && std::isfinite(b.rotation_rad[i]) &&
-               std::isfinite(b.velocity_m_s[i].x) && std::isfinite(b.velocity_m_s[i].y);
-    };
-    const double bad = deterministic_sum(static_cast<std::ptrdiff_t>(b.size()),
-                                         [&](std::ptrdiff_t i) { return finite(static_cast<std::size_t>(i)) ? 0.0 : 1.0; });
-    if (bad == 0.0) return b.size();
-    std::size_t i = 0;
-    while (finite(i)) ++i;
-    return i;
-}
-
-}  // namespace
-
-void check_stability(const World& w) {
+void check_stability(const World& w, bool state_finite) {
     const Bodies& b = w.bodies;
-    if (const std::size_t i = first_non_finite_body(b); i < b.size())
+    if (!state_finite) {
+        std::size_t i = 0;
+        while (i + 1 < b.size() && state_is_finite(b, i)) ++i;
         throw SimulationError(fmt::format("unstable: the state of body '{}' is not finite at t = {:.6g} s (step {}); "
                                           "reduce dt (now {:g} s, stable limit {:.4g} s)",
                                           b.name[i], w.time_s, w.step_index, w.dt_s, w.critical_dt_s));
+    }
     const double error = w.energy.balance_error();
     // (The first steps are skipped: every term is still near zero and their ratio means little.)
     if (w.step_index > 10 && w.energy.scale_j() > 1e-9 && error > w.settings.max_energy_error) {
@@ -220,8 +215,7 @@ void step_begin(World& w) {
     clock.lap(&StepTimings::forces_s);
     update_velocities(w);
     clock.lap(&StepTimings::integration_s);
-    update_energy(w);
-    check_stability(w);
+    check_stability(w, update_energy(w));
     clock.lap(&StepTimings::energy_s);
 }
 

@@ -16,11 +16,14 @@ bool broad_phase_is_stale(const World& w);
 void rebuild_candidate_pairs(World& w);
 void update_contact_geometry(World& w);
 void compute_forces(World& w);
-void update_energy(World& w);
+/// Sets the bodies' energies at t (the contacts' are set by compute_forces); returns false if
+/// some body's state is not finite.
+bool update_energy(World& w);
 /// Sets the energies at t = 0 (before the first step).
 void initialise_energy(World& w);
-/// Throws SimulationError when the state is not finite or the energy balance has run away.
-void check_stability(const World& w);
+/// Throws SimulationError when the state is not finite (state_finite: update_energy's answer)
+/// or the energy balance has run away.
+void check_stability(const World& w, bool state_finite);
 
 /// First half of a step: everything at t (contacts, forces, accelerations, velocities to
 /// t + dt/2 and their mean at t, energies at t). The world then holds a complete state at t.

@@ -57,9 +57,6 @@ struct PairForces {
     Vec2 on_b_n[2];              ///< [N] force on b from point k (a gets minus it)
     double torque_on_a_n_m[2];   ///< [N m] torque on a from point k
     double torque_on_b_n_m[2];   ///< [N m] torque on b from point k
-    double normal_dashpot_j = 0.0;  ///< [J] dissipated this step by the pair's points
-    double shear_dashpot_j = 0.0;   ///< [J]
-    double friction_j = 0.0;        ///< [J]
     std::uint32_t count = 0;        ///< points this step (a copy, so the sum per body stays in this array)
 };
 
