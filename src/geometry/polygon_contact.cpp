@@ -57,7 +57,7 @@ struct ClipPoint {
 
 // Keeps the part of segment (in[0], in[1]) where dot(direction, x) <= offset. A point made by
 // the cut takes the feature id "cut", the corner of the reference edge that the plane passes.
-int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double offset, std::uint32_t cut) {
+[[gnu::always_inline]] inline int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double offset, std::uint32_t cut) {
     int n = 0;
     const double d0 = dot(direction, in[0].p) - offset;
     const double d1 = dot(direction, in[1].p) - offset;

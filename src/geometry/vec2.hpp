@@ -29,6 +29,8 @@ constexpr Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
 // sqrt(dot) rather than hypot: lengths here are metres, far from overflow, and hypot costs
 // several times more in the time step.
 inline double length(Vec2 a) { return std::sqrt(dot(a, a)); }
+/// |a.x| + |a.y| >= length(a): an upper bound with no square root.
+inline double norm_bound(Vec2 a) { return std::abs(a.x) + std::abs(a.y); }
 inline Vec2 normalized(Vec2 a) { double l = length(a); return {a.x / l, a.y / l}; }
 
 /// A rotation by angle [rad], stored as its cosine and sine.

@@ -79,10 +79,11 @@ void update_contact_geometry(World& w) {
         // How far any edge's separation can have moved since the last step: both bodies'
         // translations plus their rotations times a lever covering every corner of either
         // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
+        // (Lengths are bounded by |x| + |y|: no square roots, and a bound is all this needs.)
         const double radii = b.bounding_radius_m[pair.a] + b.bounding_radius_m[pair.b];
-        const double lever = length(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
+        const double lever = norm_bound(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
         pair.axis_cache.drift_m +=
-            w.dt_s * (length(b.velocity_m_s[pair.a]) + length(b.velocity_m_s[pair.b]) +
+            w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b]) +
                       (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b])) * lever) +
             1e-9 * radii;
         const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
