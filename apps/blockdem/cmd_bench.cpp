@@ -3,6 +3,7 @@
 // contact-steps/s, time per step split by phase, memory per block, speedup with threads. The
 // stepping loop alone is timed (scene building and --warmup steps are not), and each case is
 // repeated and its fastest run kept: on a shared machine the minimum is the least disturbed.
+// The thread counts of one size run in turn on copies of the same warmed-up world.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -92,43 +93,64 @@ void set_threads(int n) {
 #endif
 }
 
-BenchResult run_case(const std::string& scene, int n, int threads, const BenchOptions& o) {
+// One world per thread count, copied from one warmed-up world, so that every thread count times
+// the same steps from the same state (the results are bit-identical: parallel.hpp).
+struct TimedWorld {
+    World world;
+    BenchResult result;
+};
+
+std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const BenchOptions& o) {
+    set_threads(o.threads.front());
+    World w = build_world(make_scene(scene, n));
+    for (int i = 0; i < o.warmup; ++i) step(w);
     BenchResult r;
     r.scene = scene;
-    r.threads = threads;
-    set_threads(threads);
-    World w = build_world(make_scene(scene, n));
     r.bodies = w.bodies.size() - 1;  // the table is not a block
     r.steps = std::clamp<std::int64_t>(std::llround(o.work / static_cast<double>(r.bodies)), 3, 5000);
-    for (int i = 0; i < o.warmup; ++i) step(w);
-    for (int rep = 0; rep < o.repeats; ++rep) {
-        const double busy = o.idle_wait_s > 0.0 ? wait_for_idle(o.idle_wait_s) : 0.0;
-        w.timings = StepTimings{};
-        w.timings.enabled = true;
-        const std::clock_t cpu_start = std::clock();
-        const auto start = std::chrono::steady_clock::now();
-        for (std::int64_t s = 0; s < r.steps; ++s) step(w);
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        if (wall < r.wall_s) {
-            r.wall_s = wall;
-            r.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
-            r.phases = w.timings;
-            r.busy = busy;
-        }
+    std::vector<TimedWorld> cases;
+    for (int threads : o.threads) {
+        r.threads = threads;
+        cases.push_back({w, r});
     }
-    for (const PairContact& pair : w.contacts) {
+    return cases;
+}
+
+// Times one run of c.result.steps steps; keeps it if it is the fastest so far.
+void time_run(TimedWorld& c, const BenchOptions& o) {
+    BenchResult& r = c.result;
+    World& w = c.world;
+    set_threads(r.threads);
+    const double busy = o.idle_wait_s > 0.0 ? wait_for_idle(o.idle_wait_s) : 0.0;
+    w.timings = StepTimings{};
+    w.timings.enabled = true;
+    const std::clock_t cpu_start = std::clock();
+    const auto start = std::chrono::steady_clock::now();
+    for (std::int64_t s = 0; s < r.steps; ++s) step(w);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (wall < r.wall_s) {
+        r.wall_s = wall;
+        r.cpu_s = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
+        r.phases = w.timings;
+        r.busy = busy;
+    }
+}
+
+void count_contacts(TimedWorld& c) {
+    BenchResult& r = c.result;
+    r.pairs = r.points = 0;
+    for (const PairContact& pair : c.world.contacts) {
         r.pairs += pair.count > 0 ? 1 : 0;
         r.points += pair.count;
     }
-    r.world_bytes = memory_bytes(w);
-    return r;
+    r.world_bytes = memory_bytes(c.world);
 }
 
 std::string phase_split(const StepTimings& t) {
-    const double sum = t.geometry_s + t.broad_phase_s + t.narrow_phase_s + t.forces_s + t.integration_s + t.energy_s;
+    const double sum = t.geometry_s + t.broad_phase_s + t.contacts_s + t.body_sums_s + t.integration_s + t.energy_s;
     auto pct = [&](double x) { return 100.0 * x / std::max(sum, 1e-300); };
     return fmt::format("{:.0f} / {:.0f} / {:.0f} / {:.0f} / {:.0f} / {:.0f}", pct(t.geometry_s), pct(t.broad_phase_s),
-                       pct(t.narrow_phase_s), pct(t.forces_s), pct(t.integration_s), pct(t.energy_s));
+                       pct(t.contacts_s), pct(t.body_sums_s), pct(t.integration_s), pct(t.energy_s));
 }
 
 std::string row(const BenchResult& r, double one_thread_wall_s) {
@@ -144,21 +166,27 @@ std::string row(const BenchResult& r, double one_thread_wall_s) {
 void run_bench(const BenchOptions& o) {
     std::ostringstream table;
     table << "| scene | blocks | threads | steps | ms/step (min) | CPU ms/step | block-steps/s | contact-steps/s | touching pairs | "
-             "contact points | speedup vs 1 thread | geometry / broad / narrow / forces / integration / energy [%] | "
+             "contact points | speedup vs 1 thread | geometry / broad / contacts / body sums / integration / energy [%] | "
              "world bytes/block | CPU busy before |\n"
           << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     fmt::print("{}", table.str());
     for (const std::string& scene : o.scenes)
         for (int n : o.sizes) {
+            std::vector<TimedWorld> cases = prepare_cases(scene, n, o);
+            // The thread counts take turns, repeat by repeat: a slow spell of a shared machine
+            // then slows all of them, not just one, and the speedup compares like with like.
+            for (int rep = 0; rep < o.repeats; ++rep)
+                for (TimedWorld& c : cases) time_run(c, o);
             double one_thread = 0.0;
-            for (int threads : o.threads) {
-                const BenchResult r = run_case(scene, n, threads, o);
-                const std::string line = row(r, threads == 1 ? 0.0 : one_thread);
-                if (threads == 1) one_thread = r.wall_s / static_cast<double>(r.steps);
+            for (TimedWorld& c : cases) {
+                count_contacts(c);
+                const BenchResult& r = c.result;
+                const std::string line = row(r, r.threads == 1 ? 0.0 : one_thread);
+                if (r.threads == 1) one_thread = r.wall_s / static_cast<double>(r.steps);
                 fmt::print("{}\n", line);
-                std::fflush(stdout);
                 table << line << '\n';
             }
+            std::fflush(stdout);
         }
     if (!o.markdown.empty()) std::ofstream(o.markdown) << table.str();
 }

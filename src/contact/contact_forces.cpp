@@ -91,20 +91,19 @@ void index_pairs_by_body(World& w) {
     w.pair_forces.resize(w.contacts.size());
 }
 
-ContactEnergy apply_contact_law(World& w) {
+void prepare_pair_forces(World& w) {
     if (w.pair_forces.size() != w.contacts.size() || w.body_pair_start.size() != w.bodies.size() + 1)
         index_pairs_by_body(w);
+}
+
+ContactEnergy apply_pair_law(World& w, std::size_t p) {
+    return pair_law(w.contacts[p], w.bodies, w.contact, w.dt_s, w.pair_forces[p]);
+}
+
+void sum_body_forces(World& w) {
     Bodies& b = w.bodies;
-    const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
-    // One pass: each pair writes its own slot and returns its ledger share (rule 1 and rule 3).
-    const ContactEnergy energy = deterministic_sum(
-        pairs, [&](std::ptrdiff_t p) { return pair_law(w.contacts[p], b, w.contact, w.dt_s, w.pair_forces[p]); });
-
-    const auto bodies = static_cast<std::ptrdiff_t>(b.size());
-    parallel_for(bodies,
+    parallel_for(static_cast<std::ptrdiff_t>(b.size()),
                  [&](std::ptrdiff_t i) { gather_body(static_cast<std::size_t>(i), w, b.force_n[i], b.torque_n_m[i]); });
-
-    return energy;
 }
 
 double contact_elastic_energy(const World& w) {

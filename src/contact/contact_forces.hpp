@@ -32,9 +32,16 @@ struct ContactEnergy {
     }
 };
 
-/// Sets every body's force and torque: gravity plus the contact forces, and updates each
-/// point's forces and history. Returns the contacts' energy terms.
-ContactEnergy apply_contact_law(World& w);
+/// Sizes the force slots and the per-body lists if the table changed (call before the pass).
+void prepare_pair_forces(World& w);
+
+/// The law at every point of pair p: updates the points' forces and history and writes the
+/// pair's force slot. Touches nothing but pair p's entry and slot, so pairs may run in
+/// parallel. Returns the pair's energy terms.
+ContactEnergy apply_pair_law(World& w, std::size_t p);
+
+/// Sets every body's force and torque: gravity plus its pairs' slots, in table order.
+void sum_body_forces(World& w);
 
 /// Lists each body's pairs in table order (World::body_pair_start/entries) and sizes the force
 /// slots; called whenever the table's pairs change (a broad-phase rebuild).

@@ -62,40 +62,57 @@ void rebuild_candidate_pairs(World& w) {
     ++w.broad_phase_rebuilds;
 }
 
-void update_contact_geometry(World& w) {
+void update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
-    const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
-    parallel_for(pairs, [&](std::ptrdiff_t p) {
-        PairContact& pair = w.contacts[p];
-        // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
-        // collide_polygons would return no points; the pair is updated exactly as it would be.
-        const Aabb& box_a = b.box_m[pair.a];
-        const Aabb& box_b = b.box_m[pair.b];
-        if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
-            if (pair.count > 0 || pair.reference != no_reference) update_pair_geometry(pair, ContactManifold{}, 0.0);
-            pair.axis_cache = AxisCache{};
-            return;
-        }
-        // How far any edge's separation can have moved since the last step: both bodies'
-        // translations plus their rotations times a lever covering every corner of either
-        // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
-        // (Lengths are bounded by |x| + |y|: no square roots, and a bound is all this needs.)
-        const double radii = b.bounding_radius_m[pair.a] + b.bounding_radius_m[pair.b];
-        const double lever = norm_bound(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
-        pair.axis_cache.drift_m +=
-            w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b]) +
-                      (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b])) * lever) +
-            1e-9 * radii;
-        const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
-                            b.vertex_count[pair.a]};
-        const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
-                            b.vertex_count[pair.b]};
-        ContactManifold manifold;
-        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
-        // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
-        const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
-        update_pair_geometry(pair, manifold, match_distance);
+    PairContact& pair = w.contacts[p];
+    // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
+    // collide_polygons would return no points; the pair is updated exactly as it would be.
+    const Aabb& box_a = b.box_m[pair.a];
+    const Aabb& box_b = b.box_m[pair.b];
+    if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
+        if (pair.count > 0 || pair.reference != no_reference) update_pair_geometry(pair, ContactManifold{}, 0.0);
+        pair.axis_cache = AxisCache{};
+        return;
+    }
+    // How far any edge's separation can have moved since the last step: both bodies'
+    // translations plus their rotations times a lever covering every corner of either
+    // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
+    // (Lengths are bounded by |x| + |y|: no square roots, and a bound is all this needs.)
+    const double radii = b.bounding_radius_m[pair.a] + b.bounding_radius_m[pair.b];
+    const double lever = norm_bound(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
+    pair.axis_cache.drift_m +=
+        w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b]) +
+                  (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b])) * lever) +
+        1e-9 * radii;
+    const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
+                        b.vertex_count[pair.a]};
+    const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
+                        b.vertex_count[pair.b]};
+    ContactManifold manifold;
+    collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
+    // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
+    const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
+    update_pair_geometry(pair, manifold, match_distance);
+}
+
+void update_contact_geometry(World& w) {
+    parallel_for(static_cast<std::ptrdiff_t>(w.contacts.size()),
+                 [&](std::ptrdiff_t p) { update_pair_contact(w, static_cast<std::size_t>(p)); });
+}
+
+void update_contacts_and_forces(World& w) {
+    prepare_pair_forces(w);
+    // Pair by pair, the narrow phase and then the law: a pair's data is read once per step
+    // (the table is larger than the caches from about 1e5 blocks). Each pair writes only its
+    // own entry and slot, and the ledger is summed in fixed chunks (parallel.hpp, rules 1, 3).
+    const ContactEnergy contacts = deterministic_sum(static_cast<std::ptrdiff_t>(w.contacts.size()), [&](std::ptrdiff_t p) {
+        update_pair_contact(w, static_cast<std::size_t>(p));
+        return apply_pair_law(w, static_cast<std::size_t>(p));
     });
+    w.energy.normal_dashpot_j += contacts.normal_dashpot_j;
+    w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
+    w.energy.friction_j += contacts.friction_j;
+    w.energy.elastic_j = contacts.elastic_j;
 }
 
 namespace {
@@ -134,14 +151,6 @@ BodyEnergy body_energy(const World& w) {
 }
 
 }  // namespace
-
-void compute_forces(World& w) {
-    const ContactEnergy contacts = apply_contact_law(w);
-    w.energy.normal_dashpot_j += contacts.normal_dashpot_j;
-    w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
-    w.energy.friction_j += contacts.friction_j;
-    w.energy.elastic_j = contacts.elastic_j;
-}
 
 bool update_energy(World& w) {
     const BodyEnergy bodies = body_energy(w);
@@ -210,10 +219,10 @@ void step_begin(World& w) {
     clock.lap(&StepTimings::geometry_s);
     if (broad_phase_is_stale(w)) rebuild_candidate_pairs(w);
     clock.lap(&StepTimings::broad_phase_s);
-    update_contact_geometry(w);
-    clock.lap(&StepTimings::narrow_phase_s);
-    compute_forces(w);
-    clock.lap(&StepTimings::forces_s);
+    update_contacts_and_forces(w);
+    clock.lap(&StepTimings::contacts_s);
+    sum_body_forces(w);
+    clock.lap(&StepTimings::body_sums_s);
     update_velocities(w);
     clock.lap(&StepTimings::integration_s);
     check_stability(w, update_energy(w));

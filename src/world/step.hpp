@@ -2,8 +2,9 @@
 // One time step, written once, in one order (docs/architecture.md):
 //   1. body geometry: corners and edge normals at t;
 //   2. broad phase: candidate pairs, rebuilt only when a body has moved half the margin;
-//   3. narrow phase: contact points with feature ids, matched with last step's (history);
-//   4. forces: gravity, then the contact law, summed in pair order (deterministic);
+//   3. contacts, pair by pair in one pass: the narrow phase (contact points with feature ids,
+//      matched with last step's for their history), then the contact law into the pair's slot;
+//   4. body sums: each body's gravity plus its pairs' slots in table order (deterministic);
 //   5. integration: velocities to t + dt/2; the energy ledger and the stability check at t;
 //      [the state at t is complete here: recorders read it]
 //   6. positions to t + dt (driven bodies exactly), and time advances.
@@ -14,9 +15,14 @@ namespace blockdem {
 void update_body_geometry(World& w);
 bool broad_phase_is_stale(const World& w);
 void rebuild_candidate_pairs(World& w);
+/// The narrow phase for pair p (contact points, history matched); touches only that pair.
+void update_pair_contact(World& w, std::size_t p);
+/// The narrow phase for every pair (no forces): the start-up overlap check uses it.
 void update_contact_geometry(World& w);
-void compute_forces(World& w);
-/// Sets the bodies' energies at t (the contacts' are set by compute_forces); returns false if
+/// Every pair's narrow phase and then its contact law, in one pass (each body's force is then
+/// summed by sum_body_forces); adds the contacts' terms to the energy ledger.
+void update_contacts_and_forces(World& w);
+/// Sets the bodies' energies at t (the contacts' are set by update_contacts_and_forces); returns false if
 /// some body's state is not finite.
 bool update_energy(World& w);
 /// Sets the energies at t = 0 (before the first step).

@@ -66,8 +66,8 @@ struct StepTimings {
     bool enabled = false;
     double geometry_s = 0.0;      ///< [s] body corners and normals
     double broad_phase_s = 0.0;   ///< [s] staleness check and rebuilds
-    double narrow_phase_s = 0.0;  ///< [s] contact points and history matching
-    double forces_s = 0.0;        ///< [s] gravity and the contact law
+    double contacts_s = 0.0;      ///< [s] narrow phase and contact law, pair by pair
+    double body_sums_s = 0.0;     ///< [s] each body's gravity plus its pairs' forces
     double integration_s = 0.0;   ///< [s] velocities and positions
     double energy_s = 0.0;        ///< [s] energy ledger and stability check
 };
