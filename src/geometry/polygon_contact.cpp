@@ -44,17 +44,28 @@ Axis best_axis(const PolygonView& poly, const PolygonView& other) {
     return best;
 }
 
-// The edge of incident whose outward normal points most against the reference normal.
-[[gnu::always_inline]] inline std::uint32_t incident_edge(const PolygonView& incident, Vec2 reference_normal) {
-    std::uint32_t best = 0;
+// The edge of incident whose outward normal points most against the reference normal, and by
+// how much it beats the runner-up (difference of the two dot products; 0 for a tie).
+struct IncidentEdge {
+    std::uint32_t edge = 0;
+    double margin = 0.0;  ///< [-]
+};
+
+IncidentEdge incident_edge(const PolygonView& incident, Vec2 reference_normal) {
+    IncidentEdge best;
     double most_against = std::numeric_limits<double>::infinity();
+    double runner_up = std::numeric_limits<double>::infinity();
     for (std::uint32_t i = 0; i < incident.count; ++i) {
         const double d = dot(incident.normals[i], reference_normal);
         if (d < most_against) {
+            runner_up = most_against;
             most_against = d;
-            best = i;
+            best.edge = i;
+        } else {
+            runner_up = std::min(runner_up, d);
         }
     }
+    best.margin = runner_up - most_against;
     return best;
 }
 
@@ -84,6 +95,7 @@ double reference_tolerance(double best_separation_m) { return 0.02 * std::abs(be
 struct Reference {
     std::uint32_t owner = 0;
     std::uint32_t edge = 0;
+    std::uint32_t incident = no_reference;  ///< the incident edge, when already known
 };
 
 // The full separating-axis test: the reference edge (least penetration, with last step's edge
@@ -145,13 +157,19 @@ std::optional<Reference> cached_reference(const PolygonView& a, const PolygonVie
     if (r.edge >= ref.count) return std::nullopt;
     const double separation = edge_separation(ref, r.edge, inc);
     if (separation > 0.0) return Reference{2, 0};
-    const std::uint32_t i1 = incident_edge(inc, ref.normals[r.edge]);
-    if (make_feature(1u - r.owner, i1) != cache.incident) return std::nullopt;
+    // The incident edge cannot have changed while the bodies have turned, relative to each
+    // other, by less than half its margin (each dot product moves by at most that angle; the
+    // 1e-12 covers the round-off of the turned normals).
+    std::uint32_t i1 = feature_vertex(cache.incident);
+    if (!(2.0 * cache.turn_rad + 1e-12 < cache.incident_margin)) {
+        i1 = incident_edge(inc, ref.normals[r.edge]).edge;
+        if (make_feature(1u - r.owner, i1) != cache.incident) return std::nullopt;
+    }
     // Every other edge separates by at most bound. The full test keeps last step's edge when it
     // is within the tolerance of the best, and the tolerance only grows as the best falls, so
     // meeting it against bound (>= the best, <= 0) is enough.
     const double bound = std::max(edge_separation(inc, i1, ref), cache.others_max_separation_m + cache.drift_m);
-    if (bound <= 0.0 && separation >= bound - reference_tolerance(bound)) return r;
+    if (bound <= 0.0 && separation >= bound - reference_tolerance(bound)) return Reference{r.owner, r.edge, i1};
     return std::nullopt;
 }
 
@@ -191,13 +209,19 @@ bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t 
     const Vec2 v2 = ref.vertices[r2];
     const Vec2 tangent = perp(n);  // along the edge from v1 to v2 (n is the edge turned clockwise)
 
-    const std::uint32_t i1 = incident_edge(inc, n);
-    const std::uint32_t i2 = next_corner(i1, inc.count);
-    if (cache && !cached) {
-        cache->incident = make_feature(inc_owner, i1);
-        cache->others_max_separation_m = largest_other_separation(a, b, make_feature(owner, edge), cache->incident);
-        cache->drift_m = 0.0;
+    std::uint32_t i1 = chosen->incident;
+    if (!cached) {
+        const IncidentEdge incident = incident_edge(inc, n);
+        i1 = incident.edge;
+        if (cache) {
+            cache->incident = make_feature(inc_owner, i1);
+            cache->incident_margin = incident.margin;
+            cache->others_max_separation_m = largest_other_separation(a, b, make_feature(owner, edge), cache->incident);
+            cache->drift_m = 0.0;
+            cache->turn_rad = 0.0;
+        }
     }
+    const std::uint32_t i2 = next_corner(i1, inc.count);
     const ClipPoint segment[2] = {{inc.vertices[i1], make_feature(inc_owner, i1)},
                                   {inc.vertices[i2], make_feature(inc_owner, i2)}};
     ClipPoint once[2];

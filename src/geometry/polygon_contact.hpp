@@ -62,11 +62,15 @@ inline constexpr std::uint32_t no_reference = 0xffffffffu;
 /// incident edge, and how far any separation may have moved since (the caller adds each step's
 /// bound of the two bodies' relative motion to drift_m). With the reference still penetrating
 /// no more than the incident edge and than others_max + drift, the full test would choose the
-/// same reference, so the result is the same as without the cache, bit for bit. A pair that is
-/// apart keeps the edge that separated it and tests that one first.
+/// same reference, so the result is the same as without the cache, bit for bit. Likewise the
+/// incident edge is kept while the bodies have turned (turn_rad, added by the caller) by less
+/// than half the margin by which it beat the other edges. A pair that is apart keeps the edge
+/// that separated it and tests that one first.
 struct AxisCache {
     double others_max_separation_m = INFINITY;  ///< [m]; infinity: nothing cached
     double drift_m = 0.0;                       ///< [m]
+    double incident_margin = 0.0;               ///< [-] dot-product lead of the incident edge then
+    double turn_rad = 0.0;                      ///< [rad] bound on the relative rotation since
     std::uint32_t incident = no_reference;      ///< make_feature(owner, edge) of the incident edge then
     std::uint32_t separating = no_reference;    ///< for a pair apart: the edge that separated it last
 };

@@ -80,10 +80,10 @@ void update_pair_contact(World& w, std::size_t p) {
     // (Lengths are bounded by |x| + |y|: no square roots, and a bound is all this needs.)
     const double radii = b.bounding_radius_m[pair.a] + b.bounding_radius_m[pair.b];
     const double lever = norm_bound(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
-    pair.axis_cache.drift_m +=
-        w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b]) +
-                  (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b])) * lever) +
-        1e-9 * radii;
+    const double turn_rad = w.dt_s * (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b]));
+    pair.axis_cache.drift_m += w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b])) +
+                               turn_rad * lever + 1e-9 * radii;
+    pair.axis_cache.turn_rad += turn_rad;
     const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
                         b.vertex_count[pair.a]};
     const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
