@@ -75,6 +75,10 @@ struct AxisCache {
     std::uint32_t separating = no_reference;    ///< for a pair apart: the edge that separated it last
 };
 
+/// True if the edge that separated a and b last step (cache.separating) still separates them:
+/// collide_polygons would then return no points and change nothing.
+bool separated_by_cached_edge(const PolygonView& a, const PolygonView& b, const AxisCache& cache);
+
 /// Fills manifold with the contact points of a and b. previous_reference: the reference edge
 /// chosen at the last step for this pair (no_reference if none). cache: optional, see AxisCache.
 /// Returns true if they touch.

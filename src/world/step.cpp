@@ -74,6 +74,14 @@ void update_pair_contact(World& w, std::size_t p) {
         pair.axis_cache = AxisCache{};
         return;
     }
+    const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
+                        b.vertex_count[pair.a]};
+    const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
+                        b.vertex_count[pair.b]};
+    // Still apart along the edge that separated the pair last step: the pair (no points, no
+    // reference) is already what collide_polygons would make it. (Bricks laid side by side
+    // stay exactly touching, separation 0, until the load reaches them.)
+    if (pair.count == 0 && separated_by_cached_edge(a, c, pair.axis_cache)) return;
     // How far any edge's separation can have moved since the last step: both bodies'
     // translations plus their rotations times a lever covering every corner of either
     // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
@@ -84,10 +92,6 @@ void update_pair_contact(World& w, std::size_t p) {
     pair.axis_cache.drift_m += w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b])) +
                                turn_rad * lever + 1e-9 * radii;
     pair.axis_cache.turn_rad += turn_rad;
-    const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
-                        b.vertex_count[pair.a]};
-    const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
-                        b.vertex_count[pair.b]};
     ContactManifold manifold;
     collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
     // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".

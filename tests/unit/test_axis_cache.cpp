@@ -161,6 +161,68 @@ TEST(AxisCache, SameContactsAsTheFullTestRandomPolygons) {
     EXPECT_GT(cached, touching / 3);
 }
 
+// Blocks laid exactly touching (separation exactly 0, as generated walls are) count as apart
+// with or without the cache, also right after a contact and while a stale separating edge is
+// kept: the cache must not turn a round-off touch into a contact point.
+TEST(AxisCache, ExactTouchesAreApartWithOrWithoutTheCache) {
+    // Sizes and positions are binary fractions, so that "touching" is exact in floating point.
+    MovingPolygon a(rectangle_vertices(0.5, 0.25, {}, 0.0));
+    MovingPolygon b(rectangle_vertices(0.25, 0.125, {}, 0.0));
+    // Depths of B's bottom face into A's top face [m]: contact, exact touch, gaps, contact...
+    const double d = std::ldexp(1.0, -13), tiny = std::ldexp(1.0, -40);
+    const double press[] = {d, 0.0, 0.0, d, 2 * d, 0.0, -d, 0.0, d, 0.0, tiny, 0.0, -tiny, 0.0, 4 * d, 0.0};
+    AxisCache cache;
+    std::uint32_t ref_cached = no_reference, ref_plain = no_reference;
+    int contacts = 0;
+    for (int round = 0; round < 4; ++round)
+        for (std::size_t s = 0; s < std::size(press); ++s) {
+            const double x = static_cast<double>(s % 5) / 64.0 - static_cast<double>(round) / 32.0;
+            a.place({0.0, 0.0}, 0.0);
+            b.place({x, 0.1875 - press[s]}, 0.0);
+            cache.drift_m += 5e-4;  // more than any step's motion here
+            ContactManifold with_cache, without;
+            collide_polygons(a.view(), b.view(), ref_cached, with_cache, &cache);
+            collide_polygons(a.view(), b.view(), ref_plain, without);
+            ASSERT_TRUE(same(with_cache, without)) << "round " << round << " step " << s;
+            if (press[s] <= 0.0) EXPECT_EQ(without.count, 0u) << "round " << round << " step " << s;
+            contacts += without.count > 0 ? 1 : 0;
+            ref_cached = with_cache.count > 0 ? with_cache.reference : no_reference;
+            ref_plain = without.count > 0 ? without.reference : no_reference;
+        }
+    EXPECT_GE(contacts, 4 * 6);
+}
+
+// Two blocks of a tilted stack touching in exact arithmetic: after round-off one face may
+// read as exactly touching and the other as 1e-16 m inside. The full test then finds the
+// touching face and calls the pair apart; the cache must too.
+TEST(AxisCache, RoundOffTouchesOfTiltedStacksAsTheFullTest) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> angle(-0.6, 0.6), shift(-0.15, 0.15);
+    MovingPolygon a(rectangle_vertices(0.4, 0.2, {}, 0.0));
+    MovingPolygon b(rectangle_vertices(0.2, 0.1, {}, 0.0));
+    int apart = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        const double tilt = angle(rng);
+        const double along = shift(rng);
+        const Rotation r = Rotation::from_angle(tilt);
+        AxisCache cache;
+        std::uint32_t ref_cached = no_reference, ref_plain = no_reference;
+        for (const double press : {1e-4, 5e-5, 0.0, 0.0, 1e-4, 0.0}) {
+            a.place({0.0, 0.0}, tilt);
+            b.place(r.apply(Vec2{along, 0.15 - press}), tilt);
+            cache.drift_m += 1e-4;
+            ContactManifold with_cache, without;
+            collide_polygons(a.view(), b.view(), ref_cached, with_cache, &cache);
+            collide_polygons(a.view(), b.view(), ref_plain, without);
+            ASSERT_TRUE(same(with_cache, without)) << "trial " << trial << " press " << press;
+            apart += without.count == 0 ? 1 : 0;
+            ref_cached = with_cache.count > 0 ? with_cache.reference : no_reference;
+            ref_plain = without.count > 0 ? without.reference : no_reference;
+        }
+    }
+    EXPECT_GT(apart, 1000);  // many round-off touches read as apart by the full test
+}
+
 // Large steps, B tumbling and sliding off A's ends: the reference edge changes often, and a
 // motion bound that were too small would keep a stale one.
 TEST(AxisCache, SameContactsAsTheFullTestTumblingAndSlidingOff) {
