@@ -94,7 +94,8 @@ void set_threads(int n) {
 }
 
 // One world per thread count, copied from one warmed-up world, so that every thread count times
-// the same steps from the same state (the results are bit-identical: parallel.hpp).
+// the same steps from the same state (the results are bit-identical: parallel.hpp). Memory is
+// one world per thread count: measure a single world's peak with a single --threads value.
 struct TimedWorld {
     World world;
     BenchResult result;
@@ -109,9 +110,13 @@ std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const Ben
     r.bodies = w.bodies.size() - 1;  // the table is not a block
     r.steps = std::clamp<std::int64_t>(std::llround(o.work / static_cast<double>(r.bodies)), 3, 5000);
     std::vector<TimedWorld> cases;
-    for (int threads : o.threads) {
-        r.threads = threads;
-        cases.push_back({w, r});
+    for (std::size_t i = 0; i < o.threads.size(); ++i) {
+        r.threads = o.threads[i];
+        // The last case takes the world itself: with one thread count, one world in memory.
+        if (i + 1 < o.threads.size())
+            cases.push_back({w, r});
+        else
+            cases.push_back({std::move(w), r});
     }
     return cases;
 }

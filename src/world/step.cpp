@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "contact/contact_forces.hpp"
+#include "contact/narrow_phase.hpp"
 #include "geometry/polygon.hpp"
 #include "dynamics/central_difference.hpp"
 #include "world/parallel.hpp"
@@ -60,48 +61,6 @@ void rebuild_candidate_pairs(World& w) {
     b.position_at_rebuild_m = b.position_m;
     b.rotation_at_rebuild_rad = b.rotation_rad;
     ++w.broad_phase_rebuilds;
-}
-
-void update_pair_contact(World& w, std::size_t p) {
-    const Bodies& b = w.bodies;
-    PairContact& pair = w.contacts[p];
-    // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
-    // collide_polygons would return no points; the pair is updated exactly as it would be.
-    const Aabb& box_a = b.box_m[pair.a];
-    const Aabb& box_b = b.box_m[pair.b];
-    if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
-        if (pair.count > 0 || pair.reference != no_reference) update_pair_geometry(pair, ContactManifold{}, 0.0);
-        pair.axis_cache = AxisCache{};
-        return;
-    }
-    const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
-                        b.vertex_count[pair.a]};
-    const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
-                        b.vertex_count[pair.b]};
-    // Still apart along the edge that separated the pair last step: the pair (no points, no
-    // reference) is already what collide_polygons would make it. (Bricks laid side by side
-    // stay exactly touching, separation 0, until the load reaches them.)
-    if (pair.count == 0 && separated_by_cached_edge(a, c, pair.axis_cache)) return;
-    // How far any edge's separation can have moved since the last step: both bodies'
-    // translations plus their rotations times a lever covering every corner of either
-    // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
-    // (Lengths are bounded by |x| + |y|: no square roots, and a bound is all this needs.)
-    const double radii = b.bounding_radius_m[pair.a] + b.bounding_radius_m[pair.b];
-    const double lever = norm_bound(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
-    const double turn_rad = w.dt_s * (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b]));
-    pair.axis_cache.drift_m += w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b])) +
-                               turn_rad * lever + 1e-9 * radii;
-    pair.axis_cache.turn_rad += turn_rad;
-    ContactManifold manifold;
-    collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
-    // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
-    const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
-    update_pair_geometry(pair, manifold, match_distance);
-}
-
-void update_contact_geometry(World& w) {
-    parallel_for(static_cast<std::ptrdiff_t>(w.contacts.size()),
-                 [&](std::ptrdiff_t p) { update_pair_contact(w, static_cast<std::size_t>(p)); });
 }
 
 void update_contacts_and_forces(World& w) {

@@ -15,10 +15,6 @@ namespace blockdem {
 void update_body_geometry(World& w);
 bool broad_phase_is_stale(const World& w);
 void rebuild_candidate_pairs(World& w);
-/// The narrow phase for pair p (contact points, history matched); touches only that pair.
-void update_pair_contact(World& w, std::size_t p);
-/// The narrow phase for every pair (no forces): the start-up overlap check uses it.
-void update_contact_geometry(World& w);
 /// Every pair's narrow phase and then its contact law, in one pass (each body's force is then
 /// summed by sum_body_forces); adds the contacts' terms to the energy ledger.
 void update_contacts_and_forces(World& w);

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "contact/narrow_phase.hpp"
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
 #include "geometry/polygon.hpp"
