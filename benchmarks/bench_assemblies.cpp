@@ -25,9 +25,9 @@ void run(benchmark::State& state, World w) {
     state.counters["block-steps/s"] = Counter(steps * blocks, Counter::kIsRate);
     state.counters["contact-steps/s"] = Counter(steps * static_cast<double>(points), Counter::kIsRate);
     const StepTimings& t = w.timings;
-    const double total = t.geometry_s + t.broad_phase_s + t.contacts_s + t.body_sums_s + t.integration_s + t.energy_s;
+    const double total = t.geometry_s + t.broad_phase_s + t.contacts_s + t.bodies_s + t.positions_s;
     state.counters["contacts%"] = 100.0 * t.contacts_s / total;
-    state.counters["sums%"] = 100.0 * t.body_sums_s / total;
+    state.counters["bodies%"] = 100.0 * t.bodies_s / total;
     state.counters["bytes/block"] = static_cast<double>(memory_bytes(w)) / blocks;
 }
 

@@ -50,27 +50,6 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
     return energy;
 }
 
-// Body i's force and torque: gravity, then its pair slots in table order (parallel.hpp, rule 2).
-void gather_body(std::size_t i, const World& w, Vec2& force_n, double& torque_n_m) {
-    const Bodies& b = w.bodies;
-    force_n = {0.0, -w.settings.gravity_m_s2 * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
-    torque_n_m = 0.0;
-    for (std::uint32_t e = w.body_pair_start[i]; e < w.body_pair_start[i + 1]; ++e) {
-        const std::uint32_t p = w.body_pair_entries[e] >> 1;
-        const bool is_b = (w.body_pair_entries[e] & 1u) != 0;
-        const PairForces& f = w.pair_forces[p];
-        for (std::uint32_t k = 0; k < f.count; ++k) {
-            if (is_b) {
-                force_n += f.on_b_n[k];
-                torque_n_m += f.torque_on_b_n_m[k];
-            } else {
-                force_n -= f.on_b_n[k];
-                torque_n_m -= f.torque_on_a_n_m[k];
-            }
-        }
-    }
-}
-
 }  // namespace
 
 void index_pairs_by_body(World& w) {
@@ -100,10 +79,33 @@ ContactEnergy apply_pair_law(World& w, std::size_t p) {
     return pair_law(w.contacts[p], w.bodies, w.contact, w.dt_s, w.pair_forces[p]);
 }
 
-void sum_body_forces(World& w) {
+// Body i's force and torque: gravity, then its pair slots in table order (parallel.hpp, rule 2).
+void sum_body_force(World& w, std::size_t i) {
     Bodies& b = w.bodies;
-    parallel_for(static_cast<std::ptrdiff_t>(b.size()),
-                 [&](std::ptrdiff_t i) { gather_body(static_cast<std::size_t>(i), w, b.force_n[i], b.torque_n_m[i]); });
+    // Summed in locals (the slots could alias the body arrays as far as the compiler knows).
+    Vec2 force_n{0.0, -w.settings.gravity_m_s2 * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
+    double torque_n_m = 0.0;
+    for (std::uint32_t e = w.body_pair_start[i]; e < w.body_pair_start[i + 1]; ++e) {
+        const std::uint32_t p = w.body_pair_entries[e] >> 1;
+        const bool is_b = (w.body_pair_entries[e] & 1u) != 0;
+        const PairForces& f = w.pair_forces[p];
+        for (std::uint32_t k = 0; k < f.count; ++k) {
+            if (is_b) {
+                force_n += f.on_b_n[k];
+                torque_n_m += f.torque_on_b_n_m[k];
+            } else {
+                force_n -= f.on_b_n[k];
+                torque_n_m -= f.torque_on_a_n_m[k];
+            }
+        }
+    }
+    b.force_n[i] = force_n;
+    b.torque_n_m[i] = torque_n_m;
+}
+
+void sum_body_forces(World& w) {
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
+                 [&](std::ptrdiff_t i) { sum_body_force(w, static_cast<std::size_t>(i)); });
 }
 
 double contact_elastic_energy(const World& w) {

@@ -40,7 +40,11 @@ void prepare_pair_forces(World& w);
 /// parallel. Returns the pair's energy terms.
 ContactEnergy apply_pair_law(World& w, std::size_t p);
 
-/// Sets every body's force and torque: gravity plus its pairs' slots, in table order.
+/// Sets body i's force and torque: gravity plus its pairs' slots, in table order. Touches only
+/// body i.
+void sum_body_force(World& w, std::size_t i);
+
+/// sum_body_force for every body.
 void sum_body_forces(World& w);
 
 /// Lists each body's pairs in table order (World::body_pair_start/entries) and sizes the force

@@ -17,29 +17,20 @@ void place_driven_bodies(World& w, double t_s) {
     }
 }
 
-void update_velocities(World& w) {
+void set_driven_velocities(World& w) {
     Bodies& b = w.bodies;
-    const double dt = w.dt_s;
     const MotionSample h = sample(w.table_motion.horizontal, w.time_s);
     const MotionSample v = sample(w.table_motion.vertical, w.time_s);
     for (std::uint32_t i : w.driven_bodies) {
         b.acceleration_m_s2[i] = {h.acceleration_m_s2, v.acceleration_m_s2};
         b.velocity_at_t_m_s[i] = {h.velocity_m_s, v.velocity_m_s};
     }
-    const auto n = static_cast<std::ptrdiff_t>(b.size());
-    parallel_for(n, [&](std::ptrdiff_t i) {
-        if (b.kind[i] != BodyKind::dynamic) return;
-        const Vec2 a = b.inv_mass_1_kg[i] * b.force_n[i];
-        const double alpha = b.inv_inertia_1_kg_m2[i] * b.torque_n_m[i];
-        const Vec2 v_old = b.velocity_m_s[i];
-        const double w_old = b.angular_velocity_rad_s[i];
-        b.acceleration_m_s2[i] = a;
-        b.angular_acceleration_rad_s2[i] = alpha;
-        b.velocity_m_s[i] = v_old + dt * a;
-        b.angular_velocity_rad_s[i] = w_old + dt * alpha;
-        b.velocity_at_t_m_s[i] = 0.5 * (v_old + b.velocity_m_s[i]);
-        b.angular_velocity_at_t_rad_s[i] = 0.5 * (w_old + b.angular_velocity_rad_s[i]);
-    });
+}
+
+void update_velocities(World& w) {
+    set_driven_velocities(w);
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
+                 [&](std::ptrdiff_t i) { update_body_velocity(w.bodies, static_cast<std::size_t>(i), w.dt_s); });
 }
 
 double update_positions(World& w) {

@@ -10,7 +10,27 @@
 
 namespace blockdem {
 
-/// Accelerations at t from the forces, and velocities to t + dt/2 (and their mean at t).
+/// Driven bodies' acceleration and velocity at t, from the table motion.
+void set_driven_velocities(World& w);
+
+/// Body i (if dynamic): acceleration at t from its force, velocity to t + dt/2 and the mean of
+/// the two half steps (the velocity at t). Touches only body i.
+inline void update_body_velocity(Bodies& b, std::size_t i, double dt_s) {
+    if (b.kind[i] != BodyKind::dynamic) return;
+    const Vec2 a = b.inv_mass_1_kg[i] * b.force_n[i];
+    const double alpha = b.inv_inertia_1_kg_m2[i] * b.torque_n_m[i];
+    const Vec2 v_old = b.velocity_m_s[i];
+    const double w_old = b.angular_velocity_rad_s[i];
+    b.acceleration_m_s2[i] = a;
+    b.angular_acceleration_rad_s2[i] = alpha;
+    b.velocity_m_s[i] = v_old + dt_s * a;
+    b.angular_velocity_rad_s[i] = w_old + dt_s * alpha;
+    b.velocity_at_t_m_s[i] = 0.5 * (v_old + b.velocity_m_s[i]);
+    b.angular_velocity_at_t_rad_s[i] = 0.5 * (w_old + b.angular_velocity_rad_s[i]);
+}
+
+/// Accelerations at t from the forces, and velocities to t + dt/2 (and their mean at t), for
+/// every body: set_driven_velocities, then update_body_velocity for each.
 void update_velocities(World& w);
 
 /// Positions to t + dt; returns the work [J] that driven bodies did on the rest in this step.

@@ -4,8 +4,8 @@
 //   2. broad phase: candidate pairs, rebuilt only when a body has moved half the margin;
 //   3. contacts, pair by pair in one pass: the narrow phase (contact points with feature ids,
 //      matched with last step's for their history), then the contact law into the pair's slot;
-//   4. body sums: each body's gravity plus its pairs' slots in table order (deterministic);
-//   5. integration: velocities to t + dt/2; the energy ledger and the stability check at t;
+//   4. bodies, one pass: each body's gravity plus its pairs' slots in table order
+//      (deterministic), its velocity to t + dt/2, its energy at t; then the stability check;
 //      [the state at t is complete here: recorders read it]
 //   6. positions to t + dt (driven bodies exactly), and time advances.
 #include "world/world.hpp"
@@ -16,8 +16,11 @@ void update_body_geometry(World& w);
 bool broad_phase_is_stale(const World& w);
 void rebuild_candidate_pairs(World& w);
 /// Every pair's narrow phase and then its contact law, in one pass (each body's force is then
-/// summed by sum_body_forces); adds the contacts' terms to the energy ledger.
+/// summed by update_bodies); adds the contacts' terms to the energy ledger.
 void update_contacts_and_forces(World& w);
+/// Each body in one pass: its force (gravity plus its pairs' slots), acceleration and velocity
+/// to t + dt/2, and its energy terms at t; returns false if some body's state is not finite.
+bool update_bodies(World& w);
 /// Sets the bodies' energies at t (the contacts' are set by update_contacts_and_forces); returns false if
 /// some body's state is not finite.
 bool update_energy(World& w);

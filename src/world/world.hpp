@@ -67,9 +67,8 @@ struct StepTimings {
     double geometry_s = 0.0;      ///< [s] body corners and normals
     double broad_phase_s = 0.0;   ///< [s] staleness check and rebuilds
     double contacts_s = 0.0;      ///< [s] narrow phase and contact law, pair by pair
-    double body_sums_s = 0.0;     ///< [s] each body's gravity plus its pairs' forces
-    double integration_s = 0.0;   ///< [s] velocities and positions
-    double energy_s = 0.0;        ///< [s] energy ledger and stability check
+    double bodies_s = 0.0;        ///< [s] each body's force sum, velocity and energy; stability check
+    double positions_s = 0.0;     ///< [s] positions to t + dt
 };
 
 struct World {
