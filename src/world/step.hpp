@@ -7,7 +7,7 @@
 //   4. bodies, one pass: each body's gravity plus its pairs' slots in table order
 //      (deterministic), its velocity to t + dt/2, its energy at t; then the stability check;
 //      [the state at t is complete here: recorders read it]
-//   6. positions to t + dt (driven bodies exactly), and time advances.
+//   5. positions to t + dt (driven bodies exactly), and time advances.
 #include "world/world.hpp"
 
 namespace blockdem {
