@@ -25,13 +25,15 @@ struct ContactPoint {
 
 /// All contact points between bodies a < b.
 struct PairContact {
+    // (What a pair that stays apart reads comes first, within one cache line: most candidate
+    // pairs of a large scene are apart or just touching, and the table outgrows the caches.)
     std::uint32_t a = 0;
     std::uint32_t b = 0;
-    Vec2 normal;                              ///< unit, from a to b
     std::uint32_t count = 0;                  ///< active points (0 = apart)
     std::uint32_t reference = no_reference;   ///< reference edge last step (hysteresis)
-    double stiffness_scale = 1.0;             ///< [-] softening of a shrinking overlap (polygon_contact.hpp)
     AxisCache axis_cache;                     ///< lets lasting contacts skip the full separating-axis test
+    Vec2 normal;                              ///< unit, from a to b
+    double stiffness_scale = 1.0;             ///< [-] softening of a shrinking overlap (polygon_contact.hpp)
     ContactPoint points[2];
 };
 

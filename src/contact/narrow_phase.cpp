@@ -18,7 +18,9 @@ void update_pair_contact(World& w, std::size_t p) {
     const Aabb& box_b = b.box_m[pair.b];
     if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
         if (pair.count > 0 || pair.reference != no_reference) update_pair_geometry(pair, ContactManifold{}, 0.0);
-        pair.axis_cache = AxisCache{};
+        // (Reset only if set: a pair apart stays clean and its cache line is not written.)
+        if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
+            pair.axis_cache = AxisCache{};
         return;
     }
     const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],

@@ -67,12 +67,13 @@ inline constexpr std::uint32_t no_reference = 0xffffffffu;
 /// than half the margin by which it beat the other edges. A pair that is apart keeps the edge
 /// that separated it and tests that one first.
 struct AxisCache {
+    // (separating first: a pair that stays apart reads nothing else.)
+    std::uint32_t separating = no_reference;    ///< for a pair apart: the edge that separated it last
+    std::uint32_t incident = no_reference;      ///< make_feature(owner, edge) of the incident edge then
     double others_max_separation_m = INFINITY;  ///< [m]; infinity: nothing cached
     double drift_m = 0.0;                       ///< [m]
     double incident_margin = 0.0;               ///< [-] dot-product lead of the incident edge then
     double turn_rad = 0.0;                      ///< [rad] bound on the relative rotation since
-    std::uint32_t incident = no_reference;      ///< make_feature(owner, edge) of the incident edge then
-    std::uint32_t separating = no_reference;    ///< for a pair apart: the edge that separated it last
 };
 
 /// True if the edge that separated a and b last step (cache.separating) still separates them:
