@@ -102,6 +102,7 @@ struct TimedWorld {
 };
 
 std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const BenchOptions& o) {
+    if (o.threads.empty()) throw std::invalid_argument("--threads: give at least one thread count");
     set_threads(o.threads.front());
     World w = build_world(make_scene(scene, n));
     for (int i = 0; i < o.warmup; ++i) step(w);
@@ -109,6 +110,9 @@ std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const Ben
     r.scene = scene;
     r.bodies = w.bodies.size() - 1;  // the table is not a block
     r.steps = std::clamp<std::int64_t>(std::llround(o.work / static_cast<double>(r.bodies)), 3, 5000);
+    // Measured once, here: a copy's vectors have no spare capacity, so measuring each copy
+    // would report different sizes for the same world.
+    r.world_bytes = memory_bytes(w);
     std::vector<TimedWorld> cases;
     for (std::size_t i = 0; i < o.threads.size(); ++i) {
         r.threads = o.threads[i];
@@ -148,7 +152,6 @@ void count_contacts(TimedWorld& c) {
         r.pairs += pair.count > 0 ? 1 : 0;
         r.points += pair.count;
     }
-    r.world_bytes = memory_bytes(c.world);
 }
 
 std::string phase_split(const StepTimings& t) {
@@ -204,9 +207,13 @@ void add_bench_command(CLI::App& app) {
     cmd->add_option("--scene", o->scenes, "wall (scene S3), slope (jointed rock), rockfill (Voronoi); repeatable")
         ->delimiter(',')
         ->capture_default_str();
-    cmd->add_option("--sizes", o->sizes, "numbers of blocks, e.g. 100,1000,10000")->delimiter(',')->capture_default_str();
+    cmd->add_option("--sizes", o->sizes, "numbers of blocks, e.g. 100,1000,10000")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 100000000))
+        ->capture_default_str();
     cmd->add_option("--threads", o->threads, "OpenMP thread counts, e.g. 1,2 (1 first gives the speedup)")
         ->delimiter(',')
+        ->check(CLI::Range(1, 4096))
         ->capture_default_str();
     cmd->add_option("--work", o->work, "block-steps per timed run (steps = work / blocks, 3 to 5000)")->capture_default_str();
     cmd->add_option("--warmup", o->warmup, "untimed steps before timing (same for every size: same state)")

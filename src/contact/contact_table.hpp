@@ -25,8 +25,9 @@ struct ContactPoint {
 
 /// All contact points between bodies a < b.
 struct PairContact {
-    // (What a pair that stays apart reads comes first, within one cache line: most candidate
-    // pairs of a large scene are apart or just touching, and the table outgrows the caches.)
+    // (What a pair that stays apart reads comes first, in the entry's first 24 bytes: most
+    // candidate pairs of a large scene are apart or just touching, and the table outgrows the
+    // caches, so those pairs should cost one cache line, not three.)
     std::uint32_t a = 0;
     std::uint32_t b = 0;
     std::uint32_t count = 0;                  ///< active points (0 = apart)

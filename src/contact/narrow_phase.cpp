@@ -40,7 +40,10 @@ void update_pair_contact(World& w, std::size_t p) {
     const double turn_rad = w.dt_s * (std::abs(b.angular_velocity_rad_s[pair.a]) + std::abs(b.angular_velocity_rad_s[pair.b]));
     pair.axis_cache.drift_m += w.dt_s * (norm_bound(b.velocity_m_s[pair.a]) + norm_bound(b.velocity_m_s[pair.b])) +
                                turn_rad * lever + 1e-9 * radii;
-    pair.axis_cache.turn_rad += turn_rad;
+    // (Plus the round-off of the angles' own updates, theta += dt omega, which a long run at a
+    // steady spin accumulates with one sign: half an ulp of each angle per step, doubled.)
+    pair.axis_cache.turn_rad +=
+        turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
     collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
     // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".

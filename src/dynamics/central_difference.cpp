@@ -27,12 +27,6 @@ void set_driven_velocities(World& w) {
     }
 }
 
-void update_velocities(World& w) {
-    set_driven_velocities(w);
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { update_body_velocity(w.bodies, static_cast<std::size_t>(i), w.dt_s); });
-}
-
 double update_positions(World& w) {
     Bodies& b = w.bodies;
     const double dt = w.dt_s;

@@ -29,9 +29,6 @@ inline void update_body_velocity(Bodies& b, std::size_t i, double dt_s) {
     b.angular_velocity_at_t_rad_s[i] = 0.5 * (w_old + b.angular_velocity_rad_s[i]);
 }
 
-/// Accelerations at t from the forces, and velocities to t + dt/2 (and their mean at t), for
-/// every body: set_driven_velocities, then update_body_velocity for each.
-void update_velocities(World& w);
 
 /// Positions to t + dt; returns the work [J] that driven bodies did on the rest in this step.
 double update_positions(World& w);

@@ -192,6 +192,7 @@ bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t 
     const bool cached = chosen.has_value();
     std::uint32_t separating = no_reference;
     if (!cached) chosen = choose_reference(a, b, previous_reference, separating);
+    if (chosen && chosen->owner == 2) separating = previous_reference;  // last step's reference now separates
     if (!chosen || chosen->owner == 2) {
         if (cache) {
             *cache = AxisCache{};

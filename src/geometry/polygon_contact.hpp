@@ -65,7 +65,8 @@ inline constexpr std::uint32_t no_reference = 0xffffffffu;
 /// same reference, so the result is the same as without the cache, bit for bit. Likewise the
 /// incident edge is kept while the bodies have turned (turn_rad, added by the caller) by less
 /// than half the margin by which it beat the other edges. A pair that is apart keeps the edge
-/// that separated it and tests that one first.
+/// that separated it (the full test's, or last step's reference edge when that now separates)
+/// and tests that one first.
 struct AxisCache {
     // (separating first: a pair that stays apart reads nothing else.)
     std::uint32_t separating = no_reference;    ///< for a pair apart: the edge that separated it last

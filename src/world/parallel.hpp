@@ -17,7 +17,7 @@
 namespace blockdem {
 
 inline constexpr std::ptrdiff_t parallel_threshold = 2048;
-inline constexpr std::ptrdiff_t min_sum_chunk = 1024;
+inline constexpr std::ptrdiff_t min_sum_chunk = 256;
 inline constexpr std::ptrdiff_t max_sum_chunks = 1024;
 
 /// Calls body(i) for i < n, on all threads when n is large (body must follow rule 1). Small

@@ -26,7 +26,8 @@ bool update_bodies(World& w);
 bool update_energy(World& w);
 /// Sets the energies at t = 0 (before the first step).
 void initialise_energy(World& w);
-/// Throws SimulationError when the state is not finite (state_finite: update_energy's answer)
+/// Throws SimulationError when the state is not finite (state_finite: what update_bodies or
+/// update_energy returned)
 /// or the energy balance has run away.
 void check_stability(const World& w, bool state_finite);
 
