@@ -6,8 +6,8 @@
 //   2. a body's force is the sum of its pairs' slots, visited in contact-table order, so each
 //      body's sum has the same terms in the same order as the serial loop had;
 //   3. a total over items (an energy) is summed in fixed chunks whose partial sums are then
-//      added in chunk order: the chunking depends on the item count only (at least
-//      min_sum_chunk items, at most max_sum_chunks chunks), never on the thread count.
+//      added in chunk order: the chunking depends on the item count only (chunks of
+//      run_length(n) items), never on the thread count.
 // Loops shorter than parallel_threshold run serially: starting threads costs microseconds,
 // more than a small scene's whole step.
 #include <algorithm>
@@ -17,8 +17,16 @@
 namespace blockdem {
 
 inline constexpr std::ptrdiff_t parallel_threshold = 2048;
-inline constexpr std::ptrdiff_t min_sum_chunk = 256;
 inline constexpr std::ptrdiff_t max_sum_chunks = 1024;
+
+/// How many consecutive items a thread takes at a time, and the chunk of a sum (rule 3): a
+/// function of the item count only. At least 16 runs to share out (a few runs of unequal cost
+/// would leave a thread idle), but runs of 1024 items once there are enough: shorter runs cost
+/// more at their edges (shared cache lines, broken prefetch streams) in a table larger than the
+/// caches; and at most max_sum_chunks chunks.
+constexpr std::ptrdiff_t run_length(std::ptrdiff_t n) {
+    return std::max(std::clamp<std::ptrdiff_t>(n / 16, 256, 1024), (n + max_sum_chunks - 1) / max_sum_chunks);
+}
 
 /// Calls body(i) for i < n, on all threads when n is large (body must follow rule 1). Small
 /// loops never enter OpenMP: even a parallel region that runs on one thread costs about a
@@ -29,11 +37,12 @@ void parallel_for(std::ptrdiff_t n, Body body) {
         for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
         return;
     }
-    // Handed out in runs of 1024 as threads free up: items differ in cost (a pair in contact
-    // costs several times one that is apart, and those cluster: the lower rows of a wall), so
-    // equal static halves would leave one thread waiting. Which thread runs an item never
-    // changes what it computes (rule 1).
-#pragma omp parallel for schedule(dynamic, 1024)
+    // Handed out in runs as threads free up: items differ in cost (a pair in contact costs
+    // several times one that is apart, and those cluster: the lower rows of a wall), so equal
+    // static halves would leave one thread waiting. Which thread runs an item never changes
+    // what it computes (rule 1).
+    const std::ptrdiff_t run = run_length(n);
+#pragma omp parallel for schedule(dynamic, run)
     for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
 }
 
@@ -43,7 +52,7 @@ void parallel_for(std::ptrdiff_t n, Body body) {
 template <class Term>
 auto deterministic_sum(std::ptrdiff_t n, Term term) {
     using Value = std::decay_t<decltype(term(std::ptrdiff_t{0}))>;
-    const std::ptrdiff_t chunk = std::max(min_sum_chunk, (n + max_sum_chunks - 1) / max_sum_chunks);
+    const std::ptrdiff_t chunk = run_length(n);
     const std::ptrdiff_t chunks = (n + chunk - 1) / chunk;
     auto sum_range = [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
         Value s{};
