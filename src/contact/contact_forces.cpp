@@ -103,11 +103,6 @@ void sum_body_force(World& w, std::size_t i) {
     b.torque_n_m[i] = torque_n_m;
 }
 
-void sum_body_forces(World& w) {
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { sum_body_force(w, static_cast<std::size_t>(i)); });
-}
-
 double contact_elastic_energy(const World& w) {
     return deterministic_sum(static_cast<std::ptrdiff_t>(w.contacts.size()), [&](std::ptrdiff_t p) {
         const PairContact& pair = w.contacts[p];

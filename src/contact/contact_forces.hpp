@@ -44,9 +44,6 @@ ContactEnergy apply_pair_law(World& w, std::size_t p);
 /// body i.
 void sum_body_force(World& w, std::size_t i);
 
-/// sum_body_force for every body.
-void sum_body_forces(World& w);
-
 /// Lists each body's pairs in table order (World::body_pair_start/entries) and sizes the force
 /// slots; called whenever the table's pairs change (a broad-phase rebuild).
 void index_pairs_by_body(World& w);

@@ -125,12 +125,6 @@ void store_body_energy(World& w, const BodyEnergy& bodies) {
 
 }  // namespace
 
-bool update_energy(World& w) {
-    const BodyEnergy bodies = body_energy(w);
-    store_body_energy(w, bodies);
-    return bodies.non_finite == 0.0;
-}
-
 bool update_bodies(World& w) {
     set_driven_velocities(w);
     const double g = w.settings.gravity_m_s2;
@@ -148,7 +142,7 @@ bool update_bodies(World& w) {
 
 void initialise_energy(World& w) {
     w.energy.elastic_j = contact_elastic_energy(w);
-    update_energy(w);
+    store_body_energy(w, body_energy(w));
     w.energy.initial_j = w.energy.stored_j();
     w.energy.initial_gravitational_j = w.energy.gravitational_j;
     w.energy.peak_scale_j = 0.0;

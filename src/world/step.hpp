@@ -21,14 +21,10 @@ void update_contacts_and_forces(World& w);
 /// Each body in one pass: its force (gravity plus its pairs' slots), acceleration and velocity
 /// to t + dt/2, and its energy terms at t; returns false if some body's state is not finite.
 bool update_bodies(World& w);
-/// Sets the bodies' energies at t (the contacts' are set by update_contacts_and_forces); returns false if
-/// some body's state is not finite.
-bool update_energy(World& w);
 /// Sets the energies at t = 0 (before the first step).
 void initialise_energy(World& w);
-/// Throws SimulationError when the state is not finite (state_finite: what update_bodies or
-/// update_energy returned)
-/// or the energy balance has run away.
+/// Throws SimulationError when the state is not finite (state_finite: what update_bodies
+/// returned) or the energy balance has run away.
 void check_stability(const World& w, bool state_finite);
 
 /// First half of a step: everything at t (contacts, forces, accelerations, velocities to

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -34,6 +35,19 @@ inline std::filesystem::path write_temp_file(const std::string& name, const std:
 }
 
 inline double relative_error(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
+
+/// The largest |a| of a record and its first index, found here rather than with the library's
+/// intensity measures, so that a reader test does not lean on the code it is compared with.
+struct AbsolutePeak {
+    double value = 0.0;
+    std::size_t index = 0;
+};
+inline AbsolutePeak absolute_peak(const std::vector<double>& values) {
+    AbsolutePeak peak;
+    for (std::size_t k = 0; k < values.size(); ++k)
+        if (std::abs(values[k]) > peak.value) peak = {std::abs(values[k]), k};
+    return peak;
+}
 
 }  // namespace blockdem::testing
 

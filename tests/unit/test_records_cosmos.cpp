@@ -20,10 +20,7 @@ TEST(CosmosRecord, RealFileMatchesSidecar) {
     EXPECT_EQ(r.format, RecordFormat::cosmos_v2);
     EXPECT_EQ(r.npts(), j.at("npts").get<std::size_t>());
     EXPECT_DOUBLE_EQ(r.dt_s, j.at("dt_s").get<double>());
-    double pga = 0.0;
-    std::size_t at = 0;
-    for (std::size_t k = 0; k < r.npts(); ++k)
-        if (std::abs(r.acceleration_m_s2[k]) > pga) pga = std::abs(r.acceleration_m_s2[k]), at = k;
+    const auto [pga, at] = testing::absolute_peak(r.acceleration_m_s2);
     EXPECT_LT(testing::relative_error(pga, computed.at("pga_m_s2").get<double>()), 1e-6);
     EXPECT_EQ(at, computed.at("pga_index").get<std::size_t>());
     // The file's own header: Max = -6.852 cm/sec2 at 76.215 sec.
