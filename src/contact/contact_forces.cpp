@@ -33,10 +33,12 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
         const Vec2 relative = (b.velocity_m_s[ib] + cross(b.angular_velocity_rad_s[ib], rb)) -
                               (b.velocity_m_s[ia] + cross(b.angular_velocity_rad_s[ia], ra));
         const ContactKinematics kin{point.overlap_m, dot(relative, n), dot(relative, t)};
-        const ContactForce f = linear_spring_dashpot(params, dash, kin, point.shear_spring_n, dt_s);
+        const ContactForce f = linear_spring_dashpot(params, dash, kin, point.history(), dt_s);
         point.normal_force_n = f.normal_n;
         point.shear_spring_n = f.shear_spring_n;
         point.shear_force_n = f.shear_n;
+        point.normal_dashpot_n = f.normal_dashpot_n;
+        point.shear_dashpot_n = f.shear_dashpot_n;
         point.sliding = f.sliding;
         const Vec2 on_b = f.normal_n * n + f.shear_n * t;
         out.on_b_n[k] = on_b;

@@ -59,7 +59,7 @@ void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, do
         p.overlap_m = manifold.points[i].overlap_m;
         for (std::uint32_t j = 0; j < pair.count; ++j)
             if (!taken[j] && pair.points[j].feature == p.feature) {
-                p.shear_spring_n = pair.points[j].shear_spring_n;
+                p.keep_history_of(pair.points[j]);
                 taken[j] = true;
             }
     }
@@ -72,7 +72,7 @@ void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, do
         if (matched) continue;
         for (std::uint32_t j = 0; j < pair.count; ++j)
             if (!taken[j] && length(pair.points[j].point_m - updated[i].point_m) < match_distance_m) {
-                updated[i].shear_spring_n = pair.points[j].shear_spring_n;
+                updated[i].keep_history_of(pair.points[j]);
                 taken[j] = true;
                 break;
             }

@@ -9,6 +9,7 @@
 
 #include "broad_phase/grid_broad_phase.hpp"
 #include "geometry/polygon_contact.hpp"
+#include "laws/linear_spring_dashpot.hpp"
 
 namespace blockdem {
 
@@ -20,7 +21,17 @@ struct ContactPoint {
     double normal_force_n = 0.0;   ///< [N] on b along the pair normal
     double shear_spring_n = 0.0;   ///< [N] shear spring force on b along the tangent (history)
     double shear_force_n = 0.0;    ///< [N] total shear force on b along the tangent
+    double normal_dashpot_n = 0.0; ///< [N] the normal dashpot's part of normal_force_n (history)
+    double shear_dashpot_n = 0.0;  ///< [N] the shear dashpot's part of shear_force_n (history)
     bool sliding = false;
+
+    /// What the contact law carries over to the next step (laws/linear_spring_dashpot.hpp).
+    ContactHistory history() const { return {shear_spring_n, normal_dashpot_n, shear_dashpot_n}; }
+    void keep_history_of(const ContactPoint& old) {
+        shear_spring_n = old.shear_spring_n;
+        normal_dashpot_n = old.normal_dashpot_n;
+        shear_dashpot_n = old.shear_dashpot_n;
+    }
 };
 
 /// All contact points between bodies a < b.

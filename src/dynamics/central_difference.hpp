@@ -15,12 +15,17 @@ void set_driven_velocities(World& w);
 
 /// Body i (if dynamic): acceleration at t from its force, velocity to t + dt/2 and the mean of
 /// the two half steps (the velocity at t). Touches only body i.
-inline void update_body_velocity(Bodies& b, std::size_t i, double dt_s) {
+/// starting: the stored velocity is the one at t (the given initial state), not at t - dt/2.
+/// The scheme then starts with a half step, v(dt/2) = v(0) + a(0) dt/2, as a leapfrog must:
+/// taking v(0) for v(-dt/2) would start every body a dt/2 late, and the kinetic energy the
+/// run reports at t = 0 would differ from the initial state's by m (a dt)^2 / 8.
+inline void update_body_velocity(Bodies& b, std::size_t i, double dt_s, bool starting = false) {
     if (b.kind[i] != BodyKind::dynamic) return;
     const Vec2 a = b.inv_mass_1_kg[i] * b.force_n[i];
     const double alpha = b.inv_inertia_1_kg_m2[i] * b.torque_n_m[i];
-    const Vec2 v_old = b.velocity_m_s[i];
-    const double w_old = b.angular_velocity_rad_s[i];
+    const double back_s = starting ? 0.5 * dt_s : 0.0;
+    const Vec2 v_old = b.velocity_m_s[i] - back_s * a;
+    const double w_old = b.angular_velocity_rad_s[i] - back_s * alpha;
     b.acceleration_m_s2[i] = a;
     b.angular_acceleration_rad_s2[i] = alpha;
     b.velocity_m_s[i] = v_old + dt_s * a;

@@ -25,13 +25,22 @@ struct ContactKinematics {
     double tangential_speed_m_s = 0.0;///< [m/s] (v_b - v_a) . t at the point
 };
 
-/// The state a contact point carries from step to step, and this step's result.
+/// What a contact point carries from one step to the next (all zero for a new contact).
+struct ContactHistory {
+    double shear_spring_n = 0.0;    ///< [N] shear spring force on b along t
+    double normal_dashpot_n = 0.0;  ///< [N] last step's normal dashpot force on b along n
+    double shear_dashpot_n = 0.0;   ///< [N] last step's shear dashpot force on b along t
+};
+
+/// This step's forces, the history to carry, and this step's dissipation.
 struct ContactForce {
     double normal_n = 0.0;          ///< [N] on b along n (>= 0)
     double shear_spring_n = 0.0;    ///< [N] shear spring force on b along t: the history
     double shear_n = 0.0;           ///< [N] total shear force on b along t
+    double normal_dashpot_n = 0.0;  ///< [N] the normal dashpot's part of normal_n
+    double shear_dashpot_n = 0.0;   ///< [N] the shear dashpot's part of shear_n
     bool sliding = false;
-    // Energy of this step [J], for the ledger.
+    // Energy dissipated over the interval from the last step to this one [J], for the ledger.
     double normal_dashpot_work_j = 0.0;  ///< [J] dissipated by the normal dashpot
     double shear_dashpot_work_j = 0.0;   ///< [J] dissipated by the shear dashpot
     double friction_work_j = 0.0;        ///< [J] dissipated by sliding
@@ -48,36 +57,55 @@ inline DashpotCoefficients dashpot_coefficients(const ContactParameters& p, doub
     return {2.0 * p.h_n * std::sqrt(mass_kg * p.kn_N_m), 2.0 * p.h_s * std::sqrt(mass_kg * p.ks_N_m)};
 }
 
-/// Advances one contact point by dt: previous_shear_spring_n is last step's shear history
-/// (0 for a new contact). Returns the forces on b and this step's dissipation.
+/// The history a point carries to the next step.
+inline ContactHistory history_of(const ContactForce& f) {
+    return {f.shear_spring_n, f.normal_dashpot_n, f.shear_dashpot_n};
+}
+
+/// Advances one contact point by dt from its history (zero for a new contact). Returns the
+/// forces on b and the dissipation over the interval that ends now.
+///
+/// Why the dissipation takes the mean of last step's force and this one's: the speeds here are
+/// those of the interval from the last step to this one (v(t - dt/2)), and over that interval
+/// the central-difference scheme moves the bodies under a force that is, to second order, the
+/// mean of the forces at its two ends (its energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2).
+/// A dissipation taken as F(t) v(t - dt/2) dt instead is off by C v a dt^2 / 2 a step, which over
+/// an impact adds up to a fraction h w dt of the impact's energy: first order in dt, and an
+/// energy balance that drifts with every impact. The same trapezoid makes the shear spring's
+/// energy and the friction exact: the spring's energy changes by minus its trapezoidal work.
 inline ContactForce linear_spring_dashpot(const ContactParameters& p, const DashpotCoefficients& c,
-                                          const ContactKinematics& k, double previous_shear_spring_n, double dt_s) {
+                                          const ContactKinematics& k, const ContactHistory& previous, double dt_s) {
     ContactForce f;
     const double spring_n = p.kn_N_m * k.overlap_m;
     // No tension: the dashpot may only reduce the compressive force to zero.
     f.normal_n = std::max(0.0, spring_n - c.cn_N_s_m * k.normal_speed_m_s);
-    const double normal_dashpot_n = f.normal_n - spring_n;
-    f.normal_dashpot_work_j = -normal_dashpot_n * k.normal_speed_m_s * dt_s;
+    f.normal_dashpot_n = f.normal_n - spring_n;
+    f.normal_dashpot_work_j = -0.5 * (previous.normal_dashpot_n + f.normal_dashpot_n) * k.normal_speed_m_s * dt_s;
 
-    // The slider's dissipation has two parts: if the cap fell below last step's spring force
-    // (the normal force dropped), the excess spring energy is released at once; then the slip
-    // beyond the cap, (|trial| - limit) / ks, happens against the force mu F_n.
+    // Coulomb slider: if the cap fell below last step's spring force (the normal force
+    // dropped), the spring first relaxes to the cap, then takes this step's slip increment.
     const double limit_n = p.mu * f.normal_n;
-    const double previous_n = std::clamp(previous_shear_spring_n, -limit_n, limit_n);
-    const double released_j =
-        0.5 * (previous_shear_spring_n * previous_shear_spring_n - previous_n * previous_n) / p.ks_N_m;
-    const double trial_spring_n = previous_n - p.ks_N_m * k.tangential_speed_m_s * dt_s;
-    if (std::abs(trial_spring_n) > limit_n || released_j > 0.0) {
+    const double last_n = previous.shear_spring_n;
+    const double capped_last_n = std::clamp(last_n, -limit_n, limit_n);
+    const double increment_m = k.tangential_speed_m_s * dt_s;
+    const double trial_spring_n = capped_last_n - p.ks_N_m * increment_m;
+    if (std::abs(trial_spring_n) > limit_n || capped_last_n != last_n) {
         f.sliding = true;
         f.shear_spring_n = std::clamp(trial_spring_n, -limit_n, limit_n);
         f.shear_n = f.shear_spring_n;
-        f.friction_work_j = released_j + limit_n * std::max(0.0, std::abs(trial_spring_n) - limit_n) / p.ks_N_m;
+        // What the spring does not store of its trapezoidal work is lost to friction (>= 0:
+        // the force stays on the side of the slip).
+        const double work_on_bodies_j = 0.5 * (last_n + f.shear_spring_n) * increment_m;
+        const double stored_change_j =
+            p.ks_N_m > 0.0 ? 0.5 * (f.shear_spring_n * f.shear_spring_n - last_n * last_n) / p.ks_N_m : 0.0;
+        f.friction_work_j = -work_on_bodies_j - stored_change_j;
     } else {
         f.shear_spring_n = trial_spring_n;
         const double dashpot_n = -c.cs_N_s_m * k.tangential_speed_m_s;
         f.shear_n = std::clamp(trial_spring_n + dashpot_n, -limit_n, limit_n);
-        f.shear_dashpot_work_j = -(f.shear_n - trial_spring_n) * k.tangential_speed_m_s * dt_s;
+        f.shear_dashpot_n = f.shear_n - trial_spring_n;
     }
+    f.shear_dashpot_work_j = -0.5 * (previous.shear_dashpot_n + f.shear_dashpot_n) * k.tangential_speed_m_s * dt_s;
     return f;
 }
 

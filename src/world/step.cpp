@@ -128,14 +128,16 @@ void store_body_energy(World& w, const BodyEnergy& bodies) {
 bool update_bodies(World& w) {
     set_driven_velocities(w);
     const double g = w.settings.gravity_m_s2;
+    const bool starting = !w.velocities_staggered;
     // Body by body: its force sum, its velocity, its energy terms, while its data is at hand
     // (parallel.hpp, rules 1 to 3; the same arithmetic as the three separate passes).
     const BodyEnergy bodies = deterministic_sum(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t p) {
         const auto i = static_cast<std::size_t>(p);
         sum_body_force(w, i);
-        update_body_velocity(w.bodies, i, w.dt_s);
+        update_body_velocity(w.bodies, i, w.dt_s, starting);
         return body_energy_terms(w.bodies, i, g);
     });
+    w.velocities_staggered = true;
     store_body_energy(w, bodies);
     return bodies.non_finite == 0.0;
 }

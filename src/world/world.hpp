@@ -82,6 +82,9 @@ struct World {
     double time_s = 0.0;                  ///< [s] time of the current state
     std::int64_t step_index = 0;
     double settling_time_s = 0.0;         ///< [s] simulated before t = 0 by the settling stage (0: none)
+    /// false until the first step: the bodies' velocities are then those of the initial state at
+    /// t, and the first step starts the leapfrog with a half step (central_difference.hpp).
+    bool velocities_staggered = false;
 
     GridBroadPhase broad_phase;
     double broad_phase_margin_m = 0.0;    ///< [m] boxes are enlarged by this; rebuild after margin/2 motion
