@@ -1,5 +1,7 @@
 #include "contact/contact_forces.hpp"
 
+#include <algorithm>
+
 #include "laws/linear_spring_dashpot.hpp"
 #include "world/parallel.hpp"
 
@@ -26,6 +28,7 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
     const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
     const Vec2 n = pair.normal;
     const Vec2 t = perp(n);
+    double deepest_m = 0.0;
     for (std::uint32_t k = 0; k < pair.count; ++k) {
         ContactPoint& point = pair.points[k];
         const Vec2 ra = point.point_m - b.position_m[ia];
@@ -48,7 +51,9 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
         energy.shear_dashpot_j += f.shear_dashpot_work_j;
         energy.friction_j += f.friction_work_j;
         energy.elastic_j += contact_elastic_energy(params, point.overlap_m, point.shear_spring_n);
+        deepest_m = std::max(deepest_m, point.overlap_m);
     }
+    energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
     return energy;
 }
 
@@ -78,7 +83,9 @@ void prepare_pair_forces(World& w) {
 }
 
 ContactEnergy apply_pair_law(World& w, std::size_t p) {
-    return pair_law(w.contacts[p], w.bodies, w.contact, w.dt_s, w.pair_forces[p]);
+    ContactEnergy energy = pair_law(w.contacts[p], w.bodies, w.contact, w.dt_s, w.pair_forces[p]);
+    energy.deepest_pair = static_cast<std::uint32_t>(p);
+    return energy;
 }
 
 // Body i's force and torque: gravity, then its pair slots in table order (parallel.hpp, rule 2).

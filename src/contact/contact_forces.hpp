@@ -13,6 +13,8 @@
 // one corner has M = m at that point, but the corner moves with the smaller effective mass
 // m_eff = 1 / (1/m + r_perp^2 / I), so its local damping ratio is h sqrt(m / m_eff) and a
 // one-corner impact rebounds less than e (docs/physics.md, tests/validation/test_restitution).
+#include <cstdint>
+
 #include "world/world.hpp"
 
 namespace blockdem {
@@ -23,11 +25,21 @@ struct ContactEnergy {
     double shear_dashpot_j = 0.0;   ///< [J] dissipated by the shear dashpots this step
     double friction_j = 0.0;        ///< [J] dissipated by sliding this step
     double elastic_j = 0.0;         ///< [J] stored in the springs after this step's update
+    /// The deepest overlap this step, as a fraction of the least width of the thinner body of
+    /// its pair, and that pair (penetration check, world/step.cpp).
+    double deepest_overlap_ratio = 0.0;
+    std::uint32_t deepest_pair = 0;
     ContactEnergy& operator+=(const ContactEnergy& o) {
         normal_dashpot_j += o.normal_dashpot_j;
         shear_dashpot_j += o.shear_dashpot_j;
         friction_j += o.friction_j;
         elastic_j += o.elastic_j;
+        // (Strictly greater: of equal depths the first pair in table order is kept, whatever
+        // the thread count.)
+        if (o.deepest_overlap_ratio > deepest_overlap_ratio) {
+            deepest_overlap_ratio = o.deepest_overlap_ratio;
+            deepest_pair = o.deepest_pair;
+        }
         return *this;
     }
 };

@@ -1,59 +1,242 @@
 #include "dynamics/critical_time_step.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+
+#include "geometry/polygon_contact.hpp"
+#include "laws/linear_spring_dashpot.hpp"
 
 namespace blockdem {
 
 namespace {
 
-// 1/m + r^2/I: the inverse of the smallest effective mass at any corner of body i.
-double corner_inverse_mass(const Bodies& bodies, std::size_t i) {
-    const double r = bodies.bounding_radius_m[i];
-    return bodies.inv_mass_1_kg[i] + r * r * bodies.inv_inertia_1_kg_m2[i];
+// Stands for a fixed body that a free body may land on (infinitely heavy: no entries in g).
+constexpr std::uint32_t fixed_ground = 0xffffffffu;
+
+bool moves(const Bodies& b, std::uint32_t i) { return i != fixed_ground && b.kind[i] == BodyKind::dynamic; }
+
+// Body i's part of g for a unit force along d at lever r (sign -1 on a, +1 on b).
+std::array<double, 3> body_part(const Bodies& b, std::uint32_t i, Vec2 r, Vec2 d, double sign) {
+    if (!moves(b, i)) return {0.0, 0.0, 0.0};
+    const double over_sqrt_m = std::sqrt(b.inv_mass_1_kg[i]);
+    const double over_sqrt_i = std::sqrt(b.inv_inertia_1_kg_m2[i]);
+    return {sign * d.x * over_sqrt_m, sign * d.y * over_sqrt_m, sign * cross(r, d) * over_sqrt_i};
+}
+
+void add_direction(StabilityRows& rows, const Bodies& b, const StiffnessPoint& p, Vec2 d, double k, double c) {
+    const Vec2 ra = moves(b, p.a) ? p.point_m - b.position_m[p.a] : Vec2{};
+    const Vec2 rb = moves(b, p.b) ? p.point_m - b.position_m[p.b] : Vec2{};
+    const std::array<double, 3> ga = body_part(b, p.a, ra, d, -1.0);
+    const std::array<double, 3> gb = body_part(b, p.b, rb, d, 1.0);
+    double l1 = 0.0;
+    for (int j = 0; j < 3; ++j) l1 += std::abs(ga[j]) + std::abs(gb[j]);
+    auto add = [&](std::uint32_t body, const std::array<double, 3>& g) {
+        if (!moves(b, body)) return;
+        for (int j = 0; j < 3; ++j) {
+            rows.stiffness_1_s2[3 * body + j] += k * std::abs(g[j]) * l1;
+            rows.damping_1_s[3 * body + j] += c * std::abs(g[j]) * l1;
+        }
+    };
+    add(p.a, ga);
+    add(p.b, gb);
+}
+
+// The point's stiffness and damping as the law applies them (contact_forces.cpp): the pair's
+// reduced mass shared among its points.
+StiffnessPoint stiffness_point(const World& w, std::uint32_t a, std::uint32_t b, Vec2 point, Vec2 normal,
+                               std::uint32_t points_in_pair, double stiffness_scale) {
+    const Bodies& bodies = w.bodies;
+    ContactParameters params = w.contact.at(bodies.material[a], bodies.material[b]);
+    params.kn_N_m *= stiffness_scale;
+    params.ks_N_m *= stiffness_scale;
+    const double reduced_mass = 1.0 / (bodies.inv_mass_1_kg[a] + bodies.inv_mass_1_kg[b]);
+    const DashpotCoefficients c = dashpot_coefficients(params, reduced_mass / points_in_pair);
+    return {a, b, point, normal, params.kn_N_m, params.ks_N_m, c.cn_N_s_m, c.cs_N_s_m};
+}
+
+// A dynamic body that touches nothing at the start lands, at worst, flat on two of its corners
+// on a fixed body of the stiffest material it can meet.
+void add_landing(const World& w, std::uint32_t i, std::vector<StiffnessPoint>& out) {
+    const Bodies& b = w.bodies;
+    ContactParameters stiffest{};
+    for (std::uint32_t other = 0; other < w.contact.materials.size(); ++other) {
+        const ContactParameters& p = w.contact.at(b.material[i], other);
+        stiffest.kn_N_m = std::max(stiffest.kn_N_m, p.kn_N_m);
+        stiffest.ks_N_m = std::max(stiffest.ks_N_m, p.ks_N_m);
+        stiffest.h_n = std::max(stiffest.h_n, p.h_n);
+        stiffest.h_s = std::max(stiffest.h_s, p.h_s);
+    }
+    const DashpotCoefficients c = dashpot_coefficients(stiffest, 0.5 * b.mass_kg[i]);
+    // Its two lowest corners (the landing face of a falling block).
+    std::vector<Vec2> corners(b.world_vertices_m.begin() + b.vertex_begin[i],
+                              b.world_vertices_m.begin() + b.vertex_begin[i] + b.vertex_count[i]);
+    std::partial_sort(corners.begin(), corners.begin() + 2, corners.end(), [](Vec2 p, Vec2 q) { return p.y < q.y; });
+    for (int k = 0; k < 2; ++k)
+        out.push_back({fixed_ground, i, corners[k], {0.0, 1.0}, stiffest.kn_N_m, stiffest.ks_N_m, c.cn_N_s_m, c.cs_N_s_m});
 }
 
 }  // namespace
 
-CriticalTimeStep critical_time_step(const Bodies& bodies, const MaterialPairs& contact) {
-    // The two largest corner inverse masses among dynamic bodies: a body's partner in a contact
-    // can be any other dynamic body, whose own compliance adds to the contact's frequency.
-    double largest = 0.0, second = 0.0;
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        if (bodies.kind[i] != BodyKind::dynamic) continue;
-        const double inv = corner_inverse_mass(bodies, i);
-        if (inv > largest) {
-            second = largest;
-            largest = inv;
-        } else {
-            second = std::max(second, inv);
-        }
-    }
+CriticalTimeStep stable_time_step(const Bodies& bodies, const std::vector<StiffnessPoint>& points) {
+    StabilityRows rows;
+    rows.reset(bodies.size());
+    for (const StiffnessPoint& p : points) rows.add(bodies, p);
+    return rows.limit(bodies);
+}
+
+void StabilityRows::reset(std::size_t bodies) {
+    stiffness_1_s2.assign(3 * bodies, 0.0);
+    damping_1_s.assign(3 * bodies, 0.0);
+}
+
+void StabilityRows::add(const Bodies& bodies, const StiffnessPoint& p) {
+    add_direction(*this, bodies, p, p.normal, p.kn_N_m, p.cn_N_s_m);
+    add_direction(*this, bodies, p, perp(p.normal), p.ks_N_m, p.cs_N_s_m);
+}
+
+CriticalTimeStep StabilityRows::limit(const Bodies& bodies) const {
     CriticalTimeStep best;
     best.dt_s = std::numeric_limits<double>::infinity();
-    const std::uint32_t materials = static_cast<std::uint32_t>(contact.materials.size());
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        if (bodies.kind[i] != BodyKind::dynamic) continue;
-        double k_max = 0.0;
-        double h_max = 0.0;
-        for (std::uint32_t other = 0; other < materials; ++other) {
-            const ContactParameters& p = contact.at(bodies.material[i], other);
-            k_max = std::max({k_max, p.kn_N_m, p.ks_N_m});
-            h_max = std::max({h_max, p.h_n, p.h_s});
-        }
-        const double own = corner_inverse_mass(bodies, i);
-        const double partner = own == largest ? second : largest;
-        const double inverse_mass = own + partner;
-        const double omega = std::sqrt(k_max * inverse_mass);
-        if (omega <= 0.0) continue;
-        // The dashpot uses at most the body's own mass m, but acts on the pair's effective mass
-        // 1 / inverse_mass, so the mode's damping ratio can reach h sqrt(m inverse_mass).
-        const double h = h_max * std::sqrt(bodies.mass_kg[i] * inverse_mass);
-        const double dt = 2.0 / omega * (std::sqrt(1.0 + h * h) - h);
-        if (dt < best.dt_s) best = {dt, bodies.name[i], omega, h};
+    for (std::size_t row = 0; row < stiffness_1_s2.size(); ++row) {
+        const double k = stiffness_1_s2[row];
+        const double c = damping_1_s[row];
+        if (!(k > 0.0)) continue;
+        // The root of (dt^2/4) k + (dt/2) c = 1.
+        const double dt = (std::sqrt(c * c + 4.0 * k) - c) / k;
+        if (dt < best.dt_s) best = {dt, bodies.name[row / 3], std::sqrt(k), c / (2.0 * std::sqrt(k))};
     }
     return best;
+}
+
+CriticalTimeStep live_time_step(const World& w, StabilityRows& rows) {
+    rows.reset(w.bodies.size());
+    for (const PairContact& pair : w.contacts)
+        for (std::uint32_t k = 0; k < pair.count; ++k)
+            rows.add(w.bodies, stiffness_point(w, pair.a, pair.b, pair.points[k].point_m, pair.normal, pair.count,
+                                               pair.stiffness_scale));
+    return rows.limit(w.bodies);
+}
+
+std::vector<StiffnessPoint> start_stiffness_points(const World& w) {
+    const Bodies& b = w.bodies;
+    std::vector<StiffnessPoint> points;
+    std::vector<std::uint8_t> touches(b.size(), 0);
+    // Bodies laid exactly touching (a block on the table, bricks side by side) are "apart" to
+    // the narrow phase until they press; here a grows by a millionth about its centroid, so
+    // every pair that touches within that shows the contact it will have.
+    constexpr double growth = 1e-6;
+    std::vector<Vec2> grown;
+    for (const PairContact& pair : w.contacts) {
+        const std::uint32_t first = b.vertex_begin[pair.a];
+        const std::uint32_t count = b.vertex_count[pair.a];
+        grown.resize(count);
+        for (std::uint32_t k = 0; k < count; ++k)
+            grown[k] = b.position_m[pair.a] + (1.0 + growth) * (b.world_vertices_m[first + k] - b.position_m[pair.a]);
+        const PolygonView a{grown.data(), &b.world_normals[first], count};
+        const PolygonView other{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
+                                b.vertex_count[pair.b]};
+        ContactManifold manifold;
+        if (!collide_polygons(a, other, no_reference, manifold)) continue;
+        touches[pair.a] = touches[pair.b] = 1;
+        for (std::uint32_t k = 0; k < manifold.count; ++k)
+            points.push_back(
+                stiffness_point(w, pair.a, pair.b, manifold.points[k].point_m, manifold.normal, manifold.count, 1.0));
+    }
+    for (std::uint32_t i = 0; i < b.size(); ++i)
+        if (b.kind[i] == BodyKind::dynamic && !touches[i]) add_landing(w, i, points);
+    return points;
+}
+
+namespace {
+
+// y = (weight_k K~ + weight_c C~) x, K~ and C~ the mass-normalised stiffness and damping
+// matrices of the points (3 entries a body: x, y, rotation).
+void apply_pencil(const Bodies& b, const std::vector<StiffnessPoint>& points, double weight_k, double weight_c,
+                  const std::vector<double>& x, std::vector<double>& y) {
+    std::fill(y.begin(), y.end(), 0.0);
+    for (const StiffnessPoint& p : points) {
+        const Vec2 ra = moves(b, p.a) ? p.point_m - b.position_m[p.a] : Vec2{};
+        const Vec2 rb = moves(b, p.b) ? p.point_m - b.position_m[p.b] : Vec2{};
+        const Vec2 directions[2] = {p.normal, perp(p.normal)};
+        const double weights[2] = {weight_k * p.kn_N_m + weight_c * p.cn_N_s_m, weight_k * p.ks_N_m + weight_c * p.cs_N_s_m};
+        for (int d = 0; d < 2; ++d) {
+            const std::array<double, 3> ga = body_part(b, p.a, ra, directions[d], -1.0);
+            const std::array<double, 3> gb = body_part(b, p.b, rb, directions[d], 1.0);
+            double s = 0.0;
+            for (int j = 0; j < 3; ++j) {
+                if (moves(b, p.a)) s += ga[j] * x[3 * p.a + j];
+                if (moves(b, p.b)) s += gb[j] * x[3 * p.b + j];
+            }
+            s *= weights[d];
+            for (int j = 0; j < 3; ++j) {
+                if (moves(b, p.a)) y[3 * p.a + j] += s * ga[j];
+                if (moves(b, p.b)) y[3 * p.b + j] += s * gb[j];
+            }
+        }
+    }
+}
+
+double dot_product(const std::vector<double>& a, const std::vector<double>& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
+    return sum;
+}
+
+}  // namespace
+
+CriticalTimeStep highest_mode_time_step(const Bodies& b, const std::vector<StiffnessPoint>& points,
+                                        const CriticalTimeStep& bound) {
+    if (!std::isfinite(bound.dt_s)) return bound;
+    const std::size_t n = 3 * b.size();
+    // A start vector with a share of every mode: a fixed pseudo-random pattern (the all-ones
+    // vector would miss the alternating modes of a regular lattice, the highest ones).
+    std::vector<double> x(n), y(n);
+    std::uint64_t state = 0x9e3779b97f4a7c15ull;
+    for (double& v : x) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        v = static_cast<double>(state >> 11) * 0x1.0p-53 - 0.5;
+    }
+    double dt = bound.dt_s;
+    for (int outer = 0; outer < 4; ++outer) {
+        // Power iteration on B(dt) = (dt^2/4) K~ + (dt/2) C~: its top eigenvector.
+        for (int k = 0; k < power_iterations; ++k) {
+            apply_pencil(b, points, 0.25 * dt * dt, 0.5 * dt, x, y);
+            const double norm = std::sqrt(dot_product(y, y));
+            if (!(norm > 0.0)) return bound;
+            for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / norm;
+        }
+        // The dt at which that mode's own (dt^2/4) q_k + (dt/2) q_c reaches 1.
+        apply_pencil(b, points, 1.0, 0.0, x, y);
+        const double qk = dot_product(x, y);
+        apply_pencil(b, points, 0.0, 1.0, x, y);
+        const double qc = dot_product(x, y);
+        if (!(qk > 0.0)) return bound;
+        const double next = (std::sqrt(qc * qc + 4.0 * qk) - qc) / qk;
+        const bool settled = std::abs(next - dt) < 1e-3 * dt;
+        dt = next;
+        if (settled) break;
+    }
+    // The body that moves most in that mode.
+    std::size_t body = 0;
+    double most = -1.0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        const double share = x[3 * i] * x[3 * i] + x[3 * i + 1] * x[3 * i + 1] + x[3 * i + 2] * x[3 * i + 2];
+        if (share > most) most = share, body = i;
+    }
+    apply_pencil(b, points, 1.0, 0.0, x, y);
+    const double omega = std::sqrt(dot_product(x, y));
+    apply_pencil(b, points, 0.0, 1.0, x, y);
+    return {std::max(dt, bound.dt_s), b.name[body], omega, dot_product(x, y) / (2.0 * omega)};
+}
+
+StartTimeStep critical_time_step(const World& w) {
+    const std::vector<StiffnessPoint> points = start_stiffness_points(w);
+    StartTimeStep s;
+    s.proven = stable_time_step(w.bodies, points);
+    s.highest_mode = highest_mode_time_step(w.bodies, points, s.proven);
+    return s;
 }
 
 }  // namespace blockdem

@@ -1,33 +1,83 @@
 #pragma once
-// The stable time step of the explicit central-difference scheme.
+// The stable time step of the explicit central-difference scheme, for bodies that carry several
+// contact points at once, with rotation and dashpots.
 //
-// A damped oscillator of natural circular frequency w and damping ratio h integrated by central
-// differences is stable for dt <= (2 / w) (sqrt(1 + h^2) - h). For a rigid block on a contact
-// point of stiffness k at distance r from its centroid, the stiffest mode couples translation
-// and rotation: w^2 = k (1/m + r^2/I) (the inverse of the effective mass at the corner). We
-// take, for each dynamic body, the largest stiffness and damping ratio of any material pair it
-// can meet and its bounding radius, add the compliance of the most compliant other dynamic body
-// (its possible partner: w^2 = k (1/m_a + r_a^2/I_a + 1/m_b + r_b^2/I_b)), and return the least
-// dt over all bodies. The damping ratio
-// is that of the corner mode, which is higher than h because the dashpot is sized with the
-// body's mass while the corner moves with its smaller effective mass.
+// One damped mode of stiffness k, damping c and mass m, integrated by central differences with
+// the dashpot fed the velocity of the last half step, is stable for
+//     (k/m) dt^2 + 2 (c/m) dt < 4,   i.e.   dt < (2 / w) (sqrt(1 + h^2) - h).
+// For many bodies the same scheme is stable while M - (dt/2) C - (dt^2/4) K stays positive
+// definite (K, C the contacts' stiffness and damping matrices over every body's x, y and
+// rotation; M the masses and inertias). By Weyl's inequality that holds when
+//     (dt^2/4) lambda_max(M^-1/2 K M^-1/2) + (dt/2) lambda_max(M^-1/2 C M^-1/2) < 1,
+// and Gershgorin's theorem bounds each lambda_max by the largest absolute row sum. A contact
+// point between bodies a and b with direction d (its normal or its tangent) adds k g g^T, where
+// g = M^-1/2 (-d, -(r_a x d) on a; d, r_b x d on b) and r is the lever from each centroid: so
+// row p gains k |g_p| |g|_1. Summing over rows of one body gives that body's bound, with every
+// contact it carries, its lever arms and its partners' compliance included. It is a bound, so a
+// dt below it is stable; it is within about 1.3 of the exact limit for a block on two corners.
 //
-// This is the limit for one contact point; a body pressed by several points at once has a
-// higher frequency (about sqrt(number of points) higher), which is why the derived step uses a
-// safety factor (dt_safety, default 0.2) and why the run watches its energy balance.
+// Which contacts: at t = 0, every pair that touches (or overlaps) at the start; a dynamic body
+// that touches nothing is taken as landing flat on two corners of a fixed body. During the run
+// (world/step.cpp) the same bound is evaluated on the live contact table, so a configuration
+// stiffer than the start (a falling block landing on a corner of another, a wall loading up)
+// is noticed and reported.
 #include <string>
+#include <vector>
 
 #include "world/world.hpp"
 
 namespace blockdem {
 
 struct CriticalTimeStep {
-    double dt_s = 0.0;       ///< [s] the limit
+    double dt_s = 0.0;       ///< [s] the limit (infinity: no dynamic body carries a contact)
     std::string body;        ///< the body that sets it
-    double omega_rad_s = 0.0;///< [rad/s] its highest contact frequency
-    double h = 0.0;          ///< [-] the damping ratio used
+    double omega_rad_s = 0.0;///< [rad/s] sqrt of its stiffness row bound: its highest contact frequency
+    double h = 0.0;          ///< [-] its damping row bound over 2 omega: the damping ratio used
 };
 
-CriticalTimeStep critical_time_step(const Bodies& bodies, const MaterialPairs& contact);
+/// One contact point as the stable step sees it.
+struct StiffnessPoint {
+    std::uint32_t a = 0;
+    std::uint32_t b = 0;
+    Vec2 point_m;             ///< [m]
+    Vec2 normal;              ///< unit, from a to b
+    double kn_N_m = 0.0;      ///< [N/m]
+    double ks_N_m = 0.0;      ///< [N/m]
+    double cn_N_s_m = 0.0;    ///< [N s/m]
+    double cs_N_s_m = 0.0;    ///< [N s/m]
+};
+
+/// The Gershgorin bound over the given points (the bodies' positions are those of the points).
+CriticalTimeStep stable_time_step(const Bodies& bodies, const std::vector<StiffnessPoint>& points);
+
+/// The bound over the live contact table, with every point's stiffness and damping as the law
+/// applies them; rows is scratch (no allocation once sized).
+CriticalTimeStep live_time_step(const World& w, StabilityRows& rows);
+
+/// The contact points at the start: every pair of the (built) candidate list that touches, and
+/// a flat landing on a fixed body for a dynamic body that touches nothing.
+std::vector<StiffnessPoint> start_stiffness_points(const World& w);
+
+/// Power iterations per estimate of the highest mode (highest_mode_time_step).
+inline constexpr int power_iterations = 60;
+
+/// The limit of the points' highest mode, estimated by power iteration on
+/// (dt^2/4) K~ + (dt/2) C~ and its Rayleigh quotients: the dt at which M - (dt/2) C - (dt^2/4) K
+/// stops being positive definite along that mode. Never below bound (the Gershgorin bound of
+/// the same points), which it refines: Gershgorin's row sums add every coupling with the same
+/// sign, so for a brick in a wall with six neighbours the bound is 2 to 3 times below the dt at
+/// which the scheme really goes unstable.
+CriticalTimeStep highest_mode_time_step(const Bodies& bodies, const std::vector<StiffnessPoint>& points,
+                                        const CriticalTimeStep& bound);
+
+/// The limits of the start configuration.
+struct StartTimeStep {
+    CriticalTimeStep proven;        ///< Gershgorin bound: every dt below it is stable
+    CriticalTimeStep highest_mode;  ///< the estimated limit of the highest mode (>= proven)
+};
+
+/// The limits at the start (build_world and `check`); the world's geometry and candidate pairs
+/// must be up to date.
+StartTimeStep critical_time_step(const World& w);
 
 }  // namespace blockdem

@@ -69,4 +69,18 @@ std::vector<Vec2> rectangle_vertices(double width_m, double height_m, Vec2 cente
     return out;
 }
 
+double least_width(const std::vector<Vec2>& vertices) {
+    double least = INFINITY;
+    const std::size_t n = vertices.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const Vec2 edge = vertices[(i + 1) % n] - vertices[i];
+        const double edge_length = length(edge);
+        if (!(edge_length > 0.0)) continue;
+        double farthest = 0.0;
+        for (const Vec2 v : vertices) farthest = std::max(farthest, std::abs(cross(edge, v - vertices[i])) / edge_length);
+        least = std::min(least, farthest);
+    }
+    return least;
+}
+
 }  // namespace blockdem

@@ -18,6 +18,11 @@ struct PolygonProperties {
 /// Area, centroid and polar second moment about the centroid; vertices counter-clockwise.
 PolygonProperties polygon_properties(const std::vector<Vec2>& vertices);
 
+/// Least width of a convex polygon [m]: the least distance between two parallel lines that
+/// hold it. (One of the two lines carries an edge, so it is the least over edges of the farthest
+/// corner from that edge's line.)
+double least_width(const std::vector<Vec2>& vertices);
+
 /// Signed area [m^2]: positive when the vertices run counter-clockwise.
 double signed_area(const std::vector<Vec2>& vertices);
 

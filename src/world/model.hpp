@@ -49,13 +49,24 @@ struct MaterialPairs {
     static MaterialPairs uniform(const ContactParameters& p);
 };
 
+/// The fraction of the stable limit a derived dt uses (dt_safety), and the one suggested when a
+/// given dt is above the limit.
+inline constexpr double default_dt_safety = 0.5;
+
+/// Overlaps deeper than this fraction of the thinner body's least width are reported as a
+/// warning: the rigid-body idealisation is then in question.
+inline constexpr double overlap_warning_ratio = 0.01;
+
 struct SimulationSettings {
     double duration_s = 1.0;                 ///< [s]
     std::optional<double> dt_s;              ///< [s]; nullopt: dt_safety * critical time step
-    double dt_safety = 0.2;                  ///< [-] fraction of the critical step used when dt is derived
+    double dt_safety = default_dt_safety;    ///< [-] fraction of the critical step used when dt is derived
     double gravity_m_s2 = 9.81;              ///< [m/s^2], acting in -y
     double output_interval_s = 1e-3;         ///< [s] between rows of history.csv
     double max_energy_error = 0.5;           ///< [-] stop when the balance error exceeds this fraction
+    /// [-] stop when an overlap exceeds this fraction of the least width of the thinner body of
+    /// its pair (a contact too soft for its load: bodies sinking into each other)
+    double max_overlap_ratio = 0.25;
 };
 
 /// A settling stage before the run (world/settling.hpp): the assembly is stepped under gravity,

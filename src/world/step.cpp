@@ -9,6 +9,7 @@
 #include "contact/narrow_phase.hpp"
 #include "geometry/polygon.hpp"
 #include "dynamics/central_difference.hpp"
+#include "dynamics/critical_time_step.hpp"
 #include "world/parallel.hpp"
 #include "world/simulation_error.hpp"
 
@@ -63,6 +64,46 @@ void rebuild_candidate_pairs(World& w) {
     ++w.broad_phase_rebuilds;
 }
 
+namespace {
+
+void watch_overlap(World& w, const ContactEnergy& contacts) {
+    StabilityWatch& watch = w.stability;
+    if (!(contacts.deepest_overlap_ratio > watch.max_overlap_ratio)) return;
+    const PairContact& pair = w.contacts[contacts.deepest_pair];
+    double deepest_m = 0.0;
+    for (std::uint32_t k = 0; k < pair.count; ++k) deepest_m = std::max(deepest_m, pair.points[k].overlap_m);
+    watch.max_overlap_ratio = contacts.deepest_overlap_ratio;
+    watch.max_overlap_time_s = w.time_s;
+    watch.max_overlap_pair_a = pair.a;
+    watch.max_overlap_pair_b = pair.b;
+    watch.max_overlap_m = deepest_m;
+    watch.max_overlap_kn_N_m = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]).kn_N_m;
+}
+
+// Every this many steps the stable limit of the live contacts is evaluated (about 1% of a
+// step's cost spread over them; a contact configuration lasts far longer than 32 steps).
+constexpr std::int64_t live_limit_every = 32;
+
+void watch_live_time_step(World& w) {
+    if (w.step_index % live_limit_every != 0) return;
+    const CriticalTimeStep bound = live_time_step(w, w.stability_rows);
+    StabilityWatch& watch = w.stability;
+    // The start's highest-mode limit, scaled as the bound moved: the bound is 1.3 to 3 times
+    // below the true limit, by a factor that depends on the layout more than on the stiffness.
+    const double limit_s = w.critical_dt_s * bound.dt_s / watch.start_bound_s;
+    if (limit_s < watch.least_limit_s) {
+        watch.least_limit_s = limit_s;
+        watch.least_limit_body = bound.body;
+        watch.least_limit_time_s = w.time_s;
+    }
+    if (w.dt_s > limit_s && watch.first_exceeded_s < 0.0) {
+        watch.first_exceeded_s = w.time_s;
+        watch.exceeded_body = bound.body;
+    }
+}
+
+}  // namespace
+
 void update_contacts_and_forces(World& w) {
     prepare_pair_forces(w);
     // Pair by pair, the narrow phase and then the law: a pair's data is read once per step
@@ -76,6 +117,7 @@ void update_contacts_and_forces(World& w) {
     w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
     w.energy.friction_j += contacts.friction_j;
     w.energy.elastic_j = contacts.elastic_j;
+    watch_overlap(w, contacts);
 }
 
 namespace {
@@ -150,14 +192,39 @@ void initialise_energy(World& w) {
     w.energy.peak_scale_j = 0.0;
 }
 
+namespace {
+
+// ", X s for the contacts of body B at t = T" when the live contacts' limit fell below dt.
+std::string live_limit_note(const World& w) {
+    const StabilityWatch& watch = w.stability;
+    if (watch.first_exceeded_s < 0.0) return "";
+    return fmt::format(", {:.4g} s for the contacts body '{}' had at t = {:.6g} s", watch.least_limit_s,
+                       watch.least_limit_body, watch.least_limit_time_s);
+}
+
+}  // namespace
+
 void check_stability(const World& w, bool state_finite) {
     const Bodies& b = w.bodies;
     if (!state_finite) {
         std::size_t i = 0;
         while (i + 1 < b.size() && state_is_finite(b, i)) ++i;
         throw SimulationError(fmt::format("unstable: the state of body '{}' is not finite at t = {:.6g} s (step {}); "
-                                          "reduce dt (now {:g} s, stable limit {:.4g} s)",
-                                          b.name[i], w.time_s, w.step_index, w.dt_s, w.critical_dt_s));
+                                          "reduce dt (now {:g} s; stable limit {:.4g} s at the start{})",
+                                          b.name[i], w.time_s, w.step_index, w.dt_s, w.critical_dt_s, live_limit_note(w)));
+    }
+    const StabilityWatch& watch = w.stability;
+    if (watch.max_overlap_ratio > w.settings.max_overlap_ratio) {
+        // A linear spring's overlap falls as 1/kn under a steady load and as 1/sqrt(kn) in an
+        // impact; the suggestion takes the impact rule, so it brings the overlap to 1% either way.
+        const double ratio = watch.max_overlap_ratio;
+        throw SimulationError(fmt::format(
+            "penetration: bodies '{}' and '{}' overlap by {:.4g} m at t = {:.6g} s (step {}), {:.3g} of the least width "
+            "of the thinner body; the limit is {:g} (simulation.max_overlap). The contact is too soft for its load: "
+            "raise kn (now {:.4g} N/m) to about {:.3g} N/m for an overlap near 1%",
+            b.name[watch.max_overlap_pair_a], b.name[watch.max_overlap_pair_b], watch.max_overlap_m, w.time_s,
+            w.step_index, ratio, w.settings.max_overlap_ratio, watch.max_overlap_kn_N_m,
+            watch.max_overlap_kn_N_m * (ratio / overlap_warning_ratio) * (ratio / overlap_warning_ratio)));
     }
     const double error = w.energy.balance_error();
     // (The first steps are skipped: every term is still near zero and their ratio means little.)
@@ -167,9 +234,9 @@ void check_stability(const World& w, bool state_finite) {
             if (length(b.velocity_m_s[i]) > length(b.velocity_m_s[fastest])) fastest = i;
         throw SimulationError(fmt::format(
             "unstable: energy balance error {:.3g} (of the largest term, {:.4g} J) exceeds {:g} at t = {:.6g} s "
-            "(step {}); fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s, stable limit {:.4g} s)",
+            "(step {}); fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s; stable limit {:.4g} s at the start{})",
             error, w.energy.scale_j(), w.settings.max_energy_error, w.time_s, w.step_index, b.name[fastest],
-            length(b.velocity_m_s[fastest]), w.dt_s, w.critical_dt_s));
+            length(b.velocity_m_s[fastest]), w.dt_s, w.critical_dt_s, live_limit_note(w)));
     }
 }
 
@@ -204,6 +271,7 @@ void step_begin(World& w) {
     update_contacts_and_forces(w);
     clock.lap(&StepTimings::contacts_s);
     const bool finite = update_bodies(w);
+    watch_live_time_step(w);
     check_stability(w, finite);
     clock.lap(&StepTimings::bodies_s);
 }

@@ -56,6 +56,7 @@ void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
         radius = std::max(radius, length(v - props.centroid_m));
     }
     b.bounding_radius_m.push_back(radius);
+    b.least_width_m.push_back(least_width(def.vertices_m));
     const std::size_t first = b.local_vertices_m.size() - def.vertices_m.size();
     for (std::size_t k = 0; k < def.vertices_m.size(); ++k)
         b.local_normals.push_back(
@@ -85,6 +86,31 @@ void check_no_initial_overlap(World& w) {
     }
 }
 
+// The stable limits of the start configuration, and dt: the given one, checked against the
+// highest mode's limit, or dt_safety times that limit.
+void set_time_step(World& w, const SimulationSettings& settings) {
+    const StartTimeStep start = critical_time_step(w);
+    const CriticalTimeStep& limit = start.highest_mode;
+    w.critical_dt_s = limit.dt_s;
+    w.proven_stable_dt_s = start.proven.dt_s;
+    w.stability.start_bound_s = start.proven.dt_s;
+    w.stability.least_limit_s = limit.dt_s;
+    w.stability.least_limit_body = limit.body;
+    if (settings.dt_s) {
+        w.dt_s = *settings.dt_s;
+        if (w.dt_s > limit.dt_s)
+            throw ModelError(fmt::format("time step dt = {:g} s is above the stable limit {:.4g} s of the highest contact "
+                                         "mode at the start (mostly body '{}': frequency {:.4g} rad/s, damping ratio "
+                                         "{:.3g}); use dt <= {:.3g} s (every dt <= {:.3g} s is proven stable)",
+                                         w.dt_s, limit.dt_s, limit.body, limit.omega_rad_s, limit.h,
+                                         default_dt_safety * limit.dt_s, start.proven.dt_s));
+    } else {
+        if (!std::isfinite(limit.dt_s))
+            throw ModelError("cannot derive the time step: no dynamic body; give simulation.dt");
+        w.dt_s = settings.dt_safety * limit.dt_s;
+    }
+}
+
 }  // namespace
 
 namespace {
@@ -100,7 +126,7 @@ std::size_t memory_bytes(const World& w) {
     const Bodies& b = w.bodies;
     std::size_t total = sizeof(World) + bytes_of(b.name) + bytes_of(b.kind) + bytes_of(b.is_static) + bytes_of(b.record) +
                         bytes_of(b.material) + bytes_of(b.mass_kg) + bytes_of(b.inv_mass_1_kg) + bytes_of(b.inertia_kg_m2) +
-                        bytes_of(b.inv_inertia_1_kg_m2) + bytes_of(b.bounding_radius_m) + bytes_of(b.vertex_begin) +
+                        bytes_of(b.inv_inertia_1_kg_m2) + bytes_of(b.bounding_radius_m) + bytes_of(b.least_width_m) + bytes_of(b.vertex_begin) +
                         bytes_of(b.vertex_count) + bytes_of(b.local_vertices_m) + bytes_of(b.world_vertices_m) + bytes_of(b.local_normals) +
                         bytes_of(b.world_normals) + bytes_of(b.box_m) + bytes_of(b.position_m) + bytes_of(b.rotation_rad) +
                         bytes_of(b.velocity_m_s) + bytes_of(b.angular_velocity_rad_s) + bytes_of(b.acceleration_m_s2) +
@@ -134,25 +160,12 @@ World build_world(const Model& model) {
     for (std::size_t i = 0; i < n; ++i)
         if (w.bodies.kind[i] == BodyKind::driven) w.driven_bodies.push_back(static_cast<std::uint32_t>(i));
 
-    const CriticalTimeStep limit = critical_time_step(w.bodies, w.contact);
-    w.critical_dt_s = limit.dt_s;
-    if (model.settings.dt_s) {
-        w.dt_s = *model.settings.dt_s;
-        if (w.dt_s > limit.dt_s)
-            throw ModelError(fmt::format("time step dt = {:g} s is above the stable limit {:.4g} s (set by body '{}': "
-                                         "contact frequency {:.4g} rad/s, damping ratio {:.3g}); use dt <= {:.3g} s",
-                                         w.dt_s, limit.dt_s, limit.body, limit.omega_rad_s, limit.h, 0.2 * limit.dt_s));
-    } else {
-        if (!std::isfinite(limit.dt_s))
-            throw ModelError("cannot derive the time step: no dynamic body; give simulation.dt");
-        w.dt_s = model.settings.dt_safety * limit.dt_s;
-    }
-
     double smallest = INFINITY;
     for (std::size_t i = 0; i < n; ++i) smallest = std::min(smallest, w.bodies.bounding_radius_m[i]);
     w.broad_phase_margin_m = 0.1 * smallest;
     place_driven_bodies(w, 0.0);
     check_no_initial_overlap(w);
+    set_time_step(w, model.settings);
     initialise_energy(w);
     if (model.settling) {
         const SettlingReport settled = settle(w, *model.settling);

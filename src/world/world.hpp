@@ -9,6 +9,7 @@
 
 #include "broad_phase/grid_broad_phase.hpp"
 #include "contact/contact_table.hpp"
+#include "dynamics/stability_rows.hpp"
 #include "world/energy_ledger.hpp"
 #include "world/model.hpp"
 
@@ -26,6 +27,7 @@ struct Bodies {
     std::vector<double> inertia_kg_m2;          ///< [kg m^2] about the centroid
     std::vector<double> inv_inertia_1_kg_m2;    ///< [1/(kg m^2)], 0 for static bodies
     std::vector<double> bounding_radius_m;      ///< [m] largest centroid-to-corner distance
+    std::vector<double> least_width_m;          ///< [m] least width (overlaps are judged against it)
     std::vector<std::uint32_t> vertex_begin;    ///< first corner in the vertex arrays
     std::vector<std::uint32_t> vertex_count;
     std::vector<Vec2> local_vertices_m;         ///< [m] corners relative to the centroid at rotation 0
@@ -71,6 +73,25 @@ struct StepTimings {
     double positions_s = 0.0;     ///< [s] positions to t + dt
 };
 
+/// What the run learns about its own trustworthiness as it goes (world/step.cpp): the stable
+/// limit of the live contacts, and the deepest overlap.
+struct StabilityWatch {
+    double start_bound_s = 0.0;          ///< [s] Gershgorin bound of the start contacts
+    /// [s] least stable limit seen: the start's highest-mode limit, scaled during the run by how
+    /// far the live contacts' Gershgorin bound fell below the start's (a stiffer configuration)
+    double least_limit_s = 0.0;
+    std::string least_limit_body;        ///< the body that set it
+    double least_limit_time_s = 0.0;     ///< [s] when
+    double first_exceeded_s = -1.0;      ///< [s] first time dt was above the live limit; -1: never
+    std::string exceeded_body;           ///< the body whose contacts were too stiff then
+    double max_overlap_ratio = 0.0;      ///< [-] deepest overlap / least width of the thinner body
+    double max_overlap_time_s = 0.0;     ///< [s]
+    std::uint32_t max_overlap_pair_a = 0;///< body ids of that pair
+    std::uint32_t max_overlap_pair_b = 0;
+    double max_overlap_m = 0.0;          ///< [m]
+    double max_overlap_kn_N_m = 0.0;     ///< [N/m] the pair's normal stiffness then
+};
+
 struct World {
     SimulationSettings settings;
     MaterialPairs contact;
@@ -78,7 +99,8 @@ struct World {
     Bodies bodies;
 
     double dt_s = 0.0;                    ///< [s] the time step in use
-    double critical_dt_s = 0.0;           ///< [s] the stable limit it was checked against
+    double critical_dt_s = 0.0;           ///< [s] the stable limit it was checked against (highest mode at the start)
+    double proven_stable_dt_s = 0.0;      ///< [s] the Gershgorin bound at the start: every dt below is stable
     double time_s = 0.0;                  ///< [s] time of the current state
     std::int64_t step_index = 0;
     double settling_time_s = 0.0;         ///< [s] simulated before t = 0 by the settling stage (0: none)
@@ -103,6 +125,8 @@ struct World {
     std::int64_t broad_phase_rebuilds = 0;
 
     EnergyLedger energy;
+    StabilityWatch stability;
+    StabilityRows stability_rows;         ///< scratch of the live stable-step check
     StepTimings timings;
 
     std::uint32_t body_id(const std::string& name) const;  ///< throws std::out_of_range

@@ -122,7 +122,7 @@ TEST(ScenarioErrors, OverlapAtStartNamesBothBodies) {
 
 TEST(ScenarioErrors, TimeStepAboveStableLimitIsRefusedWithTheLimit) {
     const std::string m = error_of("dt", replace(valid, "dt = 1.0e-4", "dt = 0.01"));
-    expect_contains(m, "time step dt = 0.01 s is above the stable limit 0.001669 s");
+    expect_contains(m, "time step dt = 0.01 s is above the stable limit 0.00243 s");
     expect_contains(m, "body 'block'");
 }
 
