@@ -30,6 +30,10 @@ SimulationSettings read_settings(TableReader t) {
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -y and must be >= 0");
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
     s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
+    s.max_overlap_ratio = t.optional_positive("max_overlap").value_or(s.max_overlap_ratio);
+    if (s.max_overlap_ratio > 1.0)
+        t.fail("max_overlap", fmt::format("is a fraction of the thinner body's least width and must be <= 1, got {}",
+                                          s.max_overlap_ratio));
     t.reject_unknown_keys();
     return s;
 }

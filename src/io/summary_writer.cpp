@@ -4,6 +4,7 @@
 
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
+#include "io/run_checks.hpp"
 
 namespace blockdem {
 namespace {
@@ -63,6 +64,8 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
     nlohmann::json bodies = nlohmann::json::array();
     for (std::size_t i = 0; i < w.bodies.size(); ++i) bodies.push_back(body_summary(w, monitor.responses()[i], i));
     s["bodies"] = bodies;
+    s["checks"] = run_checks(w);
+    s["warnings"] = run_warnings(w);
     nlohmann::json units;
     for (const auto& [suffix, unit] : history_column_units()) units[std::string("<body>.") + suffix] = unit;
     units["t"] = "s";
