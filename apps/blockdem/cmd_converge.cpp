@@ -87,7 +87,7 @@ void print_study(const ConvergenceStudy& study, const ConvergenceTolerance& tol,
         const BodyConvergence& b = *order[i];
         fmt::print("\n{}: {}{}\n", b.name, to_string(b.verdict),
                    b.verdict == Verdict::converged && !b.base_within_tolerance ? " at dt/4 (the base dt's answer is outside the tolerance)" : "");
-        print_dt_table(b);
+        if (!b.dt.empty()) print_dt_table(b);
         if (!b.ensemble.empty()) print_ensemble(b, members);
         if (!b.stiffness.empty()) print_stiffness(b);
         for (const std::string& reason : b.reasons) fmt::print("  - {}\n", reason);
