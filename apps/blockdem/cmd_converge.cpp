@@ -54,7 +54,8 @@ void print_ensemble(const BodyConvergence& b, std::size_t members) {
             fmt::print("    {:<22} seen: {}{}\n", label_of(s.quantity), fmt::join(s.distinct, ", "), s.chaotic ? "  CHAOTIC" : "");
         } else if (s.mean) {
             fmt::print("    {:<22} mean {:.4g}, min {:.4g}, max {:.4g}, spread {}{}\n", label_of(s.quantity), *s.mean, *s.min,
-                       *s.max, change_text(s.relative_spread), s.chaotic ? "  CHAOTIC" : s.sensitive ? "  sensitive" : "");
+                       *s.max, change_text(s.relative_spread),
+                       !s.judged ? "  (not judged)" : s.chaotic ? "  CHAOTIC" : s.sensitive ? "  sensitive" : "");
         }
     }
 }

@@ -148,7 +148,10 @@ EnsembleSpread spread_continuous(const QuantityDef& q, const std::vector<const B
     std::vector<double> v;
     for (const BodyOutcome* b : members)
         if (const auto x = value_of(*b, q.name)) v.push_back(*x);
-    if (v.empty()) return s;
+    if (v.empty()) {
+        s.judged = false;
+        return s;
+    }
     const auto [lo, hi] = min_max(v);
     double sum = 0.0;
     for (double x : v) sum += x;
@@ -161,8 +164,8 @@ EnsembleSpread spread_continuous(const QuantityDef& q, const std::vector<const B
         if (const auto x = value_of(*b, q.name)) over_dt.push_back(*x);
     const double dt_range = over_dt.empty() ? 0.0 : min_max(over_dt).second - min_max(over_dt).first;
     if (dt_range > 0.0) s.dt_spread_ratio = (hi - lo) / dt_range;
-    const bool judged = judged_over(q, members) && v.size() >= 2;
-    s.sensitive = judged && *s.relative_spread > tol.rtol;
+    s.judged = judged_over(q, members) && v.size() >= 2;
+    s.sensitive = s.judged && *s.relative_spread > tol.rtol;
     s.chaotic = s.sensitive && (dt_range == 0.0 || hi - lo >= tol.chaos_ratio * dt_range);
     return s;
 }
@@ -259,7 +262,7 @@ nlohmann::json to_json(const QuantityComparison& q) {
 }
 
 nlohmann::json to_json(const EnsembleSpread& s) {
-    nlohmann::json j{{"quantity", s.quantity}, {"sensitive", s.sensitive}, {"chaotic", s.chaotic}};
+    nlohmann::json j{{"quantity", s.quantity}, {"judged", s.judged}, {"sensitive", s.sensitive}, {"chaotic", s.chaotic}};
     if (s.discrete) {
         j["values_seen"] = s.distinct;
         return j;

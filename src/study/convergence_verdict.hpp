@@ -79,6 +79,7 @@ struct EnsembleSpread {
     std::optional<double> relative_spread; ///< (max - min) / max(|min|, |max|, floor)
     std::optional<double> dt_spread_ratio; ///< (max - min) / spread over dt, dt/2, dt/4 (inf when that is 0)
     std::vector<std::string> distinct;     ///< discrete quantities: the values seen
+    bool judged = true;                    ///< false: reported only (a body that overturned)
     bool sensitive = false;                ///< spread beyond the tolerance, or more than one value
     bool chaotic = false;                  ///< sensitive, and as wide as the dt spread (chaos_ratio)
 };

@@ -77,8 +77,12 @@ def _ensemble_table(body, members):
         else:
             cells = "".join(f"<td class='num'>{_value(s.get(k))}</td>" for k in ("mean", "min", "max"))
             cells += f"<td class='num'>{_percent(s.get('relative_spread'))}</td>"
-        state = "<td class='yes'>chaotic</td>" if s.get("chaotic") else ("<td class='yes'>sensitive</td>" if s.get("sensitive")
-                                                                         else "<td class='no'>ok</td>")
+        if not s.get("judged", True):
+            state = "<td class='note'>not judged</td>"
+        elif s.get("chaotic"):
+            state = "<td class='yes'>chaotic</td>"
+        else:
+            state = "<td class='yes'>sensitive</td>" if s.get("sensitive") else "<td class='no'>ok</td>"
         rows.append(f"<tr><td>{LABELS.get(s['quantity'], s['quantity'])}</td>{cells}{state}</tr>")
     fraction = body.get("ensemble_fraction_overturned")
     note = f"<p>Overturned in {100.0 * fraction:.0f}% of the ensemble.</p>" if fraction is not None else ""
@@ -111,8 +115,9 @@ def _headline(data, entry):
              f"{floors.get('peak_slip_m', 0):g} m (slip), {floors.get('overturning_time_s', 0):g} s (overturning time). "
              f"After a body overturns, its peak rotation and slip describe the fall and are not judged.</p>"]
     if data.get("stiffness_sensitive") is not None:
-        word = "depends on" if data["stiffness_sensitive"] else "does not depend on"
-        parts.append(f"<p>Contact stiffness (kn and ks × 0.5 and × 2): the answer <b>{word}</b> the stiffness within the tolerance.</p>")
+        word = ("<b>depends on</b> the stiffness beyond" if data["stiffness_sensitive"]
+                else "does not depend on the stiffness within")
+        parts.append(f"<p>Contact stiffness (kn and ks × 0.5 and × 2, at dt/2): the answer {word} the tolerance.</p>")
     for failed in data.get("failed_runs", []):
         parts.append(f"<p class='failed'>Run failed: {html.escape(failed)}</p>")
     return "\n".join(parts)
