@@ -158,6 +158,10 @@ TEST(Convergence, MixedOverturningInTheEnsembleIsChaoticWithItsFraction) {
     const auto r = judge({{0.20, 0.0}, {0.21, 0.0}, {0.21, 0.0}}, {{1.6, 0.0, true, 7.0}, {0.2, 0.0}, {1.6, 0.0, true, 7.2}});
     EXPECT_EQ(r.verdict, Verdict::chaotic);
     EXPECT_DOUBLE_EQ(*r.bodies[0].fraction_overturned, 0.5);
+    // The peak rotation of members that fell is no response: reported, not judged.
+    EXPECT_EQ(r.bodies[0].ensemble.at(0).quantity, "peak_rotation_rad");
+    EXPECT_FALSE(r.bodies[0].ensemble.at(0).judged);
+    EXPECT_FALSE(r.bodies[0].ensemble.at(0).chaotic);
 }
 
 TEST(Convergence, StiffnessSensitivityIsReportedApart) {
