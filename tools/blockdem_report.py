@@ -10,6 +10,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
+from blockdem_view.convergence_section import study_base_folder  # noqa: E402
 from blockdem_view.report import write_report  # noqa: E402
 from blockdem_view.run_folder import RunFolder, RunFolderError  # noqa: E402
 
@@ -23,7 +24,7 @@ def main(argv=None):
     args = parser.parse_args(argv)
     formats = ["png"] + [f for f in args.formats.split(",") if f and f != "png"]
     try:
-        path = write_report(RunFolder(args.folder), args.blockdem, formats, not args.no_animation)
+        path = write_report(RunFolder(study_base_folder(args.folder)), args.blockdem, formats, not args.no_animation)
     except RunFolderError as e:
         print(f"blockdem_report: {e}", file=sys.stderr)
         return 2

@@ -13,6 +13,7 @@ void add_motion_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
+void add_converge_command(CLI::App& app);
 
 /// Writes out_dir/report.html and out_dir/figures/ through tools/blockdem_report.py (cmd_report.cpp).
 void write_report(const std::string& out_dir, bool animation_file = true);

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
     blockdem::cli::add_report_command(app);
     blockdem::cli::add_bench_command(app);
     blockdem::cli::add_sweep_command(app);
+    blockdem::cli::add_converge_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -7,6 +7,7 @@ import math
 import subprocess
 from pathlib import Path
 
+from .convergence_section import convergence_section
 from .figures import dynamic_bodies
 from .make_figures import make_run_figures
 from .report_data import animation_data, plot_data
@@ -166,6 +167,7 @@ def build_report(run, blockdem=None, written=None):
 <a href='#outcome'>Outcome</a> · <a href='#animation'>Animation</a> · <a href='#plots'>Plots</a> ·
 <a href='#figures'>Figures</a> · <a href='#derived'>Derived parameters</a> · <a href='#scenario'>Scenario</a></p>
 {outcome_section(run)}
+{convergence_section(run)}
 {animation_section()}
 <h2 id='plots'>Time histories</h2>
 <p class='note'>Drag to zoom, double-click to reset, use the range selector under each plot for long records.</p>
