@@ -25,13 +25,6 @@ double non_negative(TableReader& keys, const std::string& key, double fallback) 
     return v;
 }
 
-int whole_number(TableReader& keys, const std::string& key, int fallback, int min, int max) {
-    const auto v = keys.optional_number(key);
-    if (!v) return fallback;
-    if (std::floor(*v) != *v || *v < min || *v > max) keys.fail(key, fmt::format("must be a whole number from {} to {}", min, max));
-    return static_cast<int>(*v);
-}
-
 // target_pga with target_pga_unit, in m/s^2.
 std::optional<double> target_pga(TableReader& keys) {
     const auto value = keys.optional_positive("target_pga");
@@ -44,7 +37,7 @@ BaselineCorrection baseline(TableReader& keys, const std::string& fallback) {
     BaselineCorrection c;
     c.method = parse_baseline_method(keys.choice("baseline", baseline_choices, fallback));
     const int lowest = c.method == BaselineMethod::displacement_polynomial ? 3 : 2;
-    c.order = whole_number(keys, "baseline_order", std::max(3, lowest), lowest, 6);
+    c.order = static_cast<int>(keys.whole_number_or("baseline_order", std::max(3, lowest), lowest, 6));
     return c;
 }
 
@@ -56,6 +49,9 @@ RecordReadOptions read_options(TableReader& keys) {
         o.units = *units;
     }
     o.dt_s = keys.optional_positive("dt").value_or(0.0);
+    if (o.dt_s != 0.0 && !(o.dt_s >= min_record_dt_s && o.dt_s <= max_record_dt_s))
+        keys.fail("dt", fmt::format("the sample interval {:g} s is outside the accepted {:g} s to {:g} s", o.dt_s, min_record_dt_s,
+                                    max_record_dt_s));
     o.component = keys.optional_string("component").value_or("");
     return o;
 }
@@ -90,6 +86,11 @@ AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::
     keys.reject_unknown_keys();
     if (!std::filesystem::is_regular_file(file)) keys.fail("file", fmt::format("no record file '{}'", file.string()));
     const GroundMotionRecord record = read_ground_motion_record(file, options);
+    try {
+        padding_samples(record.npts(), record.dt_s, steps.pad_s);
+    } catch (const std::invalid_argument& e) {
+        keys.fail("pad", e.what());
+    }
     std::vector<double> a;
     try {
         a = process_record(record.acceleration_m_s2, record.dt_s, steps);
@@ -104,7 +105,7 @@ AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::
 
 AccelerationSeries read_synthetic_motion(TableReader& keys) {
     SyntheticMotionParameters p;
-    p.seed = static_cast<std::uint64_t>(whole_number(keys, "seed", 1, 0, 2'000'000'000));
+    p.seed = static_cast<std::uint64_t>(keys.whole_number_or("seed", 1, 0, 2'000'000'000));
     p.duration_s = keys.optional_positive("duration").value_or(p.duration_s);
     p.dt_s = keys.optional_positive("dt").value_or(p.dt_s);
     const auto pga = target_pga(keys);
@@ -129,6 +130,11 @@ AccelerationSeries read_synthetic_motion(TableReader& keys) {
         a = synthetic_ground_motion(p);
     } catch (const std::invalid_argument& e) {
         keys.fail("", e.what());
+    }
+    try {
+        padding_samples(a.size(), p.dt_s, pad);
+    } catch (const std::invalid_argument& e) {
+        keys.fail("pad", e.what());
     }
     // Pad first so that the correction brings the table to rest at the very end of the series;
     // the correction changes the peak slightly: scale back to the asked-for PGA.
