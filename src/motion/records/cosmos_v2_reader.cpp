@@ -148,10 +148,12 @@ Block read_block(const RecordText& text, std::size_t first, const RecordReadOpti
     const std::string data_type = to_lower(trim(text.lines[first].substr(0, std::min<std::size_t>(25, text.lines[first].size()))));
     if (data_type.find("acceleration") == std::string::npos || data_type.find("counts") != std::string::npos)
         fail_at(text, first, fmt::format("'{}' is not a corrected or uncorrected acceleration (V1/V2) block", data_type));
-    const std::size_t text_lines = parse_count(text, first, *title_count, "the number of text lines", text.lines.size() - first);
-    std::size_t line = first + text_lines;
+    const std::size_t text_lines = parse_count(text, first, *title_count, "the number of text lines", max_record_lines);
     if (text_lines < 5) fail_at(text, first, fmt::format("a COSMOS text header has at least 5 lines; this one states {}", text_lines));
-    if (line >= text.lines.size()) fail_at(text, text.lines.size() - 1, "the file ends inside the text header");
+    if (text_lines >= text.lines.size() - first)
+        fail_at(text, text.lines.size() - 1,
+                fmt::format("the file ends inside the text header of {} lines announced at line {}", text_lines, first + 1));
+    std::size_t line = first + text_lines;
     const auto ints = read_header_values(text, line, "Integer");
     const auto reals = read_header_values(text, line, "Real");
     // "^\s*(\d+)\s+Comment line"
@@ -161,7 +163,11 @@ Block read_block(const RecordText& text, std::size_t first, const RecordReadOpti
     if (!comment_count || !c.some_blanks() || !c.literal("Comment line"))
         fail_at(text, std::min(line, text.lines.size() - 1), "expected 'NC Comment line(s) follow'");
     const std::size_t comments_begin = line + 1;
-    line = comments_begin + parse_count(text, line, *comment_count, "the number of comment lines", text.lines.size() - comments_begin);
+    const std::size_t comment_lines = parse_count(text, line, *comment_count, "the number of comment lines", max_record_lines);
+    if (comment_lines >= text.lines.size() - comments_begin)
+        fail_at(text, line, fmt::format("{} comment lines are announced but the file ends {} lines later", comment_lines,
+                                        text.lines.size() - comments_begin));
+    line = comments_begin + comment_lines;
     const DataHeader data = read_data_header(text, line);
     if (data.quantity != "acceleration")
         fail_at(text, line, fmt::format("this block holds {}, not acceleration", data.quantity));

@@ -86,7 +86,7 @@ void check_count_fits(const RecordText& text, std::size_t line, std::size_t coun
                       std::string_view what) {
     if (count > capacity)
         fail_at(text, line,
-                fmt::format("{} = {} values are announced, but the rest of the file ({} lines) can hold at most {}", what, count,
+                fmt::format("{} = {} values are announced, but the {} line(s) after it can hold at most {}", what, count,
                             text.lines.size() > line ? text.lines.size() - line - 1 : 0, capacity));
 }
 
