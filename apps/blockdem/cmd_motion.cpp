@@ -131,7 +131,7 @@ void plot(const MotionOptions& o, const fs::path& out_dir) {
 }
 
 // Refused before the record is read: a period outside the range would never finish.
-void check_periods(const MotionOptions& o) {
+void check_options(const MotionOptions& o) {
     for (double period : o.periods_s) {
         try {
             checked_spectrum_period(period);
@@ -139,6 +139,12 @@ void check_periods(const MotionOptions& o) {
             throw InputError({"", "--periods", 0, 0}, e.what());
         }
     }
+    if (o.dt_s != 0.0 && !(o.dt_s >= min_record_dt_s && o.dt_s <= max_record_dt_s))
+        throw InputError({"", "--dt", 0, 0}, fmt::format("{:g} s is outside the accepted {:g} s to {:g} s", o.dt_s,
+                                                        min_record_dt_s, max_record_dt_s));
+    const int lowest = o.baseline == "displacement_polynomial" ? 3 : 2;
+    if (o.baseline_order < lowest || o.baseline_order > 6)
+        throw InputError({"", "--baseline-order", 0, 0}, fmt::format("{} is outside {} to 6", o.baseline_order, lowest));
 }
 
 RecordReadOptions read_options(const MotionOptions& o) {
@@ -155,7 +161,7 @@ RecordReadOptions read_options(const MotionOptions& o) {
 }
 
 void run_motion(const MotionOptions& o) {
-    check_periods(o);
+    check_options(o);
     const GroundMotionRecord record = read_ground_motion_record(o.file, read_options(o));
     const IntensityMeasures measures = intensity_measures(record.acceleration_m_s2, record.dt_s);
     print_facts(record, measures);
