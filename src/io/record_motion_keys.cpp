@@ -70,6 +70,15 @@ RecordProcessing processing(TableReader& keys) {
     return p;
 }
 
+// A delay so long that delay + k dt no longer resolves dt (1e19 s) would make equal sample times.
+void check_delay(TableReader& keys, double delay_s, double dt_s) {
+    constexpr double max_delay_samples = 1e12;  // t keeps dt to 1e-4 of itself
+    if (delay_s > max_delay_samples * dt_s)
+        keys.fail("delay", fmt::format("a delay of {:g} s is more than {:g} samples of {:g} s: the sample times would lose dt "
+                                       "to rounding",
+                                       delay_s, max_delay_samples, dt_s));
+}
+
 AccelerationSeries to_series(const std::vector<double>& a, double dt, double delay, std::string source) {
     std::vector<double> t(a.size());
     for (std::size_t k = 0; k < a.size(); ++k) t[k] = delay + static_cast<double>(k) * dt;
@@ -100,6 +109,7 @@ AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::
     const std::string source = fmt::format("{} ({}{}, baseline {})", file.string(), record_format_name(record.format),
                                            record.component.empty() ? "" : ", component " + record.component,
                                            baseline_method_name(steps.baseline.method));
+    check_delay(keys, delay, record.dt_s);
     return to_series(a, record.dt_s, delay, source);
 }
 
@@ -142,6 +152,7 @@ AccelerationSeries read_synthetic_motion(TableReader& keys) {
     a = correct_baseline(a, p.dt_s, correction);
     const double factor = scale_factor_for_pga(a, p.target_pga_m_s2);
     for (double& x : a) x *= factor;
+    check_delay(keys, delay, p.dt_s);
     return to_series(a, p.dt_s, delay, fmt::format("synthetic Kanai-Tajimi motion, seed {}, PGA {:g} m/s^2", p.seed, p.target_pga_m_s2));
 }
 

@@ -101,6 +101,8 @@ TEST(InputRanges, RecordWindowAndPaddingAreCheckedBeforeAnyCast) {
                  "1e+300 s of padding at dt = 0.01 s adds 1e+302 samples to 12; a motion may have at most 20000000 samples");
     expect_error("record_dt", record + "dt = 1e-200\n", "table_motion.horizontal.dt",
                  "the sample interval 1e-200 s is outside the accepted 1e-05 s to 1 s");
+    expect_error("delay_1e19", record + "delay = 1e19\n", "table_motion.horizontal.delay",
+                 "a delay of 1e+19 s is more than 1e+12 samples of 0.01 s");
     expect_error("baseline_order", record + "baseline = \"polynomial\"\nbaseline_order = 1e20\n",
                  "table_motion.horizontal.baseline_order", "must be a whole number from 2 to 6, got 1e+20");
 }
