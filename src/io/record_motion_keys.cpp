@@ -70,6 +70,22 @@ RecordProcessing processing(TableReader& keys) {
     return p;
 }
 
+// The checks of synthetic_ground_motion() that depend on one key, made here to name the key.
+void check_synthetic_sizes(TableReader& keys, const SyntheticMotionParameters& p) {
+    const double samples = std::round(p.duration_s / p.dt_s) + 1.0;
+    if (!(samples <= static_cast<double>(max_record_samples)))
+        keys.fail(p.dt_s < 1e-5 ? "dt" : "duration",
+                  fmt::format("duration {:g} s at dt = {:g} s is {:g} samples; a motion may have at most {}", p.duration_s, p.dt_s,
+                              samples, max_record_samples));
+    const double nyquist_hz = 0.5 / p.dt_s;
+    if (!(p.ground_frequency_hz < nyquist_hz))
+        keys.fail("ground_frequency", fmt::format("{:g} Hz must be below the Nyquist frequency 1 / (2 dt) = {:g} Hz",
+                                                  p.ground_frequency_hz, nyquist_hz));
+    if (!(p.highpass_frequency_hz < nyquist_hz))
+        keys.fail("highpass_frequency", fmt::format("{:g} Hz must be below the Nyquist frequency 1 / (2 dt) = {:g} Hz",
+                                                    p.highpass_frequency_hz, nyquist_hz));
+}
+
 // A delay so long that delay + k dt no longer resolves dt (1e19 s) would make equal sample times.
 void check_delay(TableReader& keys, double delay_s, double dt_s) {
     constexpr double max_delay_samples = 1e12;  // t keeps dt to 1e-4 of itself
@@ -130,6 +146,7 @@ AccelerationSeries read_synthetic_motion(TableReader& keys) {
     p.end_level = keys.optional_positive("end_level").value_or(p.end_level);
     p.rise_time_s = non_negative(keys, "rise_time", p.rise_time_s);
     p.strong_duration_s = non_negative(keys, "strong_duration", p.strong_duration_s);
+    check_synthetic_sizes(keys, p);
     // Filtered noise drifts in velocity: by default the table is brought back to rest.
     const BaselineCorrection correction = baseline(keys, "polynomial");
     const double pad = non_negative(keys, "pad", 0.0);

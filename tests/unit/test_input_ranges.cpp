@@ -109,11 +109,11 @@ TEST(InputRanges, RecordWindowAndPaddingAreCheckedBeforeAnyCast) {
 
 TEST(InputRanges, SyntheticMotionRefusesCountsAndFrequenciesOutOfRange) {
     const std::string synthetic = "[table_motion.horizontal]\ntype = \"synthetic\"\ntarget_pga = 1.0\n";
-    expect_error("synthetic_duration", synthetic + "duration = 1e300\n", "table_motion.horizontal",
+    expect_error("synthetic_duration", synthetic + "duration = 1e300\n", "table_motion.horizontal.duration",
                  "duration 1e+300 s at dt = 0.01 s is 1e+302 samples; a motion may have at most 20000000");
     // 1e200 Hz made the oscillator's matrix infinite: its exponential never ended.
-    expect_error("synthetic_frequency", synthetic + "ground_frequency = 1e200\n", "table_motion.horizontal",
-                 "ground_frequency = 1e+200 Hz must be below the Nyquist frequency 1 / (2 dt) = 50 Hz");
+    expect_error("synthetic_frequency", synthetic + "ground_frequency = 1e200\n", "table_motion.horizontal.ground_frequency",
+                 "1e+200 Hz must be below the Nyquist frequency 1 / (2 dt) = 50 Hz");
     expect_error("synthetic_pad", synthetic + "pad = 1e300\n", "table_motion.horizontal.pad", "a motion may have at most 20000000");
     expect_error("synthetic_seed", synthetic + "seed = -1\n", "table_motion.horizontal.seed",
                  "must be a whole number from 0 to 2000000000, got -1");
