@@ -116,6 +116,16 @@ struct VoronoiSpec {
 /// The region cut into the Voronoi cells of jittered-grid seeds (exact cells, clipped to the region).
 GeneratedBlocks voronoi_packing(const VoronoiSpec& spec);
 
+/// Upper estimates of how many blocks a generator makes, from its spec alone and in double (the
+/// spec may be absurd: a wall 1e9 m long), so that a scenario can be refused before generating.
+/// Wall: courses x (length / brick length + 2 + 2 per opening). Rock mass: the faces of the
+/// joint lines' arrangement, 1 + sum n_i + sum_{i<j} n_i n_j, plus the pieces of a non-convex
+/// region, with n_i the lines of set i across the region at its smallest spacing. Voronoi: the
+/// seed grid's cells.
+double estimated_block_count(const WallSpec& spec);
+double estimated_block_count(const RockMassSpec& spec);
+double estimated_block_count(const VoronoiSpec& spec);
+
 }  // namespace blockdem::scenes
 
 namespace blockdem::scenes {

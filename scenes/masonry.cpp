@@ -118,6 +118,11 @@ std::vector<Polygon> block_column(const std::vector<Vec2>& sizes_m, Vec2 base_ce
     return out;
 }
 
+double estimated_block_count(const WallSpec& spec) {
+    const double per_course = spec.length_m / spec.brick_length_m + 2.0 + 2.0 * static_cast<double>(spec.openings.size());
+    return static_cast<double>(std::max(spec.courses, 0)) * per_course;
+}
+
 std::vector<Polygon> masonry_wall(const WallSpec& spec) {
     const double L = spec.brick_length_m;
     const double h = spec.brick_height_m;

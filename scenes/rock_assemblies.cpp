@@ -4,6 +4,7 @@
 // straight corners and near-coincident corners that a cut through a corner leaves.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -155,8 +156,12 @@ SeedGrid place_seeds(const VoronoiSpec& spec, const std::vector<Polygon>& pieces
     SeedGrid g;
     g.origin = region.lo;
     g.pitch_m = spec.cell_size_m;
-    g.nx = static_cast<int>(std::ceil((region.hi.x - region.lo.x) / g.pitch_m));
-    g.ny = static_cast<int>(std::ceil((region.hi.y - region.lo.y) / g.pitch_m));
+    const double nx = std::ceil((region.hi.x - region.lo.x) / g.pitch_m);
+    const double ny = std::ceil((region.hi.y - region.lo.y) / g.pitch_m);
+    if (!(nx * ny <= static_cast<double>(std::numeric_limits<int>::max())))  // checked before the casts
+        throw std::invalid_argument("the Voronoi seed grid has more cells than can be numbered (cell size too small)");
+    g.nx = static_cast<int>(nx);
+    g.ny = static_cast<int>(ny);
     g.seed_of_cell.assign(static_cast<std::size_t>(g.nx) * g.ny, -1);
     Random random(spec.seed);
     for (int j = 0; j < g.ny; ++j)
@@ -208,6 +213,31 @@ Polygon shrunk(Polygon p, double shrink) {
 }
 
 }  // namespace
+
+double estimated_block_count(const RockMassSpec& spec) {
+    const Bounds region = bounds_of(spec.region_m);
+    const double diagonal = std::hypot(region.hi.x - region.lo.x, region.hi.y - region.lo.y);
+    std::vector<double> lines;
+    for (const JointSet& set : spec.joint_sets) {
+        const double smallest_gap = set.spacing_m * (1.0 - std::clamp(set.spacing_spread, 0.0, 0.999));
+        lines.push_back((diagonal + 2.0 * set.spacing_m) / smallest_gap + 3.0);
+    }
+    double faces = 1.0;
+    for (std::size_t i = 0; i < lines.size(); ++i) {
+        faces += lines[i];
+        for (std::size_t j = i + 1; j < lines.size(); ++j) faces += lines[i] * lines[j];
+    }
+    const double pieces = static_cast<double>(std::max<std::size_t>(spec.region_m.size(), 3) - 2);
+    double crossings = 0.0;
+    for (double n : lines) crossings += n;
+    return faces + pieces * (1.0 + crossings);
+}
+
+double estimated_block_count(const VoronoiSpec& spec) {
+    const Bounds region = bounds_of(spec.region_m);
+    return std::ceil((region.hi.x - region.lo.x) / spec.cell_size_m) * std::ceil((region.hi.y - region.lo.y) / spec.cell_size_m) +
+           static_cast<double>(spec.region_m.size());
+}
 
 GeneratedBlocks voronoi_packing(const VoronoiSpec& spec) {
     if (!(spec.cell_size_m > 0.0)) throw std::invalid_argument("the Voronoi cell size must be > 0");

@@ -109,7 +109,7 @@ std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const Ben
     BenchResult r;
     r.scene = scene;
     r.bodies = w.bodies.size() - 1;  // the table is not a block
-    r.steps = std::clamp<std::int64_t>(std::llround(o.work / static_cast<double>(r.bodies)), 3, 5000);
+    r.steps = static_cast<std::int64_t>(std::clamp(std::round(o.work / static_cast<double>(r.bodies)), 3.0, 5000.0));
     // Measured once, here: a copy's vectors have no spare capacity, so measuring each copy
     // would report different sizes for the same world.
     r.world_bytes = memory_bytes(w);

@@ -130,6 +130,23 @@ void plot(const MotionOptions& o, const fs::path& out_dir) {
         fmt::print("plot        skipped: {} failed (exit status {})\n", script.string(), exit_code);
 }
 
+// Refused before the record is read: a period outside the range would never finish.
+void check_options(const MotionOptions& o) {
+    for (double period : o.periods_s) {
+        try {
+            checked_spectrum_period(period);
+        } catch (const std::invalid_argument& e) {
+            throw InputError({"", "--periods", 0, 0}, e.what());
+        }
+    }
+    if (o.dt_s != 0.0 && !(o.dt_s >= min_record_dt_s && o.dt_s <= max_record_dt_s))
+        throw InputError({"", "--dt", 0, 0}, fmt::format("{:g} s is outside the accepted {:g} s to {:g} s", o.dt_s,
+                                                        min_record_dt_s, max_record_dt_s));
+    const int lowest = o.baseline == "displacement_polynomial" ? 3 : 2;
+    if (o.baseline_order < lowest || o.baseline_order > 6)
+        throw InputError({"", "--baseline-order", 0, 0}, fmt::format("{} is outside {} to 6", o.baseline_order, lowest));
+}
+
 RecordReadOptions read_options(const MotionOptions& o) {
     RecordReadOptions r;
     try {
@@ -144,6 +161,7 @@ RecordReadOptions read_options(const MotionOptions& o) {
 }
 
 void run_motion(const MotionOptions& o) {
+    check_options(o);
     const GroundMotionRecord record = read_ground_motion_record(o.file, read_options(o));
     const IntensityMeasures measures = intensity_measures(record.acceleration_m_s2, record.dt_s);
     print_facts(record, measures);
@@ -175,7 +193,9 @@ void add_motion_command(CLI::App& app) {
     cmd->add_option("--component", options->component, "column or channel to read (e.g. NS, EW, UD)");
     cmd->add_option("--out", options->out, "folder for spectrum.csv, record.csv and motion.png")->capture_default_str();
     cmd->add_option("--damping", options->damping, "damping ratio of the spectrum")->capture_default_str()->check(CLI::Range(0.0, 0.99));
-    cmd->add_option("--periods", options->periods_s, "[s] periods of the spectrum (default 100 from 0.01 to 10 s)");
+    cmd->add_option("--periods", options->periods_s,
+                    fmt::format("[s] periods of the spectrum (default 100 from 0.01 to 10 s; each 0 (the PGA) or {:g} to {:g} s)",
+                                min_spectrum_period_s, max_spectrum_period_s));
     cmd->add_option("--method", options->method, "spectrum integration: exact (piecewise-linear) or newmark")
         ->capture_default_str()->check(CLI::IsMember({"exact", "newmark"}));
     cmd->add_option("--baseline", options->baseline, "correction for the drift report: " + baseline_method_names())

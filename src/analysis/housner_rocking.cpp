@@ -1,6 +1,9 @@
 #include "analysis/housner_rocking.hpp"
 
 #include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
 #include <numbers>
 
 namespace blockdem {
@@ -34,7 +37,12 @@ RockingResult housner_rocking(const HousnerBlock& block, const ComponentMotion& 
     double omega = omega0;
     bool rocking = theta0 != 0.0 || omega0 != 0.0;
     double side = theta0 != 0.0 ? std::copysign(1.0, theta0) : std::copysign(1.0, omega0);
-    const auto steps = static_cast<long>(std::llround(end_s / dt));
+    // Counted as a double before the cast: every step is kept in the history.
+    const double step_count = std::round(end_s / dt);
+    if (!(step_count <= 1e8))
+        throw std::invalid_argument(fmt::format("Housner rocking: {:g} s at dt = {:g} s is {:g} steps; at most 1e8", end_s, dt,
+                                                step_count));
+    const auto steps = static_cast<long>(step_count);
     out.history.push_back({0.0, theta, omega});
     for (long n = 0; n < steps; ++n) {
         const double t = n * dt;

@@ -1,6 +1,9 @@
 #include "analysis/rigid_plastic_sliding.hpp"
 
 #include <cmath>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 namespace blockdem {
 
@@ -11,7 +14,12 @@ std::vector<SlidingPoint> rigid_plastic_sliding(const ComponentMotion& table, do
     double u = 0.0;      // relative displacement [m]
     double v = 0.0;      // relative velocity [m/s]
     int sliding = 0;     // 0 stuck, +1 sliding with v > 0, -1 with v < 0
-    const auto steps = static_cast<long>(std::llround(end_s / dt));
+    // Counted as a double before the cast: every step is kept in the history.
+    const double step_count = std::round(end_s / dt);
+    if (!(step_count <= 1e8))
+        throw std::invalid_argument(fmt::format("rigid-plastic sliding: {:g} s at dt = {:g} s is {:g} steps; at most 1e8", end_s, dt,
+                                                step_count));
+    const auto steps = static_cast<long>(step_count);
     out.push_back({0.0, 0.0, 0.0, sample(table, 0.0).acceleration_m_s2});
     for (long n = 0; n < steps; ++n) {
         const double t0 = n * dt;

@@ -25,7 +25,8 @@ RockingWindow rocking_window(const SineMotion& sine, double duration_s) {
     RockingWindow w;
     w.period_s = sine.period_s;
     const double end_s = sine.cycles > 0.0 ? std::min(sine.start_s + sine.cycles * sine.period_s, duration_s) : duration_s;
-    const int available = static_cast<int>(std::floor((end_s - sine.start_s) / sine.period_s + 1e-9));
+    // Clamped as a double before the cast: a duration of 1e300 periods.
+    const int available = static_cast<int>(std::clamp(std::floor((end_s - sine.start_s) / sine.period_s + 1e-9), -1.0, 1e6));
     if (available < 2) return w;
     // The start-up transient is left out; 6 | W lets the rocking period be 1, 2 or 3 periods.
     w.cycles = available >= 10 ? 6 * static_cast<int>(0.6 * available / 6.0) : available / 2;

@@ -12,8 +12,12 @@ struct Grid {
     std::int64_t nx = 1;
     std::int64_t ny = 1;
 
-    std::int64_t ix(double x) const { return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((x - origin.x) / cell_m)), 0, nx - 1); }
-    std::int64_t iy(double y) const { return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor((y - origin.y) / cell_m)), 0, ny - 1); }
+    // Clamped as doubles, then cast: a body 1e300 m away must not reach an undefined cast.
+    std::int64_t ix(double x) const { return index(x - origin.x, nx); }
+    std::int64_t iy(double y) const { return index(y - origin.y, ny); }
+    std::int64_t index(double offset_m, std::int64_t count) const {
+        return static_cast<std::int64_t>(std::clamp(std::floor(offset_m / cell_m), 0.0, static_cast<double>(count - 1)));
+    }
 };
 
 }  // namespace
@@ -48,14 +52,21 @@ void GridBroadPhase::find_pairs(const std::vector<Aabb>& boxes, const std::vecto
 
     if (!small_.empty()) {
         grid.origin = bounds.lo;
-        grid.nx = static_cast<std::int64_t>((bounds.hi.x - bounds.lo.x) / grid.cell_m) + 1;
-        grid.ny = static_cast<std::int64_t>((bounds.hi.y - bounds.lo.y) / grid.cell_m) + 1;
+        // Cell counts as doubles until they are known to be small: bodies spread over 1e300 m
+        // must neither overflow the product nor reach an undefined cast.
+        auto cells_along = [&](double extent_m) { return std::floor(extent_m / grid.cell_m) + 1.0; };
+        double nx = cells_along(bounds.hi.x - bounds.lo.x);
+        double ny = cells_along(bounds.hi.y - bounds.lo.y);
         // A sparse, spread-out set of bodies would make a huge grid: coarsen until cells ~ bodies.
-        while (grid.nx * grid.ny > 4 * static_cast<std::int64_t>(small_.size()) + 16) {
+        const double max_cells = 4.0 * static_cast<double>(small_.size()) + 16.0;
+        while (nx * ny > max_cells && std::isfinite(grid.cell_m)) {
             grid.cell_m *= 2.0;
-            grid.nx = static_cast<std::int64_t>((bounds.hi.x - bounds.lo.x) / grid.cell_m) + 1;
-            grid.ny = static_cast<std::int64_t>((bounds.hi.y - bounds.lo.y) / grid.cell_m) + 1;
+            nx = cells_along(bounds.hi.x - bounds.lo.x);
+            ny = cells_along(bounds.hi.y - bounds.lo.y);
         }
+        if (!(nx * ny <= max_cells)) nx = ny = 1.0;  // an infinite extent (1e308 m apart): one cell
+        grid.nx = static_cast<std::int64_t>(nx);
+        grid.ny = static_cast<std::int64_t>(ny);
         const std::size_t cells = static_cast<std::size_t>(grid.nx * grid.ny);
 
         // Counting sort of (cell, body) entries.

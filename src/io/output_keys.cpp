@@ -1,5 +1,6 @@
 #include "io/output_keys.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace blockdem {
@@ -23,7 +24,8 @@ OutputSettings read_output_settings(TableReader& keys) {
 }
 
 std::int64_t vtk_frame_count(const OutputSettings& s, double duration_s) {
-    return 1 + static_cast<std::int64_t>(std::floor(duration_s / s.vtk_interval_s + 1e-9));
+    // Clamped as a double before the cast: vtk_interval = 1e-300 s counts as 1e18 frames.
+    return 1 + static_cast<std::int64_t>(std::min(std::floor(duration_s / s.vtk_interval_s + 1e-9), 1e18));
 }
 
 bool vtk_enabled(const OutputSettings& s, std::size_t body_count, double duration_s) {

@@ -25,13 +25,6 @@ double non_negative(TableReader& keys, const std::string& key, double fallback) 
     return v;
 }
 
-int whole_number(TableReader& keys, const std::string& key, int fallback, int min, int max) {
-    const auto v = keys.optional_number(key);
-    if (!v) return fallback;
-    if (std::floor(*v) != *v || *v < min || *v > max) keys.fail(key, fmt::format("must be a whole number from {} to {}", min, max));
-    return static_cast<int>(*v);
-}
-
 // target_pga with target_pga_unit, in m/s^2.
 std::optional<double> target_pga(TableReader& keys) {
     const auto value = keys.optional_positive("target_pga");
@@ -44,7 +37,7 @@ BaselineCorrection baseline(TableReader& keys, const std::string& fallback) {
     BaselineCorrection c;
     c.method = parse_baseline_method(keys.choice("baseline", baseline_choices, fallback));
     const int lowest = c.method == BaselineMethod::displacement_polynomial ? 3 : 2;
-    c.order = whole_number(keys, "baseline_order", std::max(3, lowest), lowest, 6);
+    c.order = static_cast<int>(keys.whole_number_or("baseline_order", std::max(3, lowest), lowest, 6));
     return c;
 }
 
@@ -56,6 +49,9 @@ RecordReadOptions read_options(TableReader& keys) {
         o.units = *units;
     }
     o.dt_s = keys.optional_positive("dt").value_or(0.0);
+    if (o.dt_s != 0.0 && !(o.dt_s >= min_record_dt_s && o.dt_s <= max_record_dt_s))
+        keys.fail("dt", fmt::format("the sample interval {:g} s is outside the accepted {:g} s to {:g} s", o.dt_s, min_record_dt_s,
+                                    max_record_dt_s));
     o.component = keys.optional_string("component").value_or("");
     return o;
 }
@@ -74,6 +70,31 @@ RecordProcessing processing(TableReader& keys) {
     return p;
 }
 
+// The checks of synthetic_ground_motion() that depend on one key, made here to name the key.
+void check_synthetic_sizes(TableReader& keys, const SyntheticMotionParameters& p) {
+    const double samples = std::round(p.duration_s / p.dt_s) + 1.0;
+    if (!(samples <= static_cast<double>(max_record_samples)))
+        keys.fail(p.dt_s < 1e-5 ? "dt" : "duration",
+                  fmt::format("duration {:g} s at dt = {:g} s is {:g} samples; a motion may have at most {}", p.duration_s, p.dt_s,
+                              samples, max_record_samples));
+    const double nyquist_hz = 0.5 / p.dt_s;
+    if (!(p.ground_frequency_hz < nyquist_hz))
+        keys.fail("ground_frequency", fmt::format("{:g} Hz must be below the Nyquist frequency 1 / (2 dt) = {:g} Hz",
+                                                  p.ground_frequency_hz, nyquist_hz));
+    if (!(p.highpass_frequency_hz < nyquist_hz))
+        keys.fail("highpass_frequency", fmt::format("{:g} Hz must be below the Nyquist frequency 1 / (2 dt) = {:g} Hz",
+                                                    p.highpass_frequency_hz, nyquist_hz));
+}
+
+// A delay so long that delay + k dt no longer resolves dt (1e19 s) would make equal sample times.
+void check_delay(TableReader& keys, double delay_s, double dt_s) {
+    constexpr double max_delay_samples = 1e12;  // t keeps dt to 1e-4 of itself
+    if (delay_s > max_delay_samples * dt_s)
+        keys.fail("delay", fmt::format("a delay of {:g} s is more than {:g} samples of {:g} s: the sample times would lose dt "
+                                       "to rounding",
+                                       delay_s, max_delay_samples, dt_s));
+}
+
 AccelerationSeries to_series(const std::vector<double>& a, double dt, double delay, std::string source) {
     std::vector<double> t(a.size());
     for (std::size_t k = 0; k < a.size(); ++k) t[k] = delay + static_cast<double>(k) * dt;
@@ -90,6 +111,11 @@ AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::
     keys.reject_unknown_keys();
     if (!std::filesystem::is_regular_file(file)) keys.fail("file", fmt::format("no record file '{}'", file.string()));
     const GroundMotionRecord record = read_ground_motion_record(file, options);
+    try {
+        padding_samples(record.npts(), record.dt_s, steps.pad_s);
+    } catch (const std::invalid_argument& e) {
+        keys.fail("pad", e.what());
+    }
     std::vector<double> a;
     try {
         a = process_record(record.acceleration_m_s2, record.dt_s, steps);
@@ -99,12 +125,13 @@ AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::
     const std::string source = fmt::format("{} ({}{}, baseline {})", file.string(), record_format_name(record.format),
                                            record.component.empty() ? "" : ", component " + record.component,
                                            baseline_method_name(steps.baseline.method));
+    check_delay(keys, delay, record.dt_s);
     return to_series(a, record.dt_s, delay, source);
 }
 
 AccelerationSeries read_synthetic_motion(TableReader& keys) {
     SyntheticMotionParameters p;
-    p.seed = static_cast<std::uint64_t>(whole_number(keys, "seed", 1, 0, 2'000'000'000));
+    p.seed = static_cast<std::uint64_t>(keys.whole_number_or("seed", 1, 0, 2'000'000'000));
     p.duration_s = keys.optional_positive("duration").value_or(p.duration_s);
     p.dt_s = keys.optional_positive("dt").value_or(p.dt_s);
     const auto pga = target_pga(keys);
@@ -119,6 +146,7 @@ AccelerationSeries read_synthetic_motion(TableReader& keys) {
     p.end_level = keys.optional_positive("end_level").value_or(p.end_level);
     p.rise_time_s = non_negative(keys, "rise_time", p.rise_time_s);
     p.strong_duration_s = non_negative(keys, "strong_duration", p.strong_duration_s);
+    check_synthetic_sizes(keys, p);
     // Filtered noise drifts in velocity: by default the table is brought back to rest.
     const BaselineCorrection correction = baseline(keys, "polynomial");
     const double pad = non_negative(keys, "pad", 0.0);
@@ -130,12 +158,18 @@ AccelerationSeries read_synthetic_motion(TableReader& keys) {
     } catch (const std::invalid_argument& e) {
         keys.fail("", e.what());
     }
+    try {
+        padding_samples(a.size(), p.dt_s, pad);
+    } catch (const std::invalid_argument& e) {
+        keys.fail("pad", e.what());
+    }
     // Pad first so that the correction brings the table to rest at the very end of the series;
     // the correction changes the peak slightly: scale back to the asked-for PGA.
     pad_with_zeros(a, p.dt_s, pad);
     a = correct_baseline(a, p.dt_s, correction);
     const double factor = scale_factor_for_pga(a, p.target_pga_m_s2);
     for (double& x : a) x *= factor;
+    check_delay(keys, delay, p.dt_s);
     return to_series(a, p.dt_s, delay, fmt::format("synthetic Kanai-Tajimi motion, seed {}, PGA {:g} m/s^2", p.seed, p.target_pga_m_s2));
 }
 

@@ -8,6 +8,8 @@
 
 #include "io/input_error.hpp"
 #include "io/scenario.hpp"
+#include "motion/records/ground_motion_record.hpp"
+#include "motion/records/record_text.hpp"
 
 namespace blockdem {
 namespace {
@@ -45,16 +47,29 @@ std::optional<double> to_number(const std::string& text) {
     return value;
 }
 
-std::size_t column_index(const std::string& wanted, const std::vector<std::string>& header, const InputLocation& where) {
-    if (auto index = to_number(wanted)) return static_cast<std::size_t>(*index);
+// The index of a column in a file whose first row (header or data) has `columns` fields.
+std::size_t column_index(const CsvColumn& column, const std::vector<std::string>& header, std::size_t columns,
+                         const InputLocation& where) {
+    if (column.index) {
+        if (*column.index >= columns)
+            throw InputError(where, fmt::format("{} = {} asks for column {} (0-based) but this line has {} column{}", column.key,
+                                                *column.index, *column.index, columns, columns == 1 ? "" : "s"));
+        return *column.index;
+    }
     for (std::size_t i = 0; i < header.size(); ++i)
-        if (header[i] == wanted) return i;
-    throw InputError(where, fmt::format("no column named '{}' (header: {})", wanted, fmt::join(header, ", ")));
+        if (header[i] == column.name) return i;
+    throw InputError(where, fmt::format("{} = \"{}\": no column of that name (header: {})", column.key, column.name,
+                                        header.empty() ? "none" : fmt::format("{}", fmt::join(header, ", "))));
 }
 
 }  // namespace
 
 AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
+    std::error_code size_error;
+    const std::uintmax_t bytes = std::filesystem::file_size(spec.file, size_error);
+    if (!size_error && bytes > records::max_record_file_bytes)  // refused before reading it
+        throw InputError({spec.file.string(), "", 0, 0}, fmt::format("the file holds {} bytes; a time-series file may have at most {}",
+                                                                     bytes, records::max_record_file_bytes));
     std::ifstream in(spec.file);
     if (!in) throw InputError({spec.file.string(), "", 0, 0}, "cannot open the time-series file");
     std::vector<double> time_s;
@@ -73,8 +88,8 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
         if (!columns_known) {
             const bool is_header = !to_number(fields[0]);
             if (is_header) header = fields;
-            a_col = column_index(spec.acceleration_column, header, where);
-            if (!spec.dt_s) t_col = column_index(spec.time_column, header, where);
+            a_col = column_index(spec.acceleration_column, header, fields.size(), where);
+            if (!spec.dt_s) t_col = column_index(spec.time_column, header, fields.size(), where);
             columns_known = true;
             if (is_header) continue;
         }
@@ -93,6 +108,8 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
             if (!time_s.empty() && !(t > time_s.back()))
                 throw InputError(where, fmt::format("time {} s does not increase (previous {} s)", t, time_s.back()));
         }
+        if (acc_m_s2.size() == max_record_samples)
+            throw InputError(where, fmt::format("a motion may have at most {} samples", max_record_samples));
         time_s.push_back(t);
         acc_m_s2.push_back(*a * spec.unit_factor);
     }
@@ -105,16 +122,34 @@ AccelerationSeries read_time_series_csv_keys(TableReader& keys, const std::files
     spec.file = scenario_dir / keys.string("file");
     spec.dt_s = keys.optional_positive("dt");
     spec.unit_factor = acceleration_unit_factor(keys) * keys.number_or("scale", 1.0);
-    // A column is named by its header text or by its 0-based index.
-    auto column = [&](const char* key, const std::string& fallback) -> std::string {
-        if (!keys.has(key)) return fallback;
+    // A column is named by its header text or by its 0-based index, given as a TOML integer or
+    // as a string of digits ("1"); anything else that looks like a number ("-1", "1e30", "1.5")
+    // is neither and is refused here, with the key, rather than read as a wrapped index.
+    auto column = [&](const char* key, std::size_t fallback) -> CsvColumn {
+        if (!keys.has(key)) return {"", fallback, key};
         const toml::node& node = *keys.raw().get(key);
-        if (auto name = node.value<std::string>()) return *name;
-        if (auto index = node.value<std::int64_t>(); index && *index >= 0) return fmt::format("{}", *index);
-        keys.fail(key, "must be a column name (string) or a 0-based column index");
+        const std::string range = fmt::format("0 to {}", max_csv_columns - 1);
+        if (auto name = node.value_exact<std::string>()) {
+            std::size_t index = 0;
+            const char* end = name->data() + name->size();
+            const auto digits = std::from_chars(name->data(), end, index);
+            if (!name->empty() && std::isdigit(static_cast<unsigned char>(name->front())) && digits.ptr == end) {
+                if (digits.ec != std::errc{} || index >= max_csv_columns)
+                    keys.fail(key, fmt::format("column index \"{}\" is beyond the {} columns a CSV file may have ({})", *name,
+                                               max_csv_columns, spec.file.string()));
+                return {"", index, key};
+            }
+            if (to_number(*name))
+                keys.fail(key, fmt::format("\"{}\" is neither a column name of {} nor a 0-based column index (a whole number, {})",
+                                           *name, spec.file.string(), range));
+            return {*name, std::nullopt, key};
+        }
+        if (!node.is_number()) keys.fail(key, "must be a column name (string) or a 0-based column index");
+        const auto index = keys.optional_whole_number(key, 0, static_cast<std::int64_t>(max_csv_columns) - 1);
+        return {"", static_cast<std::size_t>(*index), key};
     };
-    spec.time_column = column("time_column", "0");
-    spec.acceleration_column = column("column", spec.dt_s ? "0" : "1");
+    spec.time_column = column("time_column", 0);
+    spec.acceleration_column = column("column", spec.dt_s ? 0 : 1);
     keys.reject_unknown_keys();
     try {
         return read_time_series_csv(spec);

@@ -127,6 +127,38 @@ double TableReader::positive(const std::string& key) {
     return *v;
 }
 
+std::optional<std::int64_t> TableReader::optional_whole_number(const std::string& key, std::int64_t min, std::int64_t max) {
+    const toml::node* node = get(key);
+    if (!node) return std::nullopt;
+    const std::string range = fmt::format("must be a whole number from {} to {}", min, max);
+    if (const auto* integer = node->as_integer()) {
+        const std::int64_t v = integer->get();
+        if (v < min || v > max) fail(key, fmt::format("{}, got {}", range, v));
+        return v;
+    }
+    if (const auto* real = node->as_floating_point()) {
+        // Compared as doubles: min and max are exact in double up to 2^53, and a value outside
+        // them is refused before the cast, where it would be undefined.
+        const double v = real->get();
+        const double largest_exact = 9007199254740992.0;  // 2^53
+        if (!std::isfinite(v) || v != std::floor(v) || v < std::max(static_cast<double>(min), -largest_exact) ||
+            v > std::min(static_cast<double>(max), largest_exact))
+            fail(key, fmt::format("{}, got {}", range, v));
+        return static_cast<std::int64_t>(v);
+    }
+    fail(key, fmt::format("{}, got {}", range, describe_node(*node)));
+}
+
+std::int64_t TableReader::whole_number(const std::string& key, std::int64_t min, std::int64_t max) {
+    auto v = optional_whole_number(key, min, max);
+    if (!v) fail_missing(key);
+    return *v;
+}
+
+std::int64_t TableReader::whole_number_or(const std::string& key, std::int64_t fallback, std::int64_t min, std::int64_t max) {
+    return optional_whole_number(key, min, max).value_or(fallback);
+}
+
 std::optional<std::string> TableReader::optional_string(const std::string& key) {
     const toml::node* node = get(key);
     if (!node) return std::nullopt;

@@ -2,6 +2,7 @@
 // Reads one TOML table key by key, remembering which keys were asked for, so that a key the
 // program never asked for (a misspelling) is reported with the nearest valid key. Every error
 // names the file, the dotted key path and the line.
+#include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
@@ -26,6 +27,12 @@ public:
     /// A number that must be > 0.
     double positive(const std::string& key);
     std::optional<double> optional_positive(const std::string& key);
+    /// A whole number within [min, max], given as a TOML integer or as a float with no fraction
+    /// (courses = 10.0). The range is checked before any conversion, so 1e20 or -1 is an error
+    /// that names the key and the range, never a wrapped or undefined cast.
+    std::optional<std::int64_t> optional_whole_number(const std::string& key, std::int64_t min, std::int64_t max);
+    std::int64_t whole_number(const std::string& key, std::int64_t min, std::int64_t max);
+    std::int64_t whole_number_or(const std::string& key, std::int64_t fallback, std::int64_t min, std::int64_t max);
     std::string string(const std::string& key);
     std::optional<std::string> optional_string(const std::string& key);
     /// A string that must be one of choices.

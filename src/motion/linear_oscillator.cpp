@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 namespace blockdem {
 namespace {
 
@@ -23,10 +25,16 @@ double norm_inf(const Matrix4& a) {
 }
 
 // exp(A) by scaling and squaring with a Taylor series: ||A / 2^s|| <= 0.25 and 16 terms leave a
-// truncation error far below double rounding.
+// truncation error far below double rounding. More than max_squarings halvings (||A|| > 4e18)
+// means an oscillator far outside any physical range (a period of 1e-200 s): refused rather
+// than looped on (an infinite norm never halves below 0.25).
+constexpr int max_squarings = 64;
+
 Matrix4 exponential(Matrix4 a) {
+    if (!std::isfinite(norm_inf(a))) throw std::invalid_argument("oscillator step: the system matrix overflows");
     int squarings = 0;
     while (norm_inf(a) > 0.25) {
+        if (squarings == max_squarings) throw std::invalid_argument("oscillator step: the system matrix is too large to integrate");
         for (auto& row : a)
             for (double& x : row) x *= 0.5;
         ++squarings;
@@ -47,8 +55,10 @@ Matrix4 exponential(Matrix4 a) {
 }  // namespace
 
 OscillatorStep::OscillatorStep(double omega_rad_s, double zeta, double h_s) : omega_(omega_rad_s), zeta_(zeta), h_(h_s) {
-    if (!(omega_rad_s > 0.0) || !(zeta >= 0.0) || !(h_s > 0.0))
-        throw std::invalid_argument("an oscillator step needs omega > 0, zeta >= 0 and h > 0");
+    if (!(omega_rad_s > 0.0) || !(zeta >= 0.0) || !(h_s > 0.0) || !std::isfinite(omega_rad_s * omega_rad_s * h_s) ||
+        !std::isfinite(zeta * omega_rad_s * h_s))
+        throw std::invalid_argument(fmt::format("an oscillator step needs finite omega > 0, zeta >= 0 and h > 0 (omega = {:g} "
+                                                "rad/s, zeta = {:g}, h = {:g} s)", omega_rad_s, zeta, h_s));
     // d/dt [x, v, f, f'] = M [x, v, f, f'] with f' constant over the step.
     Matrix4 m{};
     m[0][1] = h_s;

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "motion/intensity_measures.hpp"
+#include "motion/records/ground_motion_record.hpp"
 
 namespace blockdem {
 namespace {
@@ -156,17 +157,22 @@ double scale_factor_for_pga(std::span<const double> a, double target_pga_m_s2) {
 
 std::vector<double> time_window(std::span<const double> a, double dt, double start_s, double duration_s) {
     const double tolerance = 1e-9;  // in samples: a start given as 2.15 s must include t = 2.15 s
-    const auto first = static_cast<std::size_t>(std::max(0.0, std::ceil(start_s / dt - tolerance)));
-    std::size_t last = a.empty() ? 0 : a.size() - 1;
-    if (duration_s > 0.0) last = std::min(last, static_cast<std::size_t>(std::floor((start_s + duration_s) / dt + tolerance)));
-    if (first >= a.size() || last < first + 1)
+    // Sample indices are found as real numbers and compared with the record before any cast:
+    // start = 1e19 s must be refused, not wrapped to sample 0.
+    const double samples = static_cast<double>(a.size());
+    const double first_index = std::max(0.0, std::ceil(start_s / dt - tolerance));
+    double last_index = samples - 1.0;
+    if (duration_s > 0.0) last_index = std::min(last_index, std::floor((start_s + duration_s) / dt + tolerance));
+    if (!(first_index < samples) || !(last_index >= first_index + 1.0))
         throw std::invalid_argument(fmt::format("the window {} s + {} s leaves fewer than 2 samples of a {} s record", start_s,
                                                 duration_s, static_cast<double>(a.size() - 1) * dt));
-    return {a.begin() + static_cast<std::ptrdiff_t>(first), a.begin() + static_cast<std::ptrdiff_t>(last) + 1};
+    const auto first = static_cast<std::ptrdiff_t>(first_index);
+    const auto last = static_cast<std::ptrdiff_t>(last_index);
+    return {a.begin() + first, a.begin() + last + 1};
 }
 
 void apply_cosine_taper(std::vector<double>& a, double dt, double taper_s) {
-    const auto n = std::min(a.size() / 2, static_cast<std::size_t>(std::llround(taper_s / dt)));
+    const auto n = static_cast<std::size_t>(std::min(static_cast<double>(a.size() / 2), std::round(taper_s / dt)));
     for (std::size_t k = 0; k < n; ++k) {
         const double w = 0.5 * (1.0 - std::cos(std::numbers::pi * static_cast<double>(k) / static_cast<double>(n)));
         a[k] *= w;
@@ -174,8 +180,17 @@ void apply_cosine_taper(std::vector<double>& a, double dt, double taper_s) {
     }
 }
 
+std::size_t padding_samples(std::size_t samples, double dt, double pad_s) {
+    const double added = pad_s > 0.0 ? std::round(pad_s / dt) : 0.0;
+    if (!(added <= static_cast<double>(max_record_samples - std::min(samples, max_record_samples))))
+        throw std::invalid_argument(fmt::format("{:g} s of padding at dt = {:g} s adds {:g} samples to {}; a motion may have at "
+                                                "most {} samples",
+                                                pad_s, dt, added, samples, max_record_samples));
+    return static_cast<std::size_t>(added);
+}
+
 void pad_with_zeros(std::vector<double>& a, double dt, double pad_s) {
-    if (pad_s > 0.0) a.resize(a.size() + static_cast<std::size_t>(std::llround(pad_s / dt)), 0.0);
+    a.resize(a.size() + padding_samples(a.size(), dt, pad_s), 0.0);
 }
 
 std::vector<double> process_record(std::span<const double> a, double dt, const RecordProcessing& steps) {

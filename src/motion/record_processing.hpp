@@ -49,6 +49,9 @@ std::vector<double> time_window(std::span<const double> acceleration_m_s2, doubl
 /// cut or truncated record starts and ends at zero acceleration.
 void apply_cosine_taper(std::vector<double>& acceleration_m_s2, double dt_s, double taper_s);
 
+/// How many zeros pad_s seconds add to a series of `samples` samples; std::invalid_argument with
+/// the figures when the padded series would exceed max_record_samples (pad = 1e300 s).
+std::size_t padding_samples(std::size_t samples, double dt_s, double pad_s);
 /// Appends zeros for pad_s seconds (whole samples), so that blocks can come to rest.
 void pad_with_zeros(std::vector<double>& acceleration_m_s2, double dt_s, double pad_s);
 

@@ -60,6 +60,12 @@ SpectrumMethod parse_spectrum_method(std::string_view name) {
     throw std::invalid_argument(fmt::format("unknown spectrum method '{}'; use exact or newmark", name));
 }
 
+double checked_spectrum_period(double period_s) {
+    if (period_s == 0.0 || (period_s >= min_spectrum_period_s && period_s <= max_spectrum_period_s)) return period_s;
+    throw std::invalid_argument(fmt::format("period {:g} s is outside {:g} s to {:g} s (0 gives the PGA)", period_s,
+                                            min_spectrum_period_s, max_spectrum_period_s));
+}
+
 std::vector<double> log_spaced_periods(double min_s, double max_s, std::size_t count) {
     if (!(min_s > 0.0) || !(max_s > min_s) || count < 2) throw std::invalid_argument("periods need 0 < min < max and count >= 2");
     std::vector<double> out(count);
@@ -71,8 +77,13 @@ std::vector<double> log_spaced_periods(double min_s, double max_s, std::size_t c
 std::vector<double> default_spectrum_periods() { return log_spaced_periods(0.01, 10.0, 100); }
 
 double peak_oscillator_displacement(std::span<const double> a, double dt, double period, double zeta, SpectrumMethod method) {
-    if (a.size() < 2 || !(dt > 0.0) || !(period > 0.0) || !(zeta >= 0.0))
-        throw std::invalid_argument("an oscillator needs 2 samples, dt > 0, period > 0 and damping >= 0");
+    if (a.size() < 2 || !(dt > 0.0) || !std::isfinite(dt) || !(zeta >= 0.0) || !(zeta < 1e3))
+        throw std::invalid_argument("an oscillator needs 2 samples, a finite dt > 0 and damping >= 0");
+    if (!(period > 0.0)) throw std::invalid_argument(fmt::format("an oscillator needs a period > 0, not {:g} s", period));
+    checked_spectrum_period(period);
+    // Work is (samples + one period) x sub-steps: bounded by the period range and the record.
+    if (dt / period > 1e6 || period / dt > 1e9)
+        throw std::invalid_argument(fmt::format("a period of {:g} s and a sample interval of {:g} s are too far apart", period, dt));
     const double omega = 2.0 * std::numbers::pi / period;
     const double h = dt / std::ceil(dt * steps_per_period / period);
     if (method == SpectrumMethod::exact_piecewise_linear) {
@@ -86,6 +97,7 @@ double peak_oscillator_displacement(std::span<const double> a, double dt, double
 
 std::vector<SpectrumOrdinate> response_spectrum(std::span<const double> a, double dt, const SpectrumOptions& options) {
     const std::vector<double> periods = options.periods_s.empty() ? default_spectrum_periods() : options.periods_s;
+    for (double period : periods) checked_spectrum_period(period);
     std::vector<SpectrumOrdinate> out;
     for (double period : periods) {
         if (period <= 0.0) {  // a rigid oscillator moves with the ground: PSa = PGA

@@ -34,12 +34,24 @@ struct SpectrumOrdinate {
     double psa_m_s2 = 0.0;   ///< [m/s^2] omega^2 Sd
 };
 
+/// [s] The periods a spectrum is computed for, besides T = 0 (the PGA): from 0.001 s, stiffer
+/// than any structure (the response is the PGA), to 100 s, longer than the tallest building's
+/// and a base-isolated structure's periods. Outside them the oscillator is not physical and its
+/// integration would not end (1e-200 s) or would step through a whole record per period.
+inline constexpr double min_spectrum_period_s = 1e-3;
+inline constexpr double max_spectrum_period_s = 100.0;
+
+/// The period itself when it is 0 or within min..max_spectrum_period_s; std::invalid_argument
+/// naming it otherwise.
+double checked_spectrum_period(double period_s);
+
 /// count periods from min to max [s], equally spaced in log(T).
 std::vector<double> log_spaced_periods(double min_s, double max_s, std::size_t count);
 /// 0.01 s to 10 s, 100 periods equally spaced in log(T).
 std::vector<double> default_spectrum_periods();
 
-/// The spectrum of acceleration [m/s^2] sampled at dt [s].
+/// The spectrum of acceleration [m/s^2] sampled at dt [s]. Every period is checked first
+/// (checked_spectrum_period), so a bad one is refused before any work.
 std::vector<SpectrumOrdinate> response_spectrum(std::span<const double> acceleration_m_s2, double dt_s,
                                                 const SpectrumOptions& options = {});
 

@@ -9,6 +9,7 @@
 
 #include "motion/linear_oscillator.hpp"
 #include "motion/record_processing.hpp"
+#include "motion/records/ground_motion_record.hpp"
 
 namespace blockdem {
 namespace {
@@ -47,8 +48,21 @@ void check(const SyntheticMotionParameters& p) {
     };
     require(p.duration_s > 0.0 && p.dt_s > 0.0 && p.duration_s >= 2.0 * p.dt_s, "duration and dt must be > 0, duration >= 2 dt");
     require(p.target_pga_m_s2 > 0.0, "the target PGA must be > 0");
+    // Counted as a real number before any cast or allocation (duration = 1e300 s).
+    const double samples = std::round(p.duration_s / p.dt_s) + 1.0;
+    if (!(samples <= static_cast<double>(max_record_samples)))
+        throw std::invalid_argument(fmt::format("synthetic motion: duration {:g} s at dt = {:g} s is {:g} samples; a motion may "
+                                                "have at most {}",
+                                                p.duration_s, p.dt_s, samples, max_record_samples));
     require(p.ground_frequency_hz > 0.0 && p.ground_damping > 0.0, "ground frequency and damping must be > 0");
     require(p.highpass_frequency_hz >= 0.0 && p.highpass_damping > 0.0, "high-pass frequency must be >= 0 and its damping > 0");
+    // A filter above the Nyquist frequency 1 / (2 dt) cannot be sampled (and 1e200 Hz overflows).
+    const double nyquist_hz = 0.5 / p.dt_s;
+    for (const auto& [name, hz] : {std::pair{"ground_frequency", p.ground_frequency_hz}, std::pair{"highpass_frequency", p.highpass_frequency_hz}})
+        if (!(hz < nyquist_hz))
+            throw std::invalid_argument(fmt::format("synthetic motion: {} = {:g} Hz must be below the Nyquist frequency 1 / (2 dt) "
+                                                    "= {:g} Hz", name, hz, nyquist_hz));
+    require(p.ground_damping < 100.0 && p.highpass_damping < 100.0, "the filter damping ratios must be below 100");
     require(p.peak_time_fraction > 0.0 && p.peak_time_fraction < 1.0, "peak_time_fraction must be in (0, 1)");
     require(p.end_level > 0.0 && p.end_level < 1.0, "end_level must be in (0, 1)");
     require(p.rise_time_s >= 0.0 && p.strong_duration_s >= 0.0 && p.rise_time_s + p.strong_duration_s <= p.duration_s,
@@ -112,7 +126,7 @@ double envelope_at(const SyntheticMotionParameters& p, double t) {
 
 std::vector<double> synthetic_ground_motion(const SyntheticMotionParameters& p) {
     check(p);
-    const auto n = static_cast<std::size_t>(std::llround(p.duration_s / p.dt_s)) + 1;
+    const auto n = static_cast<std::size_t>(std::round(p.duration_s / p.dt_s)) + 1;  // bounded by check()
     GaussianNoise noise(p.seed);
     std::vector<double> white(n);
     for (double& w : white) w = noise.next();

@@ -40,7 +40,8 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
     w.table_motion = TableMotion{};
     update_body_geometry(w);
     const auto [low_m, mass_kg] = lowest_point_and_mass(w);
-    const auto steps_per_window = std::max<std::int64_t>(1, std::llround(settings.window_s / w.dt_s));
+    // Clamped as a double before the cast (window = 1e300 s).
+    const auto steps_per_window = static_cast<std::int64_t>(std::clamp(std::round(settings.window_s / w.dt_s), 1.0, 1e18));
     SettlingReport report;
     double window_max = 0.0;
     for (std::int64_t n = 1;; ++n) {

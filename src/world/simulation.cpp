@@ -13,7 +13,8 @@ std::int64_t total_steps(const World& w) {
 }
 
 std::int64_t steps_per_output(const World& w) {
-    return std::max<std::int64_t>(1, std::llround(w.settings.output_interval_s / w.dt_s));
+    // Clamped as a double before the cast: output_interval = 1e300 s means "only the ends".
+    return static_cast<std::int64_t>(std::clamp(std::round(w.settings.output_interval_s / w.dt_s), 1.0, 1e18));
 }
 
 void run_simulation(World& w, const RunOptions& options) {

@@ -20,8 +20,8 @@ std::filesystem::path write(const std::string& name, const std::string& text) {
 TEST(TimeSeriesCsv, HeaderNamesAndUnits) {
     CsvSeriesSpec spec;
     spec.file = write("named.csv", "# a comment\ntime_s,other,acc_gal\n0,9,0\n0.01,9,100\n0.02,9,-50\n");
-    spec.time_column = "time_s";
-    spec.acceleration_column = "acc_gal";
+    spec.time_column = {"time_s", std::nullopt, "time_column"};
+    spec.acceleration_column = {"acc_gal", std::nullopt, "column"};
     spec.unit_factor = 0.01;
     const AccelerationSeries s = read_time_series_csv(spec);
     ASSERT_EQ(s.time_s.size(), 3u);
@@ -33,7 +33,7 @@ TEST(TimeSeriesCsv, HeaderNamesAndUnits) {
 TEST(TimeSeriesCsv, OneColumnWithDt) {
     CsvSeriesSpec spec;
     spec.file = write("single.txt", "0.0\n0.5\n1.0\n");
-    spec.acceleration_column = "0";
+    spec.acceleration_column = {"", 0, "column"};
     spec.dt_s = 0.02;
     const AccelerationSeries s = read_time_series_csv(spec);
     EXPECT_DOUBLE_EQ(s.time_s[2], 0.04);
@@ -41,8 +41,6 @@ TEST(TimeSeriesCsv, OneColumnWithDt) {
 
 TEST(TimeSeriesCsv, ErrorsNameFileAndLine) {
     CsvSeriesSpec spec;
-    spec.time_column = "0";
-    spec.acceleration_column = "1";
     spec.file = write("bad.csv", "t,a\n0,0\n0.01,abc\n");
     try {
         read_time_series_csv(spec);

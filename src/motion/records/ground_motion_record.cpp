@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <regex>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -17,15 +16,13 @@ namespace records {
 RecordFormat detect_record_format(const RecordText& text) {
     const auto& lines = text.lines;
     if (lines.empty()) fail_file(text, "the file is empty");
-    static const std::regex cosmos(R"(Format\s+v\d+\.\d+\s+with\s+\d+\s+text\s+lines)", std::regex::icase);
-    if (std::regex_search(lines[0], cosmos)) return RecordFormat::cosmos_v2;
+    if (cosmos_text_line_count(lines[0], true)) return RecordFormat::cosmos_v2;
     if (starts_with_nocase(lines[0], "Origin Time") && lines.size() > 13 && starts_with_nocase(lines[13], "Scale Factor"))
         return RecordFormat::knet;
     for (std::size_t i = 0; i < std::min<std::size_t>(lines.size(), 10); ++i)
         if (starts_with_nocase(trim(lines[i]), "SITE CODE")) return RecordFormat::jma_csv;
-    static const std::regex npts(R"(NPTS\s*=\s*\d+\s*,\s*DT\s*=|^\s*\d+\s+[-+0-9.EeDd]+\s+NPTS\s*,\s*DT)", std::regex::icase);
     for (std::size_t i = 0; i < std::min<std::size_t>(lines.size(), 20); ++i)
-        if (std::regex_search(lines[i], npts)) return RecordFormat::peer_at2;
+        if (find_npts_dt_phrase(lines[i])) return RecordFormat::peer_at2;
     return RecordFormat::plain_text;
 }
 
@@ -41,7 +38,7 @@ double resolve_units(const RecordText& text, const RecordReadOptions& options, c
     const auto factor = acceleration_unit_factor(file_units);
     if (!factor)
         fail_at(text, line, fmt::format("unknown acceleration units '{}' (known: {}, cm/s^2, mg); give units to override",
-                                        file_units, acceleration_unit_names));
+                                        excerpt(file_units), acceleration_unit_names));
     return *factor;
 }
 
@@ -63,12 +60,18 @@ std::string component_key(const std::string& name) {
 
 bool same_component(const std::string& a, const std::string& b) { return component_key(a) == component_key(b); }
 
+void check_sample_interval(const RecordText& text, std::size_t line, double dt_s) {
+    if (!(dt_s >= min_record_dt_s && dt_s <= max_record_dt_s))
+        fail_at(text, line, fmt::format("a sample interval of {:g} s is outside the accepted {:g} s to {:g} s", dt_s,
+                                        min_record_dt_s, max_record_dt_s));
+}
+
 void check_component(const RecordText& text, const RecordReadOptions& options, const std::string& header_component,
                      std::size_t line) {
     if (options.component.empty() || header_component.empty()) return;
     if (!same_component(header_component, options.component))
         fail_at(text, line, fmt::format("component '{}' was asked for but this file holds component '{}'", options.component,
-                                        header_component));
+                                        excerpt(header_component)));
 }
 
 void convert_to_si(GroundMotionRecord& record, double to_m_s2) {
@@ -79,6 +82,9 @@ void convert_to_si(GroundMotionRecord& record, double to_m_s2) {
 }  // namespace records
 
 GroundMotionRecord read_ground_motion_record(const std::filesystem::path& file, const RecordReadOptions& options) {
+    if (options.dt_s != 0.0 && !(options.dt_s >= min_record_dt_s && options.dt_s <= max_record_dt_s))
+        throw InputError({file.string(), "dt", 0, 0}, fmt::format("dt = {:g} s is outside the accepted {:g} s to {:g} s",
+                                                                 options.dt_s, min_record_dt_s, max_record_dt_s));
     const records::RecordText text = records::read_record_text(file);
     RecordFormat format = options.format;
     if (format == RecordFormat::automatic) format = records::detect_record_format(text);

@@ -11,6 +11,14 @@
 
 namespace blockdem {
 
+/// The most samples a record (or a motion made from one, padding included) may have: a 1000 Hz
+/// record of 5.5 hours; 160 MB per copy of the series.
+inline constexpr std::size_t max_record_samples = 20'000'000;
+/// [s] The sample intervals accepted (10 microseconds to 1 s): strong-motion records are sampled
+/// at 50 to 1000 Hz; outside this range a header or a given dt is wrong.
+inline constexpr double min_record_dt_s = 1e-5;
+inline constexpr double max_record_dt_s = 1.0;
+
 enum class RecordFormat { automatic, peer_at2, knet, cosmos_v2, jma_csv, plain_text };
 
 /// A record in SI with the header facts it came with. Plain data: print it, copy it.

@@ -2,8 +2,6 @@
 // LAT., LON., SAMPLING RATE= 100Hz, UNIT = gal(cm/s/s), INITIAL TIME), then a column line
 // "NS,EW,UD" and rows of three accelerations in gal. Trailing empty CSV fields and CRLF occur.
 // Only the layout described in the project's format notes was checked, on a synthetic sample.
-#include <regex>
-
 #include <fmt/format.h>
 
 #include "motion/records/record_readers.hpp"
@@ -43,11 +41,12 @@ GroundMotionRecord read_jma_csv(const RecordText& text, const RecordReadOptions&
     std::string rate_text = rate->value;
     if (to_lower(rate_text).ends_with("hz")) rate_text.resize(rate_text.size() - 2);
     const auto rate_hz = parse_fortran_number(trim(rate_text));
-    if (!rate_hz || !(*rate_hz > 0.0)) fail_at(text, rate->line, fmt::format("sampling rate '{}' is not a positive number", rate->value));
+    if (!rate_hz || !(*rate_hz > 0.0)) fail_at(text, rate->line, fmt::format("sampling rate '{}' is not a positive number", excerpt(rate->value)));
     GroundMotionRecord record;
     record.file = text.file;
     record.format = RecordFormat::jma_csv;
     record.dt_s = 1.0 / *rate_hz;
+    check_sample_interval(text, rate->line, record.dt_s);
     if (const auto site = metadata(text, header_end, {"SITE CODE"})) record.station = site->value;
     if (const auto start = metadata(text, header_end, {"INITIAL TIME"})) record.event = "record start " + start->value + " JST";
     const auto unit = metadata(text, header_end, {"UNIT"});

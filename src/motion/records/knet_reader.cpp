@@ -6,7 +6,6 @@
 // value is max |S (c - mean c)| (checked on 8 real files). Count = rate x duration exactly.
 #include <cmath>
 #include <numeric>
-#include <regex>
 
 #include <fmt/format.h>
 
@@ -40,24 +39,35 @@ double header_number(const RecordText& text, std::size_t line, std::string_view 
     if (!suffix.empty() && to_lower(value).ends_with(to_lower(suffix))) value.resize(value.size() - suffix.size());
     const auto number = parse_fortran_number(trim(value));
     if (!number || !(*number > 0.0))
-        fail_at(text, line, fmt::format("{} '{}' is not a positive number", what, header_value(text, line)), value_column + 1);
+        fail_at(text, line, fmt::format("{} '{}' is not a positive number", what, excerpt(header_value(text, line))), value_column + 1);
     return *number;
 }
 
 // "3920(gal)/6182761": gal per count.
 double scale_factor_gal_per_count(const RecordText& text) {
-    static const std::regex pattern(R"(^\s*([0-9.Ee+-]+)\s*\(([^)]*)\)\s*/\s*([0-9.Ee+-]+)\s*$)");
     const std::string value = header_value(text, scale_factor);
-    std::smatch m;
-    if (!std::regex_match(value, m, pattern))
-        fail_at(text, scale_factor, fmt::format("Scale Factor '{}' is not of the form '3920(gal)/6182761'", value),
+    constexpr std::string_view number_chars = "0123456789.e+-";
+    LineScanner s(value);
+    s.blanks();
+    const auto numerator_text = s.run_of(number_chars);
+    s.blanks();
+    const bool open = numerator_text && s.literal("(");
+    const std::string unit = open ? trim(s.until_any(")")) : std::string{};
+    const bool close = open && s.literal(")");
+    s.blanks();
+    const bool slash = close && s.literal("/");
+    s.blanks();
+    const auto denominator_text = slash ? s.run_of(number_chars) : std::nullopt;
+    s.blanks();
+    if (!denominator_text || !s.at_end())
+        fail_at(text, scale_factor,
+                fmt::format("Scale Factor '{}' is not of the form '3920(gal)/6182761'", excerpt(value)),
                 value_column + 1);
-    if (to_lower(trim(m[2].str())) != "gal")
-        fail_at(text, scale_factor, fmt::format("Scale Factor unit '{}' is not gal", m[2].str()), value_column + 1);
-    const auto numerator = parse_fortran_number(m[1].str());
-    const auto denominator = parse_fortran_number(m[3].str());
+    if (to_lower(unit) != "gal") fail_at(text, scale_factor, fmt::format("Scale Factor unit '{}' is not gal", excerpt(unit)), value_column + 1);
+    const auto numerator = parse_fortran_number(*numerator_text);
+    const auto denominator = parse_fortran_number(*denominator_text);
     if (!numerator || !denominator || *denominator == 0.0)
-        fail_at(text, scale_factor, fmt::format("Scale Factor '{}' has an invalid number", value), value_column + 1);
+        fail_at(text, scale_factor, fmt::format("Scale Factor '{}' has an invalid number", excerpt(value)), value_column + 1);
     return *numerator / *denominator;
 }
 
@@ -94,10 +104,20 @@ GroundMotionRecord read_knet(const RecordText& text, const RecordReadOptions& op
     const double rate_hz = header_number(text, sampling_frequency, "Sampling Freq", "Hz");
     const double duration_s = header_number(text, duration_time, "Duration Time");
     record.dt_s = 1.0 / rate_hz;
+    check_sample_interval(text, sampling_frequency, record.dt_s);
     const double gal_per_count = scale_factor_gal_per_count(text);
     record.units_in_file = fmt::format("counts x {} gal ({})", gal_per_count, header_value(text, scale_factor));
     check_component(text, options, header_value(text, direction), direction);
-    const std::size_t expected = static_cast<std::size_t>(std::llround(rate_hz * duration_s));
+    // The count is checked as a real number first: a wrong header (1e18 Hz) must not reach a cast.
+    const double announced = std::round(rate_hz * duration_s);
+    const std::size_t capacity = free_values_capacity(text, header_lines);
+    if (!(announced <= static_cast<double>(std::min(capacity, max_record_samples))))
+        fail_at(text, duration_time,
+                fmt::format("Sampling Freq x Duration Time ({} Hz x {} s) announce {:g} values, but the rest of the file "
+                            "can hold at most {} (and a record at most {})",
+                            rate_hz, duration_s, announced, capacity, max_record_samples));
+    const auto expected = static_cast<std::size_t>(announced);
+    if (expected < 2) fail_at(text, duration_time, fmt::format("{} Hz x {} s is fewer than the 2 samples a record needs", rate_hz, duration_s));
     const ValueBlock block = read_free_values(text, header_lines, expected);
     if (block.extra_values > 0)
         fail_at(text, block.extra_line,

@@ -3,7 +3,6 @@
 // format, 5 per line, last line partial. The NPTS/DT line exists in two families: "NPTS= 4000,
 // DT= .0100 SEC" (with or without SEC, lower-case dt, trailing filter text) and the NGA-West1
 // "4096  0.0100  NPTS, DT"; some files have a longer header, so the line is searched for.
-#include <regex>
 
 #include <fmt/format.h>
 
@@ -20,34 +19,78 @@ struct NptsDt {
     double dt_s = 0.0;      // [s]
 };
 
+constexpr std::string_view number_chars = "+-0123456789.ed";
+
+// "NPTS\s*=\s*(\d+)\s*,\s*DT\s*=\s*([-+0-9.EeDd]*)" at `at`.
+std::optional<NptsDtText> labelled_at(std::string_view line, std::size_t at) {
+    LineScanner s(line, at);
+    if (!s.literal("NPTS")) return std::nullopt;
+    s.blanks();
+    if (!s.literal("=")) return std::nullopt;
+    s.blanks();
+    const auto npts = s.digits();
+    if (!npts) return std::nullopt;
+    s.blanks();
+    if (!s.literal(",")) return std::nullopt;
+    s.blanks();
+    if (!s.literal("DT")) return std::nullopt;
+    s.blanks();
+    if (!s.literal("=")) return std::nullopt;
+    s.blanks();
+    return NptsDtText{*npts, s.run_of(number_chars).value_or(std::string_view{})};
+}
+
+// "^\s*(\d+)\s+([-+0-9.EeDd]+)\s+NPTS\s*,\s*DT" (NGA-West1).
+std::optional<NptsDtText> numbers_first(std::string_view line) {
+    LineScanner s(line);
+    s.blanks();
+    const auto npts = s.digits();
+    if (!npts || !s.some_blanks()) return std::nullopt;
+    const auto dt = s.run_of(number_chars);
+    if (!dt || !s.some_blanks() || !s.literal("NPTS")) return std::nullopt;
+    s.blanks();
+    if (!s.literal(",")) return std::nullopt;
+    s.blanks();
+    if (!s.literal("DT")) return std::nullopt;
+    return NptsDtText{*npts, *dt};
+}
+
 std::optional<NptsDt> find_npts_dt(const RecordText& text) {
-    static const std::regex labelled(R"(NPTS\s*=\s*(\d+)\s*,\s*DT\s*=\s*([-+0-9.EeDd]+))", std::regex::icase);
-    static const std::regex numbers_first(R"(^\s*(\d+)\s+([-+0-9.EeDd]+)\s+NPTS\s*,\s*DT)", std::regex::icase);
     const std::size_t n = std::min(text.lines.size(), header_search_lines);
     for (std::size_t i = 0; i < n; ++i) {
-        std::smatch m;
-        if (std::regex_search(text.lines[i], m, labelled) || std::regex_search(text.lines[i], m, numbers_first)) {
-            const auto dt = parse_fortran_number(m[2].str());
-            if (!dt || !(*dt > 0.0)) fail_at(text, i, fmt::format("DT '{}' is not a positive number", m[2].str()));
-            return NptsDt{i, std::stoul(m[1].str()), *dt};
-        }
+        const auto phrase = find_npts_dt_phrase(text.lines[i]);
+        if (!phrase) continue;
+        const auto dt = parse_fortran_number(phrase->dt);
+        if (!dt || !(*dt > 0.0)) fail_at(text, i, fmt::format("DT '{}' is not a positive number", excerpt(phrase->dt)));
+        check_sample_interval(text, i, *dt);
+        const std::size_t npts = parse_count(text, i, phrase->npts, "NPTS", max_record_samples);
+        check_count_fits(text, i, npts, free_values_capacity(text, i + 1), "NPTS");
+        return NptsDt{i, npts, *dt};
+    }
+    return std::nullopt;
+}
+
+// "UNITS\s+OF\s+([A-Za-z/^0-9]+)", searched along the line.
+std::optional<std::string> units_phrase(std::string_view line) {
+    for (std::size_t at = find_nocase(line, "UNITS"); at != std::string_view::npos; at = find_nocase(line, "UNITS", at + 1)) {
+        LineScanner s(line, at + 5);
+        if (!s.some_blanks() || !s.literal("OF") || !s.some_blanks()) continue;
+        if (const auto unit = s.run_of("abcdefghijklmnopqrstuvwxyz/^0123456789")) return std::string(*unit);
     }
     return std::nullopt;
 }
 
 // "UNITS OF G" on a header line before the NPTS line; velocity/displacement files are refused.
 std::string header_units(const RecordText& text, std::size_t npts_line, std::size_t& units_line) {
-    static const std::regex units(R"(UNITS\s+OF\s+([A-Za-z/^0-9]+))", std::regex::icase);
     for (std::size_t i = 0; i < npts_line; ++i) {
-        std::smatch m;
         const std::string& line = text.lines[i];
-        if (!std::regex_search(line, m, units)) continue;
+        auto unit = units_phrase(line);
+        if (!unit) continue;
         units_line = i;
         if (contains_nocase(line, "VELOCITY") || contains_nocase(line, "DISPLACEMENT"))
             fail_at(text, i, "this is a velocity or displacement file (VT2/DT2); an acceleration record (.AT2) is needed");
-        std::string unit = m[1].str();
-        while (!unit.empty() && unit.back() == '.') unit.pop_back();  // "UNITS OF G." ends a sentence
-        return unit;
+        while (!unit->empty() && unit->back() == '.') unit->pop_back();  // "UNITS OF G." ends a sentence
+        return *unit;
     }
     units_line = npts_line;
     return "";
@@ -77,6 +120,12 @@ void read_event_line(const std::string& line, GroundMotionRecord& record) {
 
 }  // namespace
 
+std::optional<NptsDtText> find_npts_dt_phrase(std::string_view line) {
+    for (std::size_t at = find_nocase(line, "NPTS"); at != std::string_view::npos; at = find_nocase(line, "NPTS", at + 1))
+        if (auto phrase = labelled_at(line, at)) return phrase;
+    return numbers_first(line);
+}
+
 GroundMotionRecord read_peer_at2(const RecordText& text, const RecordReadOptions& options) {
     const auto header = find_npts_dt(text);
     if (!header)
@@ -89,11 +138,9 @@ GroundMotionRecord read_peer_at2(const RecordText& text, const RecordReadOptions
     record.dt_s = header->dt_s;
     if (header->line >= 2 && text.lines.size() > 1) read_event_line(text.lines[1], record);
     std::size_t units_line = 0;
-    std::string unit = header_units(text, header->line, units_line);
-    if (unit.empty()) {
-        unit = "g";
-        record.notes.push_back("the header states no units; AT2 files are in g");
-    }
+    const std::string stated_unit = header_units(text, header->line, units_line);
+    if (stated_unit.empty()) record.notes.push_back("the header states no units; AT2 files are in g");
+    const std::string unit = stated_unit.empty() ? std::string("g") : stated_unit;
     record.units_in_file = unit;
     const double to_m_s2 = resolve_units(text, options, unit, units_line);
     check_component(text, options, record.component, 1);

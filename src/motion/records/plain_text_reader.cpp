@@ -4,7 +4,6 @@
 // blanks, tabs, commas or semicolons. The units come from the header ("Accel[g]", "units of gal")
 // or from the user; a file that states none must be given them: guessing g vs gal is a factor 980.
 #include <cmath>
-#include <regex>
 
 #include <fmt/format.h>
 
@@ -18,17 +17,40 @@ struct StatedUnits {
     std::size_t line = 0;
 };
 
+// "acc\w*\s*[\[(]\s*([^\])]+?)\s*[\])]" searched along the line: "Accel[g]", "acc (gal)".
+std::optional<std::string> bracketed_unit(std::string_view line) {
+    for (std::size_t at = find_nocase(line, "acc"); at != std::string_view::npos; at = find_nocase(line, "acc", at + 1)) {
+        LineScanner s(line, at + 3);
+        s.word();
+        s.blanks();
+        if (!s.one_of("[(")) continue;
+        const std::string unit = trim(s.until_any("])"));
+        if (!s.at_end() && !unit.empty()) return unit;
+    }
+    return std::nullopt;
+}
+
+// "units?\s*(?:of|=|:)\s*([A-Za-z/^0-9]+)" searched along the line: "units of g", "Unit: gal".
+std::optional<std::string> phrased_unit(std::string_view line) {
+    for (std::size_t at = find_nocase(line, "unit"); at != std::string_view::npos; at = find_nocase(line, "unit", at + 1)) {
+        LineScanner s(line, at + 4);
+        s.literal("s");
+        s.blanks();
+        if (!s.literal("of") && !s.literal("=") && !s.literal(":")) continue;
+        s.blanks();
+        if (const auto unit = s.run_of("abcdefghijklmnopqrstuvwxyz/^0123456789")) return std::string(*unit);
+    }
+    return std::nullopt;
+}
+
 // "Accel[g]", "acc (gal)", "units of g", "units = cm/s^2", "Unit: gal".
 StatedUnits header_units(const RecordText& text, std::size_t end) {
-    static const std::regex bracket(R"(acc\w*\s*[\[(]\s*([^\])]+?)\s*[\])])", std::regex::icase);
-    static const std::regex phrase(R"(units?\s*(?:of|=|:)\s*([A-Za-z/^0-9]+))", std::regex::icase);
     for (std::size_t i = 0; i < end; ++i) {
-        std::smatch m;
-        if (std::regex_search(text.lines[i], m, bracket) || std::regex_search(text.lines[i], m, phrase)) {
-            std::string unit = m[1].str();
-            if (const auto paren = unit.find('('); paren != std::string::npos) unit.resize(paren);  // "gal(cm/s/s)"
-            return {trim(unit), i};
-        }
+        auto unit = bracketed_unit(text.lines[i]);
+        if (!unit) unit = phrased_unit(text.lines[i]);
+        if (!unit) continue;
+        if (const auto paren = unit->find('('); paren != std::string::npos) unit->resize(paren);  // "gal(cm/s/s)"
+        return {trim(*unit), i};
     }
     return {"", end};
 }
@@ -110,6 +132,7 @@ void read_table(const RecordText& text, const RecordReadOptions& options, const 
             fail_at(text, rows.first_line,
                     fmt::format("dt = {} s was given but the time column has a step of {} s", options.dt_s, *step));
         record.dt_s = *step;
+        check_sample_interval(text, rows.first_line, record.dt_s);
         if (rows.rows.front()[0] != 0.0)
             record.notes.push_back(fmt::format("the time column starts at {} s; the record is taken to start at 0", rows.rows.front()[0]));
     } else {
@@ -128,6 +151,11 @@ void read_values_only(const RecordText& text, const RecordReadOptions& options, 
     if (!(options.dt_s > 0.0))
         fail_at(text, rows.first_line, "the file holds values only (no time column): give the sample interval dt");
     record.dt_s = options.dt_s;
+    std::size_t count = 0;
+    for (const auto& r : rows.rows) count += r.size();
+    if (count > max_record_samples)
+        fail_at(text, rows.first_line, fmt::format("the file holds {} values; a record may have at most {}", count, max_record_samples));
+    record.acceleration_m_s2.reserve(count);
     for (const auto& r : rows.rows) record.acceleration_m_s2.insert(record.acceleration_m_s2.end(), r.begin(), r.end());
 }
 

@@ -10,17 +10,28 @@
 #include <fmt/format.h>
 
 #include "io/input_error.hpp"
+#include "motion/records/ground_motion_record.hpp"
 
 namespace blockdem::records {
 
 RecordText split_record_text(std::string file, std::string_view content) {
     RecordText text{std::move(file), {}};
+    if (content.size() > max_record_file_bytes)
+        fail_file(text, fmt::format("the file holds {} bytes; a record file may have at most {} bytes ({} MiB)", content.size(),
+                                    max_record_file_bytes, max_record_file_bytes >> 20));
     std::size_t begin = 0;
     while (begin < content.size()) {
         std::size_t end = content.find('\n', begin);
         if (end == std::string_view::npos) end = content.size();
         std::string_view line = content.substr(begin, end - begin);
         while (!line.empty() && line.back() == '\r') line.remove_suffix(1);  // CRLF and CR CR LF
+        if (text.lines.size() == max_record_lines)
+            fail_at(text, text.lines.size(), fmt::format("a record file may have at most {} lines", max_record_lines));
+        if (line.size() > max_record_line_chars)
+            fail_at(text, text.lines.size(),
+                    fmt::format("this line is {} characters long; a record line may have at most {} (real header and data "
+                                "lines have fewer than 200)",
+                                line.size(), max_record_line_chars));
         text.lines.emplace_back(line);
         begin = end + 1;
     }
@@ -28,6 +39,12 @@ RecordText split_record_text(std::string file, std::string_view content) {
 }
 
 RecordText read_record_text(const std::filesystem::path& path) {
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(path, error);
+    if (!error && size > max_record_file_bytes)  // refused before reading it into memory
+        throw InputError({path.string(), "", 0, 0},
+                         fmt::format("the file holds {} bytes; a record file may have at most {} bytes ({} MiB)", size,
+                                     max_record_file_bytes, max_record_file_bytes >> 20));
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError({path.string(), "", 0, 0}, "cannot open the record file");
     const std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -39,6 +56,100 @@ void fail_at(const RecordText& text, std::size_t line_index, const std::string& 
 }
 
 void fail_file(const RecordText& text, const std::string& problem) { throw InputError({text.file, "", 0, 0}, problem); }
+
+std::size_t parse_count(const RecordText& text, std::size_t line, std::string_view digits, std::string_view what,
+                        std::size_t max_value) {
+    std::uint64_t value = 0;
+    const char* first = digits.data();
+    const char* last = first + digits.size();
+    const auto [end, error] = std::from_chars(first, last, value);
+    if (digits.empty() || error == std::errc::invalid_argument || end != last)
+        fail_at(text, line, fmt::format("{} '{}' is not a whole number", what, excerpt(digits)));
+    if (error == std::errc::result_out_of_range || value > max_value)
+        fail_at(text, line, fmt::format("{} = {} exceeds the limit of {}", what, excerpt(digits), max_value));
+    return static_cast<std::size_t>(value);
+}
+
+std::size_t free_values_capacity(const RecordText& text, std::size_t first_line) {
+    std::size_t capacity = 0;
+    for (std::size_t i = first_line; i < text.lines.size(); ++i) capacity += (text.lines[i].size() + 1) / 2;
+    return capacity;
+}
+
+std::size_t fixed_values_capacity(const RecordText& text, std::size_t first_line) {
+    std::size_t capacity = 0;
+    for (std::size_t i = first_line; i < text.lines.size(); ++i) capacity += text.lines[i].size();
+    return capacity;
+}
+
+void check_count_fits(const RecordText& text, std::size_t line, std::size_t count, std::size_t capacity,
+                      std::string_view what) {
+    if (count > capacity)
+        fail_at(text, line,
+                fmt::format("{} = {} values are announced, but the {} line(s) after it can hold at most {}", what, count,
+                            text.lines.size() > line ? text.lines.size() - line - 1 : 0, capacity));
+}
+
+namespace {
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+char lower(char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); }
+bool in_set(char c, std::string_view set) { return set.find(lower(c)) != std::string_view::npos || set.find(c) != std::string_view::npos; }
+
+}  // namespace
+
+std::size_t LineScanner::blanks() {
+    const std::size_t from = at_;
+    while (at_ < line_.size() && is_blank(line_[at_])) ++at_;
+    return at_ - from;
+}
+
+bool LineScanner::literal(std::string_view word) {
+    if (line_.size() - std::min(at_, line_.size()) < word.size()) return false;
+    for (std::size_t i = 0; i < word.size(); ++i)
+        if (lower(line_[at_ + i]) != lower(word[i])) return false;
+    at_ += word.size();
+    return true;
+}
+
+bool LineScanner::one_of(std::string_view choices) {
+    if (at_end() || !in_set(line_[at_], to_lower(choices))) return false;
+    ++at_;
+    return true;
+}
+
+std::optional<std::string_view> LineScanner::run_of(std::string_view charset) {
+    const std::string set = to_lower(charset);
+    const std::size_t from = at_;
+    while (at_ < line_.size() && in_set(line_[at_], set)) ++at_;
+    if (at_ == from) return std::nullopt;
+    return line_.substr(from, at_ - from);
+}
+
+std::optional<std::string_view> LineScanner::digits() { return run_of("0123456789"); }
+
+std::optional<std::string_view> LineScanner::word() {
+    const std::size_t from = at_;
+    while (at_ < line_.size() && (std::isalnum(static_cast<unsigned char>(line_[at_])) || line_[at_] == '_')) ++at_;
+    if (at_ == from) return std::nullopt;
+    return line_.substr(from, at_ - from);
+}
+
+std::string_view LineScanner::until_any(std::string_view stops) {
+    const std::size_t from = std::min(at_, line_.size());
+    at_ = std::min(line_.find_first_of(stops, from), line_.size());
+    return line_.substr(from, at_ - from);
+}
+
+std::size_t find_nocase(std::string_view s, std::string_view part, std::size_t from) {
+    if (part.empty()) return from <= s.size() ? from : std::string_view::npos;
+    for (std::size_t i = from; i + part.size() <= s.size(); ++i) {
+        std::size_t k = 0;
+        while (k < part.size() && lower(s[i + k]) == lower(part[k])) ++k;
+        if (k == part.size()) return i;
+    }
+    return std::string_view::npos;
+}
 
 std::optional<double> parse_fortran_number(std::string_view token) {
     if (token.empty() || token.size() > 64) return std::nullopt;
@@ -87,6 +198,12 @@ std::string trim(std::string_view s) {
     return std::string(s);
 }
 
+std::string excerpt(std::string_view s) {
+    constexpr std::size_t shown = 40;
+    if (s.size() <= 2 * shown) return std::string(s);
+    return fmt::format("{}... ({} characters)", s.substr(0, shown), s.size());
+}
+
 std::string to_lower(std::string_view s) {
     std::string out(s);
     for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -106,9 +223,7 @@ bool starts_with_nocase(std::string_view s, std::string_view prefix) {
     return s.size() >= prefix.size() && to_lower(s.substr(0, prefix.size())) == to_lower(prefix);
 }
 
-bool contains_nocase(std::string_view s, std::string_view part) {
-    return to_lower(s).find(to_lower(part)) != std::string::npos;
-}
+bool contains_nocase(std::string_view s, std::string_view part) { return find_nocase(s, part) != std::string_view::npos; }
 
 namespace {
 
@@ -141,7 +256,7 @@ std::size_t count_extra_values(const RecordText& text, std::size_t line, const s
 
 ValueBlock read_free_values(const RecordText& text, std::size_t first_line, std::size_t count) {
     ValueBlock block;
-    block.values.reserve(count);
+    block.values.reserve(std::min(count, free_values_capacity(text, first_line)));
     std::size_t line = first_line;
     for (; line < text.lines.size() && block.values.size() < count; ++line) {
         const auto tokens = blank_tokens(text.lines[line]);
@@ -155,7 +270,7 @@ ValueBlock read_free_values(const RecordText& text, std::size_t first_line, std:
             const auto value = parse_fortran_number(tokens[k].text);
             if (!value)
                 fail_at(text, line,
-                        fmt::format("'{}' is not a number (value {} of {})", tokens[k].text, block.values.size() + 1, count),
+                        fmt::format("'{}' is not a number (value {} of {})", excerpt(tokens[k].text), block.values.size() + 1, count),
                         tokens[k].column);
             block.values.push_back(*value);
         }
@@ -170,7 +285,7 @@ ValueBlock read_free_values(const RecordText& text, std::size_t first_line, std:
 ValueBlock read_fixed_values(const RecordText& text, std::size_t first_line, std::size_t count, std::size_t per_line,
                              std::size_t width) {
     ValueBlock block;
-    block.values.reserve(count);
+    block.values.reserve(std::min(count, fixed_values_capacity(text, first_line)));
     std::size_t line = first_line;
     for (; line < text.lines.size() && block.values.size() < count; ++line) {
         const std::string_view row = text.lines[line];
@@ -182,7 +297,7 @@ ValueBlock read_fixed_values(const RecordText& text, std::size_t first_line, std
             const auto value = parse_fortran_number(field);
             if (!value)
                 fail_at(text, line,
-                        fmt::format("'{}' is not a number (value {} of {})", field, block.values.size() + 1, count),
+                        fmt::format("'{}' is not a number (value {} of {})", excerpt(field), block.values.size() + 1, count),
                         static_cast<int>(start + 1));
             block.values.push_back(*value);
         }
@@ -222,10 +337,16 @@ NumericRows read_numeric_rows(const RecordText& text, std::size_t from) {
     while (line < text.lines.size() && !numeric_line(text.lines[line])) ++line;
     if (line == text.lines.size()) fail_file(text, "no line of numbers found: the file holds no data");
     out.first_line = line;
+    constexpr std::size_t max_table_numbers = 4 * max_record_samples;
+    std::size_t numbers_read = 0;
     for (; line < text.lines.size(); ++line) {
         if (trim(text.lines[line]).empty()) continue;
         auto numbers = numeric_line(text.lines[line]);
         if (numbers) {
+            numbers_read += numbers->size();
+            if (numbers_read > max_table_numbers)
+                fail_at(text, line, fmt::format("the table holds more than {} numbers (4 columns of the {} samples a record may have)",
+                                                max_table_numbers, max_record_samples));
             out.rows.push_back(std::move(*numbers));
             out.row_lines.push_back(line);
             continue;
@@ -237,7 +358,7 @@ NumericRows read_numeric_rows(const RecordText& text, std::size_t from) {
         for (const Token& t : blank_tokens(text.lines[line]))
             for (auto f : split_fields(t.text))
                 if (!parse_fortran_number(f))
-                    fail_at(text, line, fmt::format("'{}' is not a number", f), t.column);
+                    fail_at(text, line, fmt::format("'{}' is not a number", excerpt(f)), t.column);
         fail_at(text, line, "this line is not a row of numbers");
     }
     return out;
