@@ -8,6 +8,7 @@
 
 #include "geometry/vec2.hpp"
 #include "laws/contact_parameters.hpp"
+#include "laws/material_stiffness.hpp"
 #include "motion/table_motion.hpp"
 
 namespace blockdem {
@@ -39,6 +40,7 @@ struct BodyDef {
 struct MaterialPairs {
     std::vector<std::string> materials;          ///< index = material id
     std::vector<ContactParameters> parameters;   ///< materials.size()^2, row-major
+    std::vector<StiffnessOrigin> origins;        ///< like parameters, or empty: every kn and ks given
 
     std::uint32_t id(const std::string& material) const;  ///< throws std::out_of_range
     const ContactParameters& at(std::uint32_t i, std::uint32_t j) const {
