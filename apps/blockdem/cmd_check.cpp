@@ -44,7 +44,9 @@ void print_stiffness_origin(const StiffnessOrigin& o) {
                    o.rule.ks_N_m);
         return;
     }
-    fmt::print("    rule block_deformability: {} against {};\n", describe_side(o.a), describe_side(o.b));
+    const std::string a = describe_side(o.a);
+    const std::string b = describe_side(o.b);
+    fmt::print("    rule block_deformability: {}\n", a == b ? a + " on both sides" : a + " against " + b);
     fmt::print("    per unit area kn'' = {:.4g} Pa/m, ks'' = {:.4g} Pa/m; per unit length of joint kn' = {:.4g} N/m/m; "
                "each point carries {:.4g} m x {:.4g} m{}{}\n",
                o.rule.kn_per_area_pa_m, o.rule.ks_per_area_pa_m, o.rule.kn_per_area_pa_m * o.rule.thickness_m,
