@@ -61,7 +61,8 @@ struct SimulationSettings {
 };
 
 /// A settling stage before the run (world/settling.hpp): the assembly is stepped under gravity,
-/// table at rest, until kinetic / potential energy stays below kinetic_ratio for window_s.
+/// table at rest, until every dynamic body's kinetic energy / (m g L) stays below kinetic_ratio
+/// for window_s (L: its size).
 struct SettlingSettings {
     double kinetic_ratio = 1e-8;   ///< [-]
     double window_s = 0.05;        ///< [s]
