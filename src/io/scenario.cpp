@@ -114,8 +114,8 @@ std::optional<ElasticMaterial> read_default_material(TableReader& t) {
     return material;
 }
 
-// The typical block of every material (dynamic bodies; static ones only for a material that has
-// no dynamic body; all bodies for a material no body uses, whose pairs never act).
+// The typical block of every material: the median over its dynamic bodies, or over its fixed and
+// driven ones if it has no dynamic body; over all bodies for a material no body uses.
 std::vector<BlockDimensions> typical_blocks(const MaterialPairs& pairs, const std::vector<BodyDef>& bodies) {
     std::vector<std::vector<BlockDimensions>> moving(pairs.materials.size()), still(pairs.materials.size());
     std::vector<BlockDimensions> all;
@@ -131,17 +131,24 @@ std::vector<BlockDimensions> typical_blocks(const MaterialPairs& pairs, const st
 }
 
 // Every pair's kn and ks from the rule (laws/material_stiffness.hpp), with their origin.
+// A material no body uses (the "default" of a scenario that names all its materials) never
+// touches anything, but the stable time step bounds each body by every pair its material is in:
+// its pair with a used material B copies B's own side, so it is never stiffer than B with B.
 void derive_stiffness(MaterialPairs& pairs, const std::vector<ElasticMaterial>& materials,
                       const std::vector<BodyDef>& bodies) {
     const std::vector<BlockDimensions> blocks = typical_blocks(pairs, bodies);
     const std::size_t n = pairs.materials.size();
+    std::vector<bool> used(n, false);
+    for (const BodyDef& b : bodies) used[pairs.id(b.material)] = true;
     pairs.origins.assign(n * n, StiffnessOrigin{});
     for (std::uint32_t i = 0; i < n; ++i) {
         for (std::uint32_t j = 0; j < n; ++j) {
             StiffnessOrigin& origin = pairs.origins[i * n + j];
+            const std::uint32_t side_a = used[i] || !used[j] ? i : j;
+            const std::uint32_t side_b = used[j] || !used[i] ? j : i;
             origin.derived = true;
-            origin.a = {materials[i], blocks[i]};
-            origin.b = {materials[j], blocks[j]};
+            origin.a = {materials[side_a], blocks[side_a]};
+            origin.b = {materials[side_b], blocks[side_b]};
             origin.rule = block_joint_stiffness(origin.a, origin.b);
             pairs.parameters[i * n + j].kn_N_m = origin.rule.kn_N_m;
             pairs.parameters[i * n + j].ks_N_m = origin.rule.ks_N_m;

@@ -98,6 +98,22 @@ TEST(ScenarioMaterial, StiffnessDerivedPerMaterialPair) {
     EXPECT_NEAR(stiffer.world.critical_dt_s / s.world.critical_dt_s, 0.5, 1e-9);
 }
 
+// "default" is used by no body here: its pairs copy the used material's side, so they never make
+// the stable step smaller than the real pairs do.
+TEST(ScenarioMaterial, UnusedMaterialPairsCopyTheUsedSide) {
+    const std::string text = std::string(column) + R"(
+[contact.materials.stone]
+young_modulus = 3.0e9
+)";
+    const LoadedScenario s = load("unused", text);
+    const MaterialPairs& c = s.world.contact;
+    const auto stone = c.id("stone");
+    const auto unused = c.id("default");
+    EXPECT_NEAR(c.at(stone, stone).kn_N_m, 1e9, 1e-3);
+    EXPECT_DOUBLE_EQ(c.at(unused, stone).kn_N_m, c.at(stone, stone).kn_N_m);
+    EXPECT_DOUBLE_EQ(c.at(stone, unused).ks_N_m, c.at(stone, stone).ks_N_m);
+}
+
 // A material of its own, and a pair's explicit kn overriding the rule (ks stays derived).
 TEST(ScenarioMaterial, PerMaterialModulusAndPairOverride) {
     const std::string text = std::string(column) + R"(
