@@ -1,7 +1,10 @@
 // `blockdem check SCENARIO [--set key=value]...`: validates the scenario and prints the derived
-// quantities: mass and inertia of each body, h_n, C_n, C_s per material pair, the critical and
-// the chosen time step, and the table motion.
+// quantities: mass and inertia of each body, kn and ks (and how the rule derived them from the
+// material), h_n, C_n, C_s per material pair, the contact period and the static overlap, the
+// critical and the chosen time step, and the table motion.
 #include <cmath>
+#include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -10,6 +13,7 @@
 #include "apps/blockdem/commands.hpp"
 #include "io/scenario.hpp"
 #include "laws/linear_spring_dashpot.hpp"
+#include "laws/material_stiffness.hpp"
 #include "laws/restitution.hpp"
 
 namespace blockdem::cli {
@@ -26,6 +30,70 @@ void print_bodies(const World& w) {
                    w.contact.materials[b.material[i]]);
 }
 
+std::string describe_side(const JointSide& s) {
+    return fmt::format("E = {:.4g} Pa, nu = {:.3g}, typical block {:.4g} m high, {:.4g} m wide, {:.4g} m thick",
+                       s.material.young_modulus_pa, s.material.poisson_ratio, s.block.height_m, s.block.width_m,
+                       s.block.thickness_m);
+}
+
+// How the rule got a pair's kn and ks (docs/physics.md, "Choosing the contact stiffness").
+void print_stiffness_origin(const StiffnessOrigin& o) {
+    if (!o.derived) return;
+    if (o.kn_given && o.ks_given) {
+        fmt::print("    kn and ks given for this pair (the rule would give kn = {:.4g}, ks = {:.4g} N/m)\n", o.rule.kn_N_m,
+                   o.rule.ks_N_m);
+        return;
+    }
+    const std::string a = describe_side(o.a);
+    const std::string b = describe_side(o.b);
+    fmt::print("    rule block_deformability: {}\n", a == b ? a + " on both sides" : a + " against " + b);
+    fmt::print("    per unit area kn'' = {:.4g} Pa/m, ks'' = {:.4g} Pa/m; per unit length of joint kn' = {:.4g} N/m/m; "
+               "each point carries {:.4g} m x {:.4g} m{}{}\n",
+               o.rule.kn_per_area_pa_m, o.rule.ks_per_area_pa_m, o.rule.kn_per_area_pa_m * o.rule.thickness_m,
+               o.rule.tributary_length_m, o.rule.thickness_m, o.kn_given ? "; kn given for this pair" : "",
+               o.ks_given ? "; ks given for this pair" : "");
+}
+
+// What the stiffness means for each dynamic body: the period of its mass on one contact point,
+// T = 2 pi sqrt(m / kn), and the overlap its own weight makes on one point (rocking on a corner),
+// m g / kn, against its height. Per material pair, the extremes over the bodies, named.
+void print_stiffness_effects(const World& w) {
+    const Bodies& b = w.bodies;
+    const auto& m = w.contact.materials;
+    std::vector<bool> used(m.size(), false);
+    for (std::size_t i = 0; i < b.size(); ++i) used[b.material[i]] = true;
+    fmt::print("contact period T = 2 pi sqrt(m / kn) and static overlap m g / kn of a dynamic body on one point:\n");
+    for (std::uint32_t mi = 0; mi < m.size(); ++mi) {
+        for (std::uint32_t mj = 0; mj < m.size(); ++mj) {
+            if (!used[mj]) continue;
+            const double kn = w.contact.at(mi, mj).kn_N_m;
+            double shortest_s = INFINITY, largest_fraction = 0.0, largest_overlap_m = 0.0;
+            std::string shortest_body, largest_body;
+            for (std::size_t i = 0; i < b.size(); ++i) {
+                if (b.kind[i] != BodyKind::dynamic || b.material[i] != mi) continue;
+                const double period_s = 2.0 * std::numbers::pi * std::sqrt(b.mass_kg[i] / kn);
+                const double overlap_m = b.mass_kg[i] * w.settings.gravity_m_s2 / kn;
+                const std::span<const Vec2> corners(&b.world_vertices_m[b.vertex_begin[i]], b.vertex_count[i]);
+                const double fraction = overlap_m / block_dimensions(corners, 1.0).height_m;
+                if (period_s < shortest_s) {
+                    shortest_s = period_s;
+                    shortest_body = b.name[i];
+                }
+                if (fraction > largest_fraction) {
+                    largest_fraction = fraction;
+                    largest_overlap_m = overlap_m;
+                    largest_body = b.name[i];
+                }
+            }
+            if (shortest_body.empty()) continue;
+            fmt::print("  {} on {} (kn = {:.4g} N/m): shortest T = {:.4g} s ({}); largest overlap {:.3g} m = {:.3g} of "
+                       "the body's height ({})\n",
+                       m[mi], m[mj], kn, shortest_s, shortest_body, largest_overlap_m, largest_fraction, largest_body);
+        }
+    }
+    fmt::print("  (a body carrying others sinks more: the overlap grows with the weight above it)\n");
+}
+
 void print_contact(const World& w) {
     const Bodies& b = w.bodies;
     fmt::print("contact parameters per material pair:\n");
@@ -37,6 +105,7 @@ void print_contact(const World& w) {
                        "rebound e = {:.4g}), h_s = {:.4g}\n",
                        m[i], m[j], p.kn_N_m, p.ks_N_m, p.mu, p.h_n, p.h_n < 1.0 ? restitution_paper(p.h_n) : 0.0,
                        restitution_no_tension(p.h_n), p.h_s);
+            if (!w.contact.origins.empty()) print_stiffness_origin(w.contact.origins[i * m.size() + j]);
         }
     }
     // Dashpot coefficients for each dynamic body against a static one (M = its mass, one point)
@@ -85,8 +154,12 @@ void add_check_command(CLI::App& app) {
                    w.settings.gravity_m_s2, w.settings.output_interval_s);
         print_bodies(w);
         print_contact(w);
+        print_stiffness_effects(w);
         fmt::print("time step: dt = {:.4g} s; stable limit {:.4g} s (dt / limit = {:.3f}); {} steps\n", w.dt_s,
                    w.critical_dt_s, w.dt_s / w.critical_dt_s, std::llround(w.settings.duration_s / w.dt_s));
+        if (s.model.settling)
+            fmt::print("settling: at rest after {:.4g} s (every body's kinetic energy < {:.3g} x m g L over {:g} s)\n",
+                       w.settling_time_s, s.model.settling->kinetic_ratio, s.model.settling->window_s);
         print_motion(w);
     });
 }

@@ -13,6 +13,7 @@
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/time_series_csv.hpp"
+#include "laws/material_stiffness.hpp"
 #include "laws/restitution.hpp"
 
 namespace blockdem {
@@ -39,20 +40,21 @@ SimulationSettings read_settings(TableReader t) {
 }
 
 // Contact parameters from t, starting from base (the defaults of [contact] for a pair).
+// require: mu, and kn and ks when require_stiffness (the [contact] table without a material).
 // Damping: h_n directly, or e with e_meaning = "paper" (default) or "rebound".
 // base_meaning: the e_meaning a pair inherits from [contact].
-ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_all,
-                                          const std::string& base_meaning = "paper") {
+ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_mu,
+                                          bool require_stiffness, const std::string& base_meaning = "paper") {
     ContactParameters p = base;
-    auto required = [&](const char* key, double fallback) {
-        return require_all ? t.positive(key) : t.optional_positive(key).value_or(fallback);
+    auto stiffness = [&](const char* key, double fallback) {
+        return require_stiffness ? t.positive(key) : t.optional_positive(key).value_or(fallback);
     };
-    p.kn_N_m = required("kn", base.kn_N_m);
-    p.ks_N_m = required("ks", base.ks_N_m);
+    p.kn_N_m = stiffness("kn", base.kn_N_m);
+    p.ks_N_m = stiffness("ks", base.ks_N_m);
     if (auto mu = t.optional_number("mu")) {
         if (*mu < 0.0) t.fail("mu", fmt::format("must be >= 0, got {}", *mu));
         p.mu = *mu;
-    } else if (require_all) {
+    } else if (require_mu) {
         t.fail_missing("mu");
     }
     const auto e = t.optional_number("e");
@@ -73,10 +75,123 @@ ContactParameters read_contact_parameters(TableReader& t, const ContactParameter
     return p;
 }
 
+// young_modulus and poisson_ratio of one table ([contact] or [contact.materials.NAME]), each
+// falling back to base; nullopt when the table gives neither and there is no base.
+std::optional<ElasticMaterial> read_elastic_material(TableReader& t, const std::optional<ElasticMaterial>& base) {
+    const auto young = t.optional_number("young_modulus");
+    const auto poisson = t.optional_number("poisson_ratio");
+    if (!young && !base) {
+        if (poisson) t.fail("poisson_ratio", "needs young_modulus [Pa]: it sets ks from the material's Young's modulus");
+        return std::nullopt;
+    }
+    ElasticMaterial m = base.value_or(ElasticMaterial{});
+    if (young) {
+        if (!(*young > 0.0)) t.fail("young_modulus", fmt::format("must be > 0 [Pa], got {}", *young));
+        m.young_modulus_pa = *young;
+    }
+    if (poisson) {
+        if (!(*poisson > -1.0 && *poisson < 0.5))
+            t.fail("poisson_ratio", fmt::format("must be in (-1, 0.5) (a stable isotropic material), got {}", *poisson));
+        m.poisson_ratio = *poisson;
+    }
+    return m;
+}
+
+// [contact]'s stiffness: a material (young_modulus, the rule derives kn and ks) or explicit kn
+// and ks, never both in one table (which would win is not obvious).
+std::optional<ElasticMaterial> read_default_material(TableReader& t) {
+    const auto material = read_elastic_material(t, std::nullopt);
+    // One rule so far; the key lets a scenario name the rule it was made with.
+    t.choice("stiffness_rule", {"block_deformability"}, "block_deformability");
+    if (material) {
+        for (const char* key : {"kn", "ks"})
+            if (t.has(key))
+                t.fail(key, fmt::format("give either young_modulus (kn and ks derived from the material and the block "
+                                        "size, docs/physics.md) or explicit kn and ks, not both; to override the "
+                                        "derived {} for one pair of materials, give it in [[contact.pairs]]", key));
+    } else if (t.raw().contains("stiffness_rule")) {
+        t.fail("stiffness_rule", "needs young_modulus [Pa]: the rule derives kn and ks from the material");
+    } else if (!t.raw().contains("kn") && !t.raw().contains("ks")) {
+        t.fail("", fmt::format("missing the contact stiffness: give '{0}.young_modulus' [Pa] (kn and ks derived from "
+                               "the material) or '{0}.kn' and '{0}.ks' [N/m] per contact point", t.path()));
+    }
+    return material;
+}
+
+// The typical block of every material: the median over its dynamic bodies, or over its fixed and
+// driven ones if it has no dynamic body; over all bodies for a material no body uses.
+std::vector<BlockDimensions> typical_blocks(const MaterialPairs& pairs, const std::vector<BodyDef>& bodies) {
+    std::vector<std::vector<BlockDimensions>> moving(pairs.materials.size()), still(pairs.materials.size());
+    std::vector<BlockDimensions> all;
+    for (const BodyDef& b : bodies) {
+        const BlockDimensions d = block_dimensions(b.vertices_m, b.thickness_m);
+        (b.kind == BodyKind::dynamic ? moving : still)[pairs.id(b.material)].push_back(d);
+        all.push_back(d);
+    }
+    std::vector<BlockDimensions> typical;
+    for (std::size_t m = 0; m < pairs.materials.size(); ++m)
+        typical.push_back(typical_block(!moving[m].empty() ? moving[m] : !still[m].empty() ? still[m] : all));
+    return typical;
+}
+
+// Every pair's kn and ks from the rule (laws/material_stiffness.hpp), with their origin.
+// A material no body uses (the "default" of a scenario that names all its materials) never
+// touches anything, but the stable time step bounds each body by every pair its material is in:
+// its pair with a used material B copies B's own side, so it is never stiffer than B with B.
+void derive_stiffness(MaterialPairs& pairs, const std::vector<ElasticMaterial>& materials,
+                      const std::vector<BodyDef>& bodies) {
+    const std::vector<BlockDimensions> blocks = typical_blocks(pairs, bodies);
+    const std::size_t n = pairs.materials.size();
+    std::vector<bool> used(n, false);
+    for (const BodyDef& b : bodies) used[pairs.id(b.material)] = true;
+    pairs.origins.assign(n * n, StiffnessOrigin{});
+    for (std::uint32_t i = 0; i < n; ++i) {
+        for (std::uint32_t j = 0; j < n; ++j) {
+            StiffnessOrigin& origin = pairs.origins[i * n + j];
+            const std::uint32_t side_a = used[i] || !used[j] ? i : j;
+            const std::uint32_t side_b = used[j] || !used[i] ? j : i;
+            origin.derived = true;
+            origin.a = {materials[side_a], blocks[side_a]};
+            origin.b = {materials[side_b], blocks[side_b]};
+            origin.rule = block_joint_stiffness(origin.a, origin.b);
+            pairs.parameters[i * n + j].kn_N_m = origin.rule.kn_N_m;
+            pairs.parameters[i * n + j].ks_N_m = origin.rule.ks_N_m;
+        }
+    }
+}
+
+// Each material's E and nu: [contact]'s, or its own [contact.materials.NAME].
+std::vector<ElasticMaterial> read_materials(TableReader& t, const std::optional<ElasticMaterial>& base,
+                                            const MaterialPairs& pairs) {
+    std::vector<ElasticMaterial> out(pairs.materials.size(), base.value_or(ElasticMaterial{}));
+    auto table = t.optional_table("materials");
+    if (!table) return out;
+    if (!base)
+        t.fail("materials", "a material's young_modulus needs the stiffness rule: give [contact] young_modulus instead "
+                            "of kn and ks");
+    for (const auto& [key, node] : table->raw()) {
+        const std::string name(key.str());
+        TableReader m = table->table(name);
+        std::uint32_t id = 0;
+        try {
+            id = pairs.id(name);
+        } catch (const std::out_of_range&) {
+            const std::string guess = nearest(name, pairs.materials);
+            table->fail(name, fmt::format("no body uses material '{}'{}; materials in use: {}", name,
+                                          guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess),
+                                          fmt::join(pairs.materials, ", ")));
+        }
+        out[id] = *read_elastic_material(m, base);
+        m.reject_unknown_keys();
+    }
+    return out;
+}
+
 MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
     ContactParameters defaults;
     defaults.h_s = 1.0;  // the paper's recommendation
-    defaults = read_contact_parameters(t, defaults, true);
+    const std::optional<ElasticMaterial> material = read_default_material(t);
+    defaults = read_contact_parameters(t, defaults, true, !material);
     const std::string default_meaning = t.choice("e_meaning", {"paper", "rebound"}, "paper");
     MaterialPairs pairs;
     pairs.materials.push_back("default");
@@ -84,6 +199,8 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
         if (std::find(pairs.materials.begin(), pairs.materials.end(), b.material) == pairs.materials.end())
             pairs.materials.push_back(b.material);
     pairs.parameters.assign(pairs.materials.size() * pairs.materials.size(), defaults);
+    const std::vector<ElasticMaterial> elastic = read_materials(t, material, pairs);
+    if (material) derive_stiffness(pairs, elastic, bodies);
     std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
     for (TableReader pair : t.table_array("pairs")) {
         const auto names = [&] {
@@ -107,7 +224,18 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
         }
         if (!seen.insert({std::min(ids[0], ids[1]), std::max(ids[0], ids[1])}).second)
             pair.fail("materials", fmt::format("the pair {} / {} is given twice", names.first, names.second));
-        pairs.set(ids[0], ids[1], read_contact_parameters(pair, defaults, false, default_meaning));
+        for (const char* key : {"young_modulus", "poisson_ratio", "stiffness_rule"})
+            if (pair.has(key))
+                pair.fail(key, fmt::format("is a property of one material, not of a pair: give it in "
+                                           "[contact.materials.NAME] (or give this pair's kn and ks)"));
+        const bool kn_given = pair.has("kn");
+        const bool ks_given = pair.has("ks");
+        pairs.set(ids[0], ids[1], read_contact_parameters(pair, pairs.at(ids[0], ids[1]), false, false, default_meaning));
+        for (const auto& [i, j] : {std::pair{ids[0], ids[1]}, std::pair{ids[1], ids[0]}}) {
+            if (pairs.origins.empty()) break;
+            pairs.origins[i * pairs.materials.size() + j].kn_given = kn_given;
+            pairs.origins[i * pairs.materials.size() + j].ks_given = ks_given;
+        }
         pair.reject_unknown_keys();
     }
     t.reject_unknown_keys();

@@ -8,6 +8,7 @@
 
 #include "geometry/vec2.hpp"
 #include "laws/contact_parameters.hpp"
+#include "laws/material_stiffness.hpp"
 #include "motion/table_motion.hpp"
 
 namespace blockdem {
@@ -39,6 +40,7 @@ struct BodyDef {
 struct MaterialPairs {
     std::vector<std::string> materials;          ///< index = material id
     std::vector<ContactParameters> parameters;   ///< materials.size()^2, row-major
+    std::vector<StiffnessOrigin> origins;        ///< like parameters, or empty: every kn and ks given
 
     std::uint32_t id(const std::string& material) const;  ///< throws std::out_of_range
     const ContactParameters& at(std::uint32_t i, std::uint32_t j) const {
@@ -70,7 +72,8 @@ struct SimulationSettings {
 };
 
 /// A settling stage before the run (world/settling.hpp): the assembly is stepped under gravity,
-/// table at rest, until kinetic / potential energy stays below kinetic_ratio for window_s.
+/// table at rest, until every dynamic body's kinetic energy / (m g L) stays below kinetic_ratio
+/// for window_s (L: its size).
 struct SettlingSettings {
     double kinetic_ratio = 1e-8;   ///< [-]
     double window_s = 0.05;        ///< [s]

@@ -3,24 +3,40 @@
 #include <algorithm>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "dynamics/central_difference.hpp"
 #include "world/step.hpp"
 
 namespace blockdem {
 namespace {
 
-// The lowest corner of any dynamic body [m], and their total mass [kg].
-std::pair<double, double> lowest_point_and_mass(const World& w) {
+// Kinetic energy [J] of body i at t (its velocity at t must be up to date).
+double kinetic_energy_j(const Bodies& b, std::size_t i) {
+    const Vec2 v = b.velocity_at_t_m_s[i];
+    const double omega = b.angular_velocity_at_t_rad_s[i];
+    return 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
+}
+
+// The least settled dynamic body now: the largest kinetic energy / (m g L).
+struct LeastSettled {
+    double ratio = 0.0;
+    std::size_t body = 0;
+    double kinetic_j = 0.0;
+};
+
+LeastSettled least_settled(const World& w) {
     const Bodies& b = w.bodies;
-    double low = INFINITY;
-    double mass = 0.0;
+    LeastSettled worst;
     for (std::size_t i = 0; i < b.size(); ++i) {
         if (b.kind[i] != BodyKind::dynamic) continue;
-        mass += b.mass_kg[i];
-        for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k)
-            low = std::min(low, b.world_vertices_m[b.vertex_begin[i] + k].y);
+        const double kinetic_j = kinetic_energy_j(b, i);
+        // Without gravity the scale is 0: any motion is then "not settled", rest is settled.
+        const double scale_j = b.mass_kg[i] * w.settings.gravity_m_s2 * b.bounding_radius_m[i];
+        const double ratio = kinetic_j > 0.0 ? kinetic_j / scale_j : 0.0;
+        if (ratio > worst.ratio) worst = {ratio, i, kinetic_j};
     }
-    return {low, mass};
+    return worst;
 }
 
 void restart_clock(World& w) {
@@ -39,20 +55,24 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
     const TableMotion shaking = w.table_motion;
     w.table_motion = TableMotion{};
     update_body_geometry(w);
-    const auto [low_m, mass_kg] = lowest_point_and_mass(w);
+    const std::vector<Vec2> start_m = w.bodies.position_m;
+    const std::vector<double> start_rad = w.bodies.rotation_rad;
     // Clamped as a double before the cast (window = 1e300 s).
     const auto steps_per_window = static_cast<std::int64_t>(std::clamp(std::round(settings.window_s / w.dt_s), 1.0, 1e18));
     SettlingReport report;
-    double window_max = 0.0;
+    LeastSettled window_worst;
+    std::size_t reported_body = 0;
     for (std::int64_t n = 1;; ++n) {
         step_begin(w);
-        const double potential_j = w.energy.gravitational_j - mass_kg * w.settings.gravity_m_s2 * low_m;
-        window_max = std::max(window_max, w.energy.kinetic_j / std::max(potential_j, 1e-300));
+        const LeastSettled now = least_settled(w);
+        if (now.ratio >= window_worst.ratio) window_worst = now;
         step_end(w);
         if (n % steps_per_window == 0) {
-            report.kinetic_ratio = window_max;
-            report.settled = window_max < settings.kinetic_ratio;
-            window_max = 0.0;
+            report.kinetic_ratio = window_worst.ratio;
+            report.body_kinetic_j = window_worst.kinetic_j;
+            reported_body = window_worst.body;
+            report.settled = window_worst.ratio < settings.kinetic_ratio;
+            window_worst = LeastSettled{};
         }
         if (report.settled || w.time_s >= settings.max_time_s) {
             report.steps = n;
@@ -60,9 +80,25 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
             break;
         }
     }
+    const Bodies& b = w.bodies;
+    if (reported_body < b.size()) {
+        report.body = b.name[reported_body];
+        report.body_size_m = b.bounding_radius_m[reported_body];
+        report.body_moved_m = length(b.position_m[reported_body] - start_m[reported_body]);
+        report.body_turned_rad = std::abs(b.rotation_rad[reported_body] - start_rad[reported_body]);
+    }
     w.table_motion = shaking;
     restart_clock(w);
     return report;
+}
+
+std::string settling_failure(const SettlingReport& r, const SettlingSettings& settings) {
+    return fmt::format("the assembly did not settle within {:g} s: body '{}' still moves (kinetic energy {:.3g} J = "
+                       "{:.3g} x m g L, L = {:.3g} m its size; asked for < {:.3g} over {:g} s); it moved {:.3g} m and "
+                       "turned {:.3g} rad since settling started. Raise settling.max_time or settling.kinetic_ratio, "
+                       "or support the body",
+                       settings.max_time_s, r.body, r.body_kinetic_j, r.kinetic_ratio, r.body_size_m,
+                       settings.kinetic_ratio, settings.window_s, r.body_moved_m, r.body_turned_rad);
 }
 
 }  // namespace blockdem

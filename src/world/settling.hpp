@@ -4,11 +4,15 @@
 // is stepped under gravity with the table at rest until it is still, and then the clock is set
 // back to zero, keeping the contacts and their shear history.
 //
-// Criterion: the kinetic energy stays below kinetic_ratio times the assembly's potential energy
-// E_p = sum m g (y - y_low) (y_low: the lowest corner of any dynamic body when settling starts)
-// over a whole window of window_s. A window, not one sample: an oscillating contact passes
+// Criterion, body by body: every dynamic body's kinetic energy stays below kinetic_ratio times
+// m g L, with m its mass and L its size (its largest centroid-to-corner distance), over a whole
+// window of window_s. The scale m g L is the work of lifting the body by its own size: it cannot
+// vanish or change sign as the body moves (a potential energy measured from a datum can: a body
+// falling below the datum made the old ratio meaningless), and one body still moving in a large,
+// quiet assembly is not averaged away. A window, not one sample: an oscillating contact passes
 // through zero kinetic energy twice a period.
 #include <cstdint>
+#include <string>
 
 #include "world/world.hpp"
 
@@ -18,11 +22,20 @@ struct SettlingReport {
     bool settled = false;            ///< the criterion was met before max_time_s
     double time_s = 0.0;             ///< [s] of simulated settling
     std::int64_t steps = 0;
-    double kinetic_ratio = 0.0;      ///< [-] largest kinetic / potential energy over the last window
+    double kinetic_ratio = 0.0;      ///< [-] largest kinetic energy / (m g L) of any body over the last window
+    // The least settled body: the one that set kinetic_ratio.
+    std::string body;                ///< its name
+    double body_kinetic_j = 0.0;     ///< [J] its kinetic energy then
+    double body_size_m = 0.0;        ///< [m] its L
+    double body_moved_m = 0.0;       ///< [m] how far its centroid moved from where settling started, at the end
+    double body_turned_rad = 0.0;    ///< [rad] how far it turned, at the end
 };
 
 /// Settles the world in place (table at rest), then restarts the clock at t = 0: time, step
 /// count and energy ledger are reset and the settled positions become the initial positions.
 SettlingReport settle(World& w, const SettlingSettings& settings);
+
+/// The message for a settling that failed: the criterion, and which body did not settle.
+std::string settling_failure(const SettlingReport& report, const SettlingSettings& settings);
 
 }  // namespace blockdem

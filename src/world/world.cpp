@@ -169,10 +169,7 @@ World build_world(const Model& model) {
     initialise_energy(w);
     if (model.settling) {
         const SettlingReport settled = settle(w, *model.settling);
-        if (!settled.settled)
-            throw ModelError(fmt::format("the assembly did not settle within {:g} s (kinetic / potential energy {:.3g}, "
-                                         "asked for < {:.3g}); raise settling.max_time or settling.kinetic_ratio",
-                                         model.settling->max_time_s, settled.kinetic_ratio, model.settling->kinetic_ratio));
+        if (!settled.settled) throw ModelError(settling_failure(settled, *model.settling));
         w.settling_time_s = settled.time_s;
     }
     return w;
