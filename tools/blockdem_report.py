@@ -23,7 +23,10 @@ def main(argv=None):
     args = parser.parse_args(argv)
     formats = ["png"] + [f for f in args.formats.split(",") if f and f != "png"]
     try:
-        path = write_report(RunFolder(args.folder), args.blockdem, formats, not args.no_animation)
+        run = RunFolder(args.folder)
+        for note in run.limitations():
+            print(f"blockdem report: note: {note}", file=sys.stderr)
+        path = write_report(run, args.blockdem, formats, not args.no_animation)
     except RunFolderError as e:
         print(f"blockdem_report: {e}", file=sys.stderr)
         return 2

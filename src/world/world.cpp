@@ -10,6 +10,7 @@
 #include "dynamics/critical_time_step.hpp"
 #include "geometry/polygon.hpp"
 #include "world/settling.hpp"
+#include "world/simulation_error.hpp"
 #include "world/step.hpp"
 
 namespace blockdem {
@@ -157,7 +158,7 @@ World build_world(const Model& model) {
     if (model.settling) {
         const SettlingReport settled = settle(w, *model.settling);
         if (!settled.settled)
-            throw ModelError(fmt::format("the assembly did not settle within {:g} s (kinetic / potential energy {:.3g}, "
+            throw SimulationError(fmt::format("the assembly did not settle within {:g} s (kinetic / potential energy {:.3g}, "
                                          "asked for < {:.3g}); raise settling.max_time or settling.kinetic_ratio",
                                          model.settling->max_time_s, settled.kinetic_ratio, model.settling->kinetic_ratio));
         w.settling_time_s = settled.time_s;
