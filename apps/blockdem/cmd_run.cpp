@@ -53,7 +53,8 @@ void add_run_command(CLI::App& app) {
     cmd->add_flag("--quiet,-q", *quiet, "no progress lines");
     cmd->add_flag("--force", *force, "replace the run already in --out (removes only blockdem's own files there)");
     cmd->add_option("--threads,-j", *threads, "threads of the time step (default: OMP_NUM_THREADS, else all cores); "
-                                              "results do not depend on it");
+                                              "results do not depend on it")
+        ->check(CLI::PositiveNumber);
     cmd->callback([=] {
         if (*threads != 0) set_step_threads(*threads);
         RunRequest request;
