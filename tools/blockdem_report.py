@@ -30,6 +30,9 @@ def main(argv=None):
     except RunFolderError as e:
         print(f"blockdem_report: {e}", file=sys.stderr)
         return 2
+    except OSError as e:  # disk full, file too large, permissions: blockdem's exit status 4
+        print(f"blockdem_report: could not write: {e.filename or ''}: {e.strerror or e}", file=sys.stderr)
+        return 4
     print(path)
     return 0
 

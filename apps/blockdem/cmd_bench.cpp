@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "io/output_file.hpp"
 #include "scenes/assemblies.hpp"
 #include "world/step.hpp"
 
@@ -186,7 +187,7 @@ void run_bench(const BenchOptions& o) {
             }
             std::fflush(stdout);
         }
-    if (!o.markdown.empty()) std::ofstream(o.markdown) << table.str();
+    if (!o.markdown.empty()) write_output_file(o.markdown, table.str());
 }
 
 }  // namespace

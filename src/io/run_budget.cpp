@@ -89,6 +89,11 @@ void check_step_count(const LoadedScenario& s) {
         throw InputError({s.file.string(), "simulation.duration", 0, 0},
                          fmt::format("{:g} s is {:.3g} steps of dt = {:.3g} s, more than a run can count ({:.3g}); "
                                      "give a shorter duration", w.settings.duration_s, steps, w.dt_s, max_steps));
+    const double frames = w.settings.duration_s / s.output.vtk_interval_s;
+    if (s.output.vtk.value_or(true) && !(frames <= max_steps))
+        throw InputError({s.file.string(), "output.vtk_interval", 0, 0},
+                         fmt::format("{:g} s gives {:.3g} VTK frames, more than a run can count; give a longer "
+                                     "interval", s.output.vtk_interval_s, frames));
 }
 
 std::vector<std::string> check_run_budget(const LoadedScenario& s, const RunBudget& b, const fs::path& out_dir) {

@@ -30,8 +30,8 @@ struct RunBudget {
     double output_bytes() const { return history_bytes + energy_bytes + vtk_bytes; }
 };
 
-/// Throws InputError naming simulation.duration when the run has more steps than can be
-/// counted. Call it before anything counts steps or frames in integers.
+/// Throws InputError naming simulation.duration (output.vtk_interval) when the run has more
+/// steps (VTK frames) than can be counted. Call it before anything counts them in integers.
 void check_step_count(const LoadedScenario& s);
 
 /// Estimates the budget of running the loaded scenario (vtk: whether frames will be written).

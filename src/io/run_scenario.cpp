@@ -39,16 +39,24 @@ void write_scenario_copy(toml::table root, const std::filesystem::path& scenario
     write_output_file(out_dir / "scenario.toml", text.str());
 }
 
+// Everything that can refuse the run, before anything is written: whether the run fits the
+// machine, and the output folder. Returns whether VTK frames will be written.
+bool check_before_run(const LoadedScenario& loaded, const RunRequest& request) {
+    check_step_count(loaded);
+    const World& world = loaded.world;
+    const bool vtk_on = vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s);
+    for (const std::string& warning : check_run_budget(loaded, estimate_run_budget(loaded, vtk_on), request.out_dir))
+        if (request.on_warning) request.on_warning(warning);
+    prepare_output_folder(request.out_dir, request.force);
+    return vtk_on;
+}
+
 }  // namespace
 
 nlohmann::json run_scenario(const RunRequest& request) {
     LoadedScenario loaded = load_scenario(request.scenario, request.overrides);
     World& world = loaded.world;
-    check_step_count(loaded);
-    const bool vtk_on = vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s);
-    for (const std::string& warning : check_run_budget(loaded, estimate_run_budget(loaded, vtk_on), request.out_dir))
-        if (request.on_warning) request.on_warning(warning);
-    prepare_output_folder(request.out_dir, request.force);
+    const bool vtk_on = check_before_run(loaded, request);
     // The scenario as run (after --set), so that the folder documents itself.
     write_scenario_copy(loaded.root, request.scenario, request.out_dir);
     HistoryWriter history(request.out_dir / "history.csv", world);

@@ -13,6 +13,7 @@
 
 #include "io/input_error.hpp"
 #include "io/output_file.hpp"
+#include "io/output_folder.hpp"
 #include "sweep/mpi_cases.hpp"
 #include "sweep/results_table.hpp"
 
@@ -73,7 +74,7 @@ void check_out_folder(const SweepRequest& request, const Setup& s) {
     for (const char* name : {"sweep.json.tmp", "results.csv.tmp"}) std::filesystem::remove(request.out_dir / name, ec);
     const auto manifest = request.out_dir / "sweep.json";
     if (!std::filesystem::exists(manifest)) {
-        if (std::filesystem::exists(request.out_dir / "summary.json"))
+        if (holds_run(request.out_dir))
             throw InputError({request.out_dir.string(), "", 0, 0},
                              "the folder holds a run of `blockdem run` (summary.json); give the sweep another --out");
         return;

@@ -43,6 +43,14 @@ frames_after=$(ls "$tmp/reuse/vtk" | grep -c '^bodies_.*vtp$')
 [ "$frames_after" -eq "$(grep -c '<DataSet' "$tmp/reuse/vtk/bodies.pvd")" ] || fail "frames and bodies.pvd disagree after --force"
 [ -f "$tmp/reuse/my_notes.txt" ] && [ -f "$tmp/reuse/vtk/my_view.pvsm" ] || fail "--force removed a file blockdem did not write"
 grep -q "duration = 0.2" "$tmp/reuse/scenario.toml" || fail "--force run did not replace scenario.toml"
+#    A sweep is refused in a run folder, and a run in a sweep folder (exit 2).
+msg=$("$bin" sweep "$sliding" -q --vary contact.mu=0.3,0.4 --vary simulation.duration=0.05 --out "$tmp/reuse" 2>&1); rc=$?
+[ $rc -eq 2 ] || fail "sweep into a run folder: exit $rc, expected 2"
+expect_in "$msg" "the folder holds a run of \`blockdem run\`"
+"$bin" sweep "$sliding" -q --vary contact.mu=0.3,0.4 --vary simulation.duration=0.05 --out "$tmp/sweep" > /dev/null || fail "sweep"
+msg=$("$bin" run "$sliding" --out "$tmp/sweep" -q --force 2>&1); rc=$?
+[ $rc -eq 2 ] || fail "run into a sweep folder: exit $rc, expected 2"
+expect_in "$msg" "the folder holds a sweep (sweep.json)"
 #    A folder with no run: other files are fine, a file with one of blockdem's names is not
 #    (not even with --force: it is not blockdem's to remove).
 mkdir "$tmp/mine" && echo "data" > "$tmp/mine/readme.txt"
