@@ -223,6 +223,11 @@ CaseResult run_case(const SweepScenario& scenario, const SweepPlan& plan, const 
         throw;
     } catch (const OutputError&) {
         throw;  // a full disk stops the sweep; it is not this case's fault
+    } catch (const SimulationError& e) {
+        // Started and failed before the shaking: an assembly that did not settle.
+        result.status = "failed";
+        result.error = e.what();
+        result.bodies.assign(scenario.body_names.size(), std::nullopt);
     } catch (const std::exception& e) {
         // Bad input for this case (a value out of range, a missing record): recorded, not fatal.
         result.status = "error";
