@@ -46,7 +46,10 @@ for signal in INT TERM KILL; do
     diff <(ls "$out/cases" | sort -n) <(tail -n +2 "$out/finished_cases.csv" | cut -d, -f1 | sort -n) \
       || { echo "$signal: histories of unfinished cases were left"; exit 1; }
   fi
+  # As if killed inside an atomic replace: the rerun removes the temporaries.
+  [ "$signal" = KILL ] && echo "torn" > "$out/results.csv.tmp" && echo "torn" > "$out/sweep.json.tmp"
   "$blockdem" "${args[@]}" --out "$out" > "$out.rerun.log"
+  ! ls "$out" | grep -q '\.tmp$' || { echo "$signal: the rerun left a temporary file: $(ls "$out")"; exit 1; }
   grep -q "12 done (0 failed or bad input), $((12 - done_before)) run now" "$out.rerun.log" || { cat "$out.rerun.log"; exit 1; }
   diff <(without_wall_time "$work/whole/results.csv") <(without_wall_time "$out/results.csv")
   grep -q '"status": "complete"' "$out/sweep.json"
