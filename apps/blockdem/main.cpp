@@ -7,8 +7,8 @@
 //   SIGINT / SIGTERM (results so far kept).
 #include <csignal>
 #include <exception>
-#include <stdexcept>
 #include <iostream>
+#include <stdexcept>
 
 #include <CLI/CLI.hpp>
 
@@ -33,8 +33,6 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {
         return app.exit(e);  // --help
-    } catch (const CLI::RuntimeError& e) {
-        return e.get_exit_code();
     } catch (const CLI::ParseError& e) {
         app.exit(e);  // prints the message and the usage
         return 2;
