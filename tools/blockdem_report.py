@@ -24,10 +24,16 @@ def main(argv=None):
     args = parser.parse_args(argv)
     formats = ["png"] + [f for f in args.formats.split(",") if f and f != "png"]
     try:
-        path = write_report(RunFolder(study_base_folder(args.folder)), args.blockdem, formats, not args.no_animation)
+        run = RunFolder(study_base_folder(args.folder))
+        for note in run.limitations():
+            print(f"blockdem report: note: {note}", file=sys.stderr)
+        path = write_report(run, args.blockdem, formats, not args.no_animation)
     except RunFolderError as e:
         print(f"blockdem_report: {e}", file=sys.stderr)
         return 2
+    except OSError as e:  # disk full, file too large, permissions: blockdem's exit status 4
+        print(f"blockdem_report: could not write: {e.filename or ''}: {e.strerror or e}", file=sys.stderr)
+        return 4
     print(path)
     return 0
 

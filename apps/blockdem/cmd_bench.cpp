@@ -16,11 +16,9 @@
 #include <vector>
 
 #include <fmt/format.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "apps/blockdem/commands.hpp"
+#include "io/output_file.hpp"
 #include "scenes/assemblies.hpp"
 #include "world/step.hpp"
 
@@ -85,13 +83,6 @@ Model make_scene(const std::string& scene, int n) {
     throw std::invalid_argument("unknown scene '" + scene + "' (wall, slope, rockfill)");
 }
 
-void set_threads(int n) {
-#ifdef _OPENMP
-    omp_set_num_threads(n);
-#else
-    if (n != 1) throw std::invalid_argument("this build has no OpenMP: only --threads 1");
-#endif
-}
 
 // One world per thread count, copied from one warmed-up world, so that every thread count times
 // the same steps from the same state (the results are bit-identical: parallel.hpp). Memory is
@@ -103,7 +94,7 @@ struct TimedWorld {
 
 std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const BenchOptions& o) {
     if (o.threads.empty()) throw std::invalid_argument("--threads: give at least one thread count");
-    set_threads(o.threads.front());
+    set_step_threads(o.threads.front());
     World w = build_world(make_scene(scene, n));
     for (int i = 0; i < o.warmup; ++i) step(w);
     BenchResult r;
@@ -129,7 +120,7 @@ std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const Ben
 void time_run(TimedWorld& c, const BenchOptions& o) {
     BenchResult& r = c.result;
     World& w = c.world;
-    set_threads(r.threads);
+    set_step_threads(r.threads);
     const double busy = o.idle_wait_s > 0.0 ? wait_for_idle(o.idle_wait_s) : 0.0;
     w.timings = StepTimings{};
     w.timings.enabled = true;
@@ -196,7 +187,7 @@ void run_bench(const BenchOptions& o) {
             }
             std::fflush(stdout);
         }
-    if (!o.markdown.empty()) std::ofstream(o.markdown) << table.str();
+    if (!o.markdown.empty()) write_output_file(o.markdown, table.str());
 }
 
 }  // namespace

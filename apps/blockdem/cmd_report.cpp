@@ -14,6 +14,8 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "io/input_error.hpp"
+#include "io/output_file.hpp"
 
 extern char** environ;
 
@@ -62,7 +64,10 @@ void write_report(const std::string& out_dir, bool animation_file) {
     std::vector<std::string> args = {from_env("BLOCKDEM_PYTHON", "/usr/bin/python3"), script.string(), out_dir};
     if (!ec) args.insert(args.end(), {"--blockdem", self.string()});
     if (!animation_file) args.push_back("--no-animation");
-    if (const int status = run_child(args); status != 0)
+    const int status = run_child(args);
+    if (status == 2) throw InputError({out_dir, "", 0, 0}, "not a run folder (see the message above)");
+    if (status == 4) throw OutputError(fmt::format("{}: the report could not be written (see the message above)", out_dir));
+    if (status != 0)
         throw std::runtime_error(fmt::format("the report was not written ({} exited with status {})", script.string(), status));
 }
 

@@ -1,4 +1,4 @@
-// `blockdem run SCENARIO --out DIR [--set key=value]...`
+// `blockdem run SCENARIO --out DIR [--set key=value]... [--force] [--threads N]`
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/stop_signal.hpp"
 #include "io/run_scenario.hpp"
 
 namespace blockdem::cli {
@@ -46,17 +47,33 @@ void add_run_command(CLI::App& app) {
     auto out = std::make_shared<std::string>("out");
     auto sets = std::make_shared<std::vector<std::string>>();
     auto quiet = std::make_shared<bool>(false);
+    auto force = std::make_shared<bool>(false);
+    auto threads = std::make_shared<int>(0);
     cmd->add_option("scenario", *scenario, "scenario file (TOML)")->required();
     cmd->add_option("--out,-o", *out, "output folder")->capture_default_str();
     cmd->add_option("--set", *sets, "override a scenario key: --set contact.h_s=0.5 (repeatable)");
     cmd->add_flag("--quiet,-q", *quiet, "no progress lines");
+    cmd->add_flag("--force", *force, "replace the run already in --out (removes only blockdem's own files there)");
+    cmd->add_option("--threads,-j", *threads, "threads of the time step (default: OMP_NUM_THREADS, else all cores); "
+                                              "results do not depend on it")
+        ->check(CLI::PositiveNumber);
     cmd->callback([=] {
+        if (*threads != 0) set_step_threads(*threads);
         RunRequest request;
         request.scenario = *scenario;
         request.overrides = *sets;
         request.out_dir = *out;
+        request.force = *force;
         if (!*quiet) request.on_progress = print_progress;
+        request.on_warning = [](const std::string& text) { fmt::print(stderr, "warning: {}\n", text); };
+        request.stop_requested = &install_stop_handlers();
         const nlohmann::json summary = run_scenario(request);
+        if (summary["status"] == "interrupted") {
+            fmt::print(stderr, "interrupted at t = {:.4g} s of {:.4g} s: the results so far are in {}/ (summary.json "
+                               "status \"interrupted\")\n",
+                       summary["time_s"].get<double>(), summary["end_time_s"].get<double>(), *out);
+            throw ExitStatus{stop_exit_status()};
+        }
         print_outcome(summary, *out);
         // [output] report = true: the report is made here, in the tool, because the library never
         // starts processes.

@@ -4,8 +4,6 @@
 // threads, or on MPI ranks under mpirun; resumable; a progress line on stderr.
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -14,21 +12,12 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/stop_signal.hpp"
 #include "sweep/mpi_cases.hpp"
 #include "sweep/sweep.hpp"
 
 namespace blockdem::cli {
 namespace {
-
-// A signal handler can only reach static storage: this flag is the one piece of it, set by
-// Ctrl-C and read by the sweep (which stops handing out cases and cancels the running ones).
-std::atomic<bool> interrupted{false};
-
-extern "C" void on_interrupt(int) {
-    interrupted.store(true);
-    std::signal(SIGINT, SIG_DFL);  // a second Ctrl-C ends the process at once
-    std::signal(SIGTERM, SIG_DFL);
-}
 
 struct SweepArguments {
     std::string scenario;
@@ -160,15 +149,11 @@ void add_sweep_command(CLI::App& app) {
         sweep::SweepRequest request = make_request(*a, describe_command(*a));
         if (!a->quiet) request.on_progress = progress_printer();
         // mpirun ends a job on Ctrl-C itself; a plain run stops cleanly and keeps what is done.
-        if (!sweep::started_by_mpi_launcher()) {
-            std::signal(SIGINT, on_interrupt);
-            std::signal(SIGTERM, on_interrupt);
-            request.cancel = &interrupted;
-        }
+        if (!sweep::started_by_mpi_launcher()) request.cancel = &install_stop_handlers();
         const sweep::SweepOutcome outcome = sweep::run_sweep(request);
         if (!outcome.reporting_rank) return;
         print_outcome(outcome, a->out);
-        if (!outcome.complete() && interrupted.load()) throw CLI::RuntimeError(130);
+        if (!outcome.complete() && stop_exit_status() != 0) throw ExitStatus{stop_exit_status()};
     });
 }
 

@@ -15,6 +15,17 @@ void add_bench_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 void add_converge_command(CLI::App& app);
 
+/// Thrown by a command to end the program with this status, after its own message (an
+/// interrupted run: 130 / 143).
+struct ExitStatus {
+    int code = 0;
+};
+
+/// Sets the number of threads of the time step (--threads of run and bench; step_threads.cpp).
+/// Results do not depend on it (world/parallel.hpp). Throws CLI::ValidationError for n < 1, or
+/// n > 1 in a build without OpenMP.
+void set_step_threads(int n);
+
 /// Writes out_dir/report.html and out_dir/figures/ through tools/blockdem_report.py (cmd_report.cpp).
 void write_report(const std::string& out_dir, bool animation_file = true);
 

@@ -1,12 +1,20 @@
 // blockdem: command-line front end. No physics here: it parses arguments, calls the library,
-// and turns errors into a message and a non-zero exit status.
+// and turns errors into a message and an exit status (docs/outputs.md):
+//   0 ok; 1 internal error (a bug, or a broken installation); 2 bad input (scenario, arguments,
+//   an output folder that holds another run, a run that would not fit the machine); 3 a run
+//   that failed after it started (unstable, an assembly that did not settle); 4 an output file
+//   could not be written (disk full, file too large, permissions); 130 / 143 interrupted by
+//   SIGINT / SIGTERM (results so far kept).
+#include <csignal>
 #include <exception>
 #include <iostream>
+#include <stdexcept>
 
 #include <CLI/CLI.hpp>
 
 #include "apps/blockdem/commands.hpp"
 #include "io/input_error.hpp"
+#include "io/output_file.hpp"
 #include "world/simulation_error.hpp"
 
 int main(int argc, char** argv) {
@@ -19,16 +27,30 @@ int main(int argc, char** argv) {
     blockdem::cli::add_bench_command(app);
     blockdem::cli::add_sweep_command(app);
     blockdem::cli::add_converge_command(app);
+    // With a file-size limit (ulimit -f) the kernel would kill the process with SIGXFSZ and no
+    // message; ignored, the write fails with EFBIG and the run says which file.
+    std::signal(SIGXFSZ, SIG_IGN);
     try {
         app.parse(argc, argv);
+    } catch (const CLI::Success& e) {
+        return app.exit(e);  // --help
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        app.exit(e);  // prints the message and the usage
+        return 2;
+    } catch (const blockdem::cli::ExitStatus& e) {
+        return e.code;
     } catch (const blockdem::InputError& e) {
         std::cerr << "error: " << e.what() << '\n';
         return 2;
     } catch (const blockdem::SimulationError& e) {
         std::cerr << "error: " << e.what() << '\n';
         return 3;
+    } catch (const blockdem::OutputError& e) {
+        std::cerr << "error: could not write the output: " << e.what() << '\n';
+        return 4;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "error: " << e.what() << '\n';  // a bad value the library refused (sweep plans)
+        return 2;
     } catch (const std::exception& e) {
         std::cerr << "error: " << e.what() << '\n';
         return 1;

@@ -1,8 +1,6 @@
 #include "io/bodies_json_writer.hpp"
 
-#include <fstream>
-
-#include "io/input_error.hpp"
+#include "io/output_file.hpp"
 
 namespace blockdem {
 
@@ -30,9 +28,7 @@ nlohmann::json bodies_json(const World& w) {
 }
 
 void write_bodies_json(const std::filesystem::path& file, const World& w) {
-    std::ofstream out(file);
-    out << bodies_json(w).dump(1) << '\n';
-    if (!out) throw InputError({file.string(), "", 0, 0}, "cannot write the file");
+    write_output_file(file, bodies_json(w).dump(1) + '\n');
 }
 
 }  // namespace blockdem

@@ -2,24 +2,22 @@
 
 #include <fmt/format.h>
 
-#include "io/input_error.hpp"
-
 namespace blockdem {
 
 EnergyWriter::EnergyWriter(const std::filesystem::path& file) : out_(file) {
-    if (!out_) throw InputError({file.string(), "", 0, 0}, "cannot write the energy file");
-    out_ << "t_s,kinetic_J,gravitational_change_J,elastic_J,normal_dashpot_J,shear_dashpot_J,friction_J,table_work_J,"
-            "residual_J,balance_error\n";
+    out_.append("t_s,kinetic_J,gravitational_change_J,elastic_J,normal_dashpot_J,shear_dashpot_J,friction_J,table_work_J,"
+            "residual_J,balance_error\n");
+    out_.flush();
 }
 
 void EnergyWriter::record(const World& w) {
     const EnergyLedger& e = w.energy;
-    out_ << fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g}\n", w.time_s, e.kinetic_j,
+    out_.append(fmt::format("{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.6g}\n", w.time_s, e.kinetic_j,
                         e.gravitational_j - e.initial_gravitational_j, e.elastic_j, e.normal_dashpot_j,
-                        e.shear_dashpot_j, e.friction_j, e.table_work_j, e.residual_j(), e.balance_error());
+                        e.shear_dashpot_j, e.friction_j, e.table_work_j, e.residual_j(), e.balance_error()));
     if (++rows_ % 200 == 0) out_.flush();
 }
 
-void EnergyWriter::finish(const World&) { out_.flush(); }
+void EnergyWriter::finish(const World&) { out_.close(); }
 
 }  // namespace blockdem

@@ -8,8 +8,8 @@
 // residual_J = kinetic + gravitational_change + elastic + dissipated - table_work
 //              - (initial kinetic + initial elastic); it is 0 for an exact integration.
 #include <filesystem>
-#include <fstream>
 
+#include "io/output_file.hpp"
 #include "world/simulation.hpp"
 
 namespace blockdem {
@@ -21,7 +21,7 @@ public:
     void finish(const World& w) override;
 
 private:
-    std::ofstream out_;
+    OutputFile out_;
     std::int64_t rows_ = 0;
 };
 

@@ -1,9 +1,8 @@
 #include "io/history_writer.hpp"
 
-#include <fmt/format.h>
-#include <fmt/os.h>
+#include <iterator>
 
-#include "io/input_error.hpp"
+#include <fmt/format.h>
 
 namespace blockdem {
 
@@ -15,14 +14,16 @@ const std::vector<std::pair<const char*, const char*>>& history_column_units() {
 }
 
 HistoryWriter::HistoryWriter(const std::filesystem::path& file, const World& w) : out_(file) {
-    if (!out_) throw InputError({file.string(), "", 0, 0}, "cannot write the history file");
-    out_ << "t";
+    std::string header = "t";
     for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
         if (!w.bodies.record[i]) continue;
         bodies_.push_back(i);
-        for (const auto& [suffix, unit] : history_column_units()) out_ << ',' << w.bodies.name[i] << '.' << suffix;
+        for (const auto& [suffix, unit] : history_column_units())
+            fmt::format_to(std::back_inserter(header), ",{}.{}", w.bodies.name[i], suffix);
     }
-    out_ << '\n';
+    header += '\n';
+    out_.append(header);
+    out_.flush();
 }
 
 void HistoryWriter::record(const World& w) {
@@ -35,10 +36,10 @@ void HistoryWriter::record(const World& w) {
                        b.acceleration_m_s2[i].y, b.angular_acceleration_rad_s2[i]);
     }
     row += '\n';
-    out_ << row;
+    out_.append(row);
     if (++rows_ % 200 == 0) out_.flush();
 }
 
-void HistoryWriter::finish(const World&) { out_.flush(); }
+void HistoryWriter::finish(const World&) { out_.close(); }
 
 }  // namespace blockdem

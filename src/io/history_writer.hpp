@@ -2,11 +2,12 @@
 // history.csv: one row per output time. Column t [s], then for every recorded body
 // <name>.x, .y [m] (centroid), .rot [rad] (counter-clockwise from the start), .vx, .vy [m/s],
 // .vrot [rad/s], .ax, .ay [m/s^2], .arot [rad/s^2]. Rows are flushed regularly and at the end,
-// also when a run stops on an error, so what was written stays readable.
+// also when a run stops on an error or a signal, so what was written stays readable; a write
+// that fails throws OutputError and leaves only complete rows.
 #include <filesystem>
-#include <fstream>
 #include <vector>
 
+#include "io/output_file.hpp"
 #include "world/simulation.hpp"
 
 namespace blockdem {
@@ -18,7 +19,7 @@ public:
     void finish(const World& w) override;
 
 private:
-    std::ofstream out_;
+    OutputFile out_;
     std::vector<std::uint32_t> bodies_;
     std::int64_t rows_ = 0;
 };

@@ -1,13 +1,16 @@
 #include "io/run_scenario.hpp"
 
 #include <chrono>
-#include <fstream>
 #include <optional>
+#include <sstream>
 
 #include "io/bodies_json_writer.hpp"
 #include "io/energy_writer.hpp"
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
+#include "io/output_file.hpp"
+#include "io/output_folder.hpp"
+#include "io/run_budget.hpp"
 #include "io/scenario.hpp"
 #include "io/summary_writer.hpp"
 #include "io/vtk_writer.hpp"
@@ -31,20 +34,31 @@ void make_file_keys_absolute(toml::table& root, const std::filesystem::path& sce
 
 void write_scenario_copy(toml::table root, const std::filesystem::path& scenario, const std::filesystem::path& out_dir) {
     make_file_keys_absolute(root, scenario.parent_path());
-    std::ofstream copy(out_dir / "scenario.toml");
-    copy << root << '\n';
+    std::ostringstream text;
+    text << scenario_copy_marker << " (" << scenario.string() << ", after --set)\n" << root << '\n';
+    write_output_file(out_dir / "scenario.toml", text.str());
+}
+
+// Everything that can refuse the run, before anything is written: whether the run fits the
+// machine, and the output folder. Returns whether VTK frames will be written.
+bool check_before_run(const LoadedScenario& loaded, const RunRequest& request) {
+    check_step_count(loaded);
+    const World& world = loaded.world;
+    const bool vtk_on = vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s);
+    for (const std::string& warning : check_run_budget(loaded, estimate_run_budget(loaded, vtk_on), request.out_dir))
+        if (request.on_warning) request.on_warning(warning);
+    prepare_output_folder(request.out_dir, request.force);
+    return vtk_on;
 }
 
 }  // namespace
 
 nlohmann::json run_scenario(const RunRequest& request) {
     LoadedScenario loaded = load_scenario(request.scenario, request.overrides);
-    std::error_code ec;
-    std::filesystem::create_directories(request.out_dir, ec);
-    if (ec) throw InputError({request.out_dir.string(), "", 0, 0}, "cannot create the output folder: " + ec.message());
+    World& world = loaded.world;
+    const bool vtk_on = check_before_run(loaded, request);
     // The scenario as run (after --set), so that the folder documents itself.
     write_scenario_copy(loaded.root, request.scenario, request.out_dir);
-    World& world = loaded.world;
     HistoryWriter history(request.out_dir / "history.csv", world);
     EnergyWriter energy(request.out_dir / "energy.csv");
     write_bodies_json(request.out_dir / "bodies.json", world);
@@ -52,7 +66,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
     RunOptions options;
     options.recorders = {&history, &energy};
     std::optional<VtkWriter> vtk;
-    if (vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s)) {
+    if (vtk_on) {
         vtk.emplace(request.out_dir / "vtk", VtkSettings{loaded.output.vtk_interval_s, loaded.output.vtk_contacts});
         options.recorders.push_back(&*vtk);
     }
@@ -65,26 +79,33 @@ nlohmann::json run_scenario(const RunRequest& request) {
     };
     options.on_step = [&monitor](const World& w) { monitor.observe(w); };
     options.on_progress = request.on_progress;
+    options.stop_requested = request.stop_requested;
 
     const auto started = std::chrono::steady_clock::now();
     RunInfo info;
     info.scenario = request.scenario.string();
     auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
-    try {
-        run_simulation(world, options);
-    } catch (const std::exception& e) {
-        info.status = "failed";
-        info.error = e.what();
+    auto summary_with = [&](const std::string& status, const std::string& error) {
+        info.status = status;
+        info.error = error;
         info.wall_s = wall();
         nlohmann::json summary = make_summary(world, monitor, info);
+        summary["end_time_s"] = world.settings.duration_s;  // time_s below it: failed or interrupted
         summary["outputs"] = outputs();
-        write_summary(request.out_dir / "summary.json", summary);
+        return summary;
+    };
+    RunEnd end = RunEnd::completed;
+    try {
+        end = run_simulation(world, options);
+    } catch (const std::exception& e) {
+        try {
+            write_summary(request.out_dir / "summary.json", summary_with("failed", e.what()));
+        } catch (const OutputError&) {
+            // The disk that stopped the run may refuse the summary too: the first error is the news.
+        }
         throw;
     }
-    info.status = "completed";
-    info.wall_s = wall();
-    nlohmann::json summary = make_summary(world, monitor, info);
-    summary["outputs"] = outputs();
+    nlohmann::json summary = summary_with(end == RunEnd::stopped ? "interrupted" : "completed", "");
     write_summary(request.out_dir / "summary.json", summary);
     return summary;
 }

@@ -1,9 +1,8 @@
 #include "io/summary_writer.hpp"
 
-#include <fstream>
-
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
+#include "io/output_file.hpp"
 #include "io/run_checks.hpp"
 
 namespace blockdem {
@@ -74,9 +73,7 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
 }
 
 void write_summary(const std::filesystem::path& file, const nlohmann::json& summary) {
-    std::ofstream out(file);
-    if (!out) throw InputError({file.string(), "", 0, 0}, "cannot write the summary file");
-    out << summary.dump(2) << '\n';
+    write_output_file(file, summary.dump(2) + '\n');
 }
 
 }  // namespace blockdem

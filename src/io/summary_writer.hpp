@@ -1,7 +1,8 @@
 #pragma once
 // summary.json: per body the peak rotation, overturning, sliding and rocking, displacement
 // relative to the table; for the run its status and the energy balance. Written at the end of
-// a run, and also when the run stops on an error (status "failed" with the message).
+// a run, and also when the run stops on an error (status "failed" with the message) or on a
+// signal (status "interrupted"). Written whole or not at all (io/output_file.hpp).
 #include <filesystem>
 #include <string>
 
@@ -14,7 +15,7 @@ namespace blockdem {
 
 struct RunInfo {
     std::string scenario;        ///< scenario file
-    std::string status;          ///< "completed" or "failed"
+    std::string status;          ///< "completed", "failed" or "interrupted" (SIGINT / SIGTERM)
     std::string error;           ///< the message when failed
     double wall_s = 0.0;         ///< [s]
 };

@@ -1,11 +1,11 @@
 #include "io/vtk_writer.hpp"
 
-#include <fstream>
 #include <iterator>
 
 #include <fmt/format.h>
 
 #include "io/input_error.hpp"
+#include "io/output_file.hpp"
 
 namespace blockdem {
 namespace {
@@ -81,9 +81,7 @@ std::vector<const ContactPoint*> active_points(const World& w, std::vector<const
 }
 
 void write_text(const std::filesystem::path& file, const char* data, std::size_t size) {
-    std::ofstream out(file, std::ios::binary);
-    out.write(data, static_cast<std::streamsize>(size));
-    if (!out) throw InputError({file.string(), "", 0, 0}, "cannot write the VTK file");
+    write_output_file(file, std::string_view(data, size));
 }
 
 void write_collection(const std::filesystem::path& file, const std::string& prefix, const std::vector<double>& times_s) {
@@ -174,7 +172,14 @@ void VtkWriter::record(const World& w) {
     write_text(dir_ / fmt::format("bodies_{:06d}.vtp", index), bodies.data(), bodies.size());
     if (settings_.contacts) {
         const std::string contacts = vtk_contacts_polydata(w);
-        write_text(dir_ / fmt::format("contacts_{:06d}.vtp", index), contacts.data(), contacts.size());
+        try {
+            write_text(dir_ / fmt::format("contacts_{:06d}.vtp", index), contacts.data(), contacts.size());
+        } catch (const OutputError&) {
+            // The frame is a pair: a bodies file without its contacts would not be listed anyway.
+            std::error_code ignored;
+            std::filesystem::remove(dir_ / fmt::format("bodies_{:06d}.vtp", index), ignored);
+            throw;
+        }
     }
     times_s_.push_back(w.time_s);
     // The next multiple of the interval after now (several when outputs are sparser than frames).

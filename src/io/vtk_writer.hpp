@@ -27,7 +27,8 @@ public:
     /// Creates dir (DIR/vtk); throws InputError when it cannot.
     VtkWriter(std::filesystem::path dir, VtkSettings settings);
     void record(const World& w) override;
-    /// Writes the .pvd collections (also after a run stopped on an error).
+    /// Writes the .pvd collections (also after a run stopped on an error or a signal). A frame
+    /// whose write failed is removed and not listed, so the collection names only whole files.
     void finish(const World& w) override;
     std::int64_t frames_written() const { return static_cast<std::int64_t>(times_s_.size()); }
 

@@ -10,6 +10,7 @@
 #include "analysis/housner_rocking.hpp"
 #include "analysis/rocking_mode.hpp"
 #include "io/history_writer.hpp"
+#include "io/output_file.hpp"
 #include "io/input_error.hpp"
 #include "io/overrides.hpp"
 #include "io/scenario.hpp"
@@ -107,6 +108,14 @@ void run_dem(World& w, const SweepScenario& scenario, const SweepCase& c, const 
     try {
         run_simulation(w, run);
         result.status = "completed";
+    } catch (const CaseCancelled&) {
+        // Only finished cases leave files: a rerun does this one again from the start.
+        if (history) {
+            history.reset();
+            std::error_code ignored;
+            std::filesystem::remove_all(options.histories_dir / std::to_string(c.id), ignored);
+        }
+        throw;
     } catch (const RunStoppedEarly&) {
         result.status = "completed";
     } catch (const SimulationError& e) {
@@ -212,6 +221,13 @@ CaseResult run_case(const SweepScenario& scenario, const SweepPlan& plan, const 
             run_dem(w, scenario, c, options, cancel, result);
     } catch (const CaseCancelled&) {
         throw;
+    } catch (const OutputError&) {
+        throw;  // a full disk stops the sweep; it is not this case's fault
+    } catch (const SimulationError& e) {
+        // Started and failed before the shaking: an assembly that did not settle.
+        result.status = "failed";
+        result.error = e.what();
+        result.bodies.assign(scenario.body_names.size(), std::nullopt);
     } catch (const std::exception& e) {
         // Bad input for this case (a value out of range, a missing record): recorded, not fatal.
         result.status = "error";

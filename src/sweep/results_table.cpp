@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "io/output_file.hpp"
+
 namespace blockdem::sweep {
 namespace {
 
@@ -20,8 +22,8 @@ const std::vector<std::string> body_columns{"overturned",     "overturning_time_
 
 std::string number(double v) { return fmt::format("{:.10g}", v); }
 
-std::string system_error(const std::string& what, const std::filesystem::path& file) {
-    return fmt::format("{}: {}: {}", file.string(), what, std::strerror(errno));
+OutputError system_error(const std::string& what, const std::filesystem::path& file) {
+    return OutputError(fmt::format("{}: {}: {}", file.string(), what, std::strerror(errno)));
 }
 
 void write_all(int fd, const std::string& text, const std::filesystem::path& file) {
@@ -29,7 +31,7 @@ void write_all(int fd, const std::string& text, const std::filesystem::path& fil
     while (done < text.size()) {
         const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
         if (n < 0 && errno == EINTR) continue;
-        if (n < 0) throw std::runtime_error(system_error("cannot write", file));
+        if (n < 0) throw system_error("cannot write", file);
         done += static_cast<std::size_t>(n);
     }
 }
@@ -103,9 +105,9 @@ FinishedCasesLog::FinishedCasesLog(const std::filesystem::path& file, const std:
     while (std::getline(lines, line))
         if (!line.empty()) rows_[leading_id(line)] = line;
     fd_ = ::open(file.c_str(), O_WRONLY | O_CREAT, 0644);
-    if (fd_ < 0) throw std::runtime_error(system_error("cannot open", file));
+    if (fd_ < 0) throw system_error("cannot open", file);
     if (::ftruncate(fd_, static_cast<off_t>(text.size())) != 0 || ::lseek(fd_, 0, SEEK_END) < 0)
-        throw std::runtime_error(system_error("cannot truncate", file));
+        throw system_error("cannot truncate", file);
     if (text.empty()) {
         write_all(fd_, header + "\n", file_);
         ::fsync(fd_);
@@ -123,16 +125,26 @@ void FinishedCasesLog::append(std::int64_t id, const std::string& row) {
 }
 
 void FinishedCasesLog::sync() const {
-    if (::fsync(fd_) != 0) throw std::runtime_error(system_error("cannot sync", file_));
+    if (::fsync(fd_) != 0) throw system_error("cannot sync", file_);
 }
 
 void write_file_atomically(const std::filesystem::path& file, const std::string& text) {
     const std::filesystem::path temporary = file.string() + ".tmp";
     const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd < 0) throw std::runtime_error(system_error("cannot write", temporary));
-    write_all(fd, text, temporary);
+    if (fd < 0) throw system_error("cannot write", temporary);
+    try {
+        write_all(fd, text, temporary);
+    } catch (const OutputError&) {
+        ::close(fd);
+        ::unlink(temporary.c_str());  // the old file stays whole; no temporary is left behind
+        throw;
+    }
     ::fsync(fd);
-    ::close(fd);
+    if (::close(fd) != 0) {
+        const OutputError error = system_error("cannot close", temporary);
+        ::unlink(temporary.c_str());
+        throw error;
+    }
     std::filesystem::rename(temporary, file);
     sync_directory(file.parent_path());
 }

@@ -11,6 +11,9 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include "io/input_error.hpp"
+#include "io/output_file.hpp"
+#include "io/output_folder.hpp"
 #include "sweep/mpi_cases.hpp"
 #include "sweep/results_table.hpp"
 
@@ -64,15 +67,24 @@ Setup common_setup(const SweepRequest& request) {
 
 // The out folder must be new or hold this very sweep (same fingerprint).
 void check_out_folder(const SweepRequest& request, const Setup& s) {
-    std::filesystem::create_directories(request.out_dir);
+    std::error_code ec;
+    std::filesystem::create_directories(request.out_dir, ec);
+    if (ec) throw OutputError(fmt::format("{}: cannot create the folder: {}", request.out_dir.string(), ec.message()));
+    // A sweep killed while it replaced a file leaves the temporary behind; the log is the state.
+    for (const char* name : {"sweep.json.tmp", "results.csv.tmp"}) std::filesystem::remove(request.out_dir / name, ec);
     const auto manifest = request.out_dir / "sweep.json";
-    if (!std::filesystem::exists(manifest)) return;
+    if (!std::filesystem::exists(manifest)) {
+        if (holds_run(request.out_dir))
+            throw InputError({request.out_dir.string(), "", 0, 0},
+                             "the folder holds a run of `blockdem run` (summary.json); give the sweep another --out");
+        return;
+    }
     std::ifstream in(manifest);
     const nlohmann::json old = nlohmann::json::parse(in, nullptr, false);
     if (old.is_discarded() || old.value("fingerprint", "") != s.fingerprint)
-        throw std::runtime_error(fmt::format(
-            "{} holds a different sweep (other scenario, values, records or solver); use another --out, or delete it",
-            request.out_dir.string()));
+        throw InputError({request.out_dir.string(), "", 0, 0},
+                         "the folder holds a different sweep (other scenario, values, records or solver); use "
+                         "another --out, or delete it");
 }
 
 void write_manifest(const SweepRequest& request, const Setup& s, const SweepProgress& p, const std::string& status) {
@@ -209,7 +221,8 @@ SweepOutcome run_sweep(const SweepRequest& request) {
     collector.finish();
     const SweepProgress p = collector.progress();
     write_sorted_results(request.out_dir / "results.csv", s.header, log->rows());
-    write_manifest(request, s, p, p.done == p.total ? "complete" : "incomplete");
+    // Only a stop request leaves cases undone (a failing case is recorded as failed).
+    write_manifest(request, s, p, p.done == p.total ? "complete" : "interrupted");
     outcome.total = p.total;
     outcome.done = p.done;
     outcome.failed = p.failed;

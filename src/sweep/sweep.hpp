@@ -5,6 +5,7 @@
 //
 // Out folder:
 //   sweep.json          the plan's fingerprint, the columns with units, the counts, the status
+//                       ("running", "complete", or "interrupted" after SIGINT / SIGTERM)
 //   finished_cases.csv  rows as they finish (the durable log; see results_table.hpp)
 //   results.csv         rows sorted by case id, written when the run ends (also when cancelled)
 //   cases/<id>/         history.csv per case, with --histories
@@ -45,8 +46,10 @@ struct SweepOutcome {
     bool complete() const { return done == total; }
 };
 
-/// Runs the sweep. Throws InputError / std::invalid_argument / std::runtime_error for a bad
-/// plan, an out folder that holds another sweep, or an I/O failure; never for a failing case.
+/// Runs the sweep. Throws InputError / std::invalid_argument for a bad plan or an out folder
+/// that holds another sweep or a run, OutputError for a file that cannot be written; never for
+/// a failing case. On *cancel the running cases are dropped (rerun later), the rows so far are
+/// sorted into results.csv and sweep.json says "interrupted".
 SweepOutcome run_sweep(const SweepRequest& request);
 
 /// A fingerprint of everything that decides the results (scenario text, plan, solver options).

@@ -1,7 +1,10 @@
 #pragma once
 // The run loop: steps a world from t = 0 to the end, calls the monitor at every step and the
 // recorders at every output time, and reports progress through a callback (the library never
-// prints). The state handed to observers is the complete state at t (see step.hpp).
+// prints). The state handed to observers is the complete state at t (see step.hpp). A stop
+// request (a flag the app sets from SIGINT/SIGTERM) is honoured between two steps: the state
+// reached is recorded and every recorder finished, so the files end at a whole output row.
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -15,7 +18,8 @@ class Recorder {
 public:
     virtual ~Recorder() = default;
     virtual void record(const World& w) = 0;
-    /// Called once after the last record, and also when the run stops on an error.
+    /// Called once after the last record, and also when the run stops on an error or a stop
+    /// request. Throws when the output cannot be completed (a write fails).
     virtual void finish(const World&) {}
 };
 
@@ -30,13 +34,18 @@ struct RunOptions {
     std::vector<Recorder*> recorders;
     std::function<void(const World&)> on_step;              ///< every step (monitors)
     std::function<void(const RunProgress&)> on_progress;    ///< about once per second of wall time
+    const std::atomic<bool>* stop_requested = nullptr;      ///< checked between steps; may be null
 };
+
+enum class RunEnd { completed, stopped };
 
 /// Number of steps to cover settings.duration_s, and steps between outputs.
 std::int64_t total_steps(const World& w);
 std::int64_t steps_per_output(const World& w);
 
-/// Runs to the end. Recorders are finished even when a SimulationError stops the run.
-void run_simulation(World& w, const RunOptions& options);
+/// Runs to the end, or until *options.stop_requested turns true (RunEnd::stopped, after the
+/// current step, with a last record at the time reached). Recorders are finished even when an
+/// exception stops the run; the first exception is the one that propagates.
+RunEnd run_simulation(World& w, const RunOptions& options);
 
 }  // namespace blockdem

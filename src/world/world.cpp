@@ -10,6 +10,7 @@
 #include "dynamics/critical_time_step.hpp"
 #include "geometry/polygon.hpp"
 #include "world/settling.hpp"
+#include "world/simulation_error.hpp"
 #include "world/step.hpp"
 
 namespace blockdem {
@@ -169,7 +170,8 @@ World build_world(const Model& model) {
     initialise_energy(w);
     if (model.settling) {
         const SettlingReport settled = settle(w, *model.settling);
-        if (!settled.settled) throw ModelError(settling_failure(settled, *model.settling));
+        // A run that started and could not settle failed (exit 3), it is not bad input.
+        if (!settled.settled) throw SimulationError(settling_failure(settled, *model.settling));
         w.settling_time_s = settled.time_s;
     }
     return w;

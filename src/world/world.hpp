@@ -137,7 +137,8 @@ std::size_t memory_bytes(const World& w);
 
 /// Builds a world from a model: mass properties, material ids, the time step and its check.
 /// Throws ModelError naming the body when a body is invalid, bodies overlap at the start, or
-/// the time step is above the stable limit.
+/// the time step is above the stable limit (bad input); throws SimulationError when an
+/// assembly does not settle (the run started and failed: exit status 3).
 World build_world(const Model& model);
 
 /// A model that cannot be simulated (invalid body, overlap at start, unstable dt).

@@ -48,8 +48,10 @@ def dynamic_bodies(run, chosen=None, limit=6):
 
 def acceleration_figure(run, bodies, folder, formats):
     """Fig. 5 style: the table's horizontal acceleration on top, each body's below it."""
-    table = run.table_name()
+    table = run.recorded_table()
     rows = ([table] if table else []) + bodies
+    if not rows:
+        return []
     with plt.rc_context(STYLE):
         fig, axes = plt.subplots(len(rows), 1, sharex=True, squeeze=False,
                                  figsize=(WIDTH_IN, 1.3 + 1.2 * len(rows)))
@@ -71,7 +73,7 @@ def response_figure(run, bodies, folder, formats):
             rot.plot(run.t_s, run.series(name, "rot"), lw=0.8, label=name)
             disp.plot(run.t_s, run.relative_displacement_m(name, "x"), lw=0.8, label=name)
         rot.set_ylabel("rotation [rad]\n(counter-clockwise +)")
-        ref = run.table_name() or "ground"
+        ref = run.recorded_table() or "ground"
         disp.set_ylabel(f"$u_x$ relative to\n{ref} [m]")
         disp.set_xlabel("time [s]")
         rot.set_title(f"{run.title()}: rotation and relative displacement")
@@ -133,6 +135,8 @@ def draw_bodies(ax, run, row, box):
 
 def snapshot_figure(run, times, folder, formats):
     """Fig. 6 style: the bodies side by side at the chosen times, on one common scale."""
+    if not run.drawable():
+        return []
     rows = [run.row_at(t) for t in times]
     box = run.view_box(range(0, rows[-1] + 1))
     aspect = (box[3] - box[2]) / (box[1] - box[0])

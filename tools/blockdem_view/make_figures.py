@@ -17,6 +17,6 @@ def make_run_figures(run, formats=("png", "svg"), bodies=None, times=None, anima
     }
     if chosen:
         written["response"] = figures.response_figure(run, chosen, folder, formats)
-    if animation:
+    if animation and run.drawable():
         written["animation"] = [write_animation(run, folder)]
     return written

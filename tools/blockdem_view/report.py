@@ -67,7 +67,10 @@ def _num(value, unit="", digits=4):
 def outcome_section(run):
     s = run.summary
     parts = ["<h2 id='outcome'>Outcome</h2>"]
-    if s.get("status") != "completed":
+    if s.get("status") == "interrupted":
+        parts.append(f"<p class='failed'>The run was interrupted (SIGINT or SIGTERM) at t = {s.get('time_s', 0):.4g} s; "
+                     "the results below are those up to that time.</p>")
+    elif s.get("status") != "completed":
         parts.append(f"<p class='failed'>The run stopped: {html.escape(str(s.get('error', s.get('status'))))}</p>")
     parts.append(f"<p>Simulated {s.get('time_s', 0):.4g} s in {s.get('steps', 0)} steps of dt = {s.get('dt_s', 0):.4g} s "
                  f"(stable limit {s.get('critical_dt_s', 0):.4g} s); wall time {s.get('wall_time_s', 0):.3g} s. "
@@ -87,6 +90,10 @@ def outcome_section(run):
                     f"{_num(final, 'm')}</tr>")
     parts.append("<table>" + "".join(rows) + "</table>")
     parts.append("<p class='note'>Definitions of sliding, rocking and overturning: docs/outputs.md.</p>")
+    notes = run.limitations()
+    if notes:
+        items = "".join(f"<li>{html.escape(n)}</li>" for n in notes)
+        parts.append(f"<h3 id='limits'>What this report cannot show</h3><ul class='limits'>{items}</ul>")
     return "\n".join(parts)
 
 

@@ -18,6 +18,8 @@ def _stride(n, limit):
 def animation_data(run, fps=25):
     """Frames at fps of simulated time (at most MAX_FRAMES) with each drawable body's pose."""
     t = run.t_s
+    if not run.drawable():  # nothing to draw (run.limitations() says why): an empty player
+        return {"t": _round(t[:1]), "bodies": [], "view": [0, 1, 0, 1], "scene": [0, 1, 0, 1]}
     count = int(min(MAX_FRAMES, np.floor((t[-1] - t[0]) * fps) + 1))
     rows = sorted({run.row_at(x) for x in np.linspace(t[0], t[-1], max(count, 2))})
     bodies = []
@@ -53,12 +55,12 @@ def _plot(run, labels, columns, ylabel, title):
 def plot_data(run, bodies):
     """Series for the zoomable plots: accelerations, rotations, relative displacements, energy."""
     t = run.t_s
-    table = run.table_name()
+    table = run.recorded_table()
     accel_names = ([table] if table else []) + bodies
-    plots = [
-        _plot(run, ["t"] + accel_names, [t] + [run.series(b, "ax") for b in accel_names],
-              "a_x [m/s²]", "Horizontal acceleration"),
-    ]
+    plots = []
+    if accel_names:
+        plots.append(_plot(run, ["t"] + accel_names, [t] + [run.series(b, "ax") for b in accel_names],
+                           "a_x [m/s²]", "Horizontal acceleration"))
     if bodies:
         plots.append(_plot(run, ["t"] + bodies, [t] + [run.series(b, "rot") for b in bodies],
                            "rotation [rad]", "Rotation (counter-clockwise +)"))

@@ -61,6 +61,41 @@ class RunFolder:
         ref = self.summary.get("displacements_relative_to", "ground")
         return None if ref == "ground" else ref
 
+    def recorded_table(self):
+        """The table if its motion is in history.csv (driven assembly blocks are not recorded
+        by default), else None: its acceleration cannot be plotted, and displacements are then
+        plotted relative to the ground."""
+        table = self.table_name()
+        return table if table is not None and self.has_series(table) else None
+
+    def has_series(self, body):
+        return f"{body}.x" in self.columns
+
+    def limitations(self):
+        """What this folder's files cannot show, one sentence each (the report lists them)."""
+        notes = []
+        status = self.summary.get("status", "completed")
+        if status != "completed":
+            end = self.summary.get("end_time_s")
+            of = f" of {end:.4g} s" if isinstance(end, (int, float)) else ""
+            notes.append(f"The run is {status} at t = {float(self.t_s[-1]):.4g} s{of}: every plot ends there.")
+        table = self.table_name()
+        if table is not None and not self.has_series(table):
+            notes.append(f"The table '{table}' is not in history.csv: its acceleration is not plotted, and displacements "
+                         "are plotted relative to the ground (summary.json's are relative to the table). "
+                         "Set record = true on it to plot them.")
+        unrecorded = [b for b in self.bodies if b["kind"] == "dynamic" and not b["recorded"]]
+        if unrecorded:
+            names = ", ".join(b["name"] for b in unrecorded[:5]) + (", ..." if len(unrecorded) > 5 else "")
+            notes.append(f"{len(unrecorded)} dynamic bodies are not in history.csv ({names}; assembly blocks are not "
+                         "recorded unless the assembly says record = true): they are neither plotted nor drawn. "
+                         "Their outcome is in summary.json and their motion in the VTK frames when written.")
+        if not self.drawable():
+            notes.append("No body can be drawn from history.csv: no snapshots and no animation.")
+        if self.energy is None:
+            notes.append("No energy.csv: no energy plot.")
+        return notes
+
     def title(self):
         return str(self.scenario.get("title", self.path.name))
 

@@ -1,0 +1,101 @@
+// OutputFile: every write and close is checked, the error names the file and the system's
+// reason, and a write that fails part-way leaves only whole records (rows) in the file.
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+#include "io/output_file.hpp"
+
+namespace blockdem {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temporary(const std::string& name) {
+    return fs::temp_directory_path() / ("blockdem-output-" + std::to_string(::getpid()) + "-" + name);
+}
+
+// A file-size limit (ulimit -f) for the scope, with SIGXFSZ ignored as blockdem's main does,
+// so that write() fails with EFBIG instead of the process being killed.
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes) {
+        ::getrlimit(RLIMIT_FSIZE, &saved_);
+        rlimit limited = saved_;
+        limited.rlim_cur = bytes;
+        ::setrlimit(RLIMIT_FSIZE, &limited);
+        saved_handler_ = std::signal(SIGXFSZ, SIG_IGN);
+    }
+    ~FileSizeLimit() {
+        ::setrlimit(RLIMIT_FSIZE, &saved_);
+        std::signal(SIGXFSZ, saved_handler_);
+    }
+
+private:
+    rlimit saved_{};
+    void (*saved_handler_)(int) = SIG_DFL;
+};
+
+TEST(OutputFile, FullDiskNamesTheFileAndTheReason) {
+    OutputFile out("/dev/full");
+    out.append("t,x\n0,1\n");
+    try {
+        out.close();
+        FAIL() << "writing to /dev/full succeeded";
+    } catch (const OutputError& e) {
+        EXPECT_EQ(std::string(e.what()), std::string("/dev/full: cannot write: ") + std::strerror(ENOSPC));
+    }
+}
+
+TEST(OutputFile, FailedWriteLeavesWholeRows) {
+    const fs::path file = temporary("rows.csv");
+    const std::string row(99, '7');  // 100 bytes with its newline: the limit falls inside a row
+    bool failed = false;
+    {
+        FileSizeLimit limit(4050);
+        OutputFile out(file);
+        try {
+            for (int k = 0; k < 100; ++k) {
+                out.append(row + "\n");
+                if (k % 7 == 6) out.flush();  // batches of 700 bytes: the 6th crosses the limit
+            }
+            out.close();
+        } catch (const OutputError& e) {
+            failed = true;
+            EXPECT_NE(std::string(e.what()).find(file.string() + ": cannot write: " + std::strerror(EFBIG)), std::string::npos)
+                << e.what();
+        }
+    }
+    EXPECT_TRUE(failed);
+    EXPECT_EQ(fs::file_size(file), 3500u);  // five whole batches; the torn sixth is cut off
+    fs::remove(file);
+}
+
+TEST(OutputFile, WholeFileThatFailsIsRemoved) {
+    const fs::path file = temporary("summary.json");
+    {
+        FileSizeLimit limit(1000);
+        EXPECT_THROW(write_output_file(file, std::string(5000, 'x')), OutputError);
+    }
+    EXPECT_FALSE(fs::exists(file));
+    write_output_file(file, "{}\n");
+    EXPECT_EQ(fs::file_size(file), 3u);
+    fs::remove(file);
+}
+
+TEST(OutputFile, CannotCreateNamesTheFile) {
+    try {
+        OutputFile out("/nonexistent-folder/history.csv");
+        FAIL() << "created a file in a folder that does not exist";
+    } catch (const OutputError& e) {
+        EXPECT_EQ(std::string(e.what()), std::string("/nonexistent-folder/history.csv: cannot create: ") + std::strerror(ENOENT));
+    }
+}
+
+}  // namespace
+}  // namespace blockdem
