@@ -78,7 +78,7 @@ density = 2400.0
 max_time = 1.5
 TOML
 msg=$("$bin" check "$tmp/falls.toml" 2>&1); rc=$?
-[ $rc -eq 2 ] || fail "falling block: exit $rc, expected 2 ($msg)"
+[ $rc -eq 3 ] || fail "falling block: exit $rc, expected 3, a run that failed after it started ($msg)"
 expect_in "$msg" "did not settle within 1.5 s: body 'leaning' still moves"
 expect_in "$msg" "x m g L"
 expect_in "$msg" "since settling started"

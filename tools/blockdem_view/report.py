@@ -97,6 +97,17 @@ def outcome_section(run):
     return "\n".join(parts)
 
 
+def warnings_section(run):
+    """The run's own warnings (summary.json "warnings": dt above the live stable limit, deep overlaps,
+    a balance error above 1%), first, because a result that may be wrong must say so."""
+    warnings = run.summary.get("warnings") or []
+    if not warnings:
+        return ""
+    items = "".join(f"<li>{html.escape(str(w))}</li>" for w in warnings)
+    return (f"<h2 id='warnings'>Warnings</h2><p class='failed'>This result may be wrong; read these before "
+            f"trusting it (docs/outputs.md, \"Checks and warnings\").</p><ul class='limits'>{items}</ul>")
+
+
 ENERGY_ROWS = [("kinetic", "kinetic (now)"), ("gravitational_change", "gravitational change since t = 0"),
                ("elastic", "elastic, in contact springs (now)"), ("normal_dashpot_dissipated", "dissipated by normal dashpots"),
                ("shear_dashpot_dissipated", "dissipated by shear dashpots"), ("friction_dissipated", "dissipated by friction"),
@@ -173,6 +184,7 @@ def build_report(run, blockdem=None, written=None):
 <p class='note'>blockdem report of <code>{html.escape(str(run.summary.get('scenario', '')))}</code>.
 <a href='#outcome'>Outcome</a> · <a href='#animation'>Animation</a> · <a href='#plots'>Plots</a> ·
 <a href='#figures'>Figures</a> · <a href='#derived'>Derived parameters</a> · <a href='#scenario'>Scenario</a></p>
+{warnings_section(run)}
 {outcome_section(run)}
 {convergence_section(run)}
 {animation_section()}
