@@ -1,6 +1,7 @@
 #pragma once
-// summary.json: per body the peak rotation, overturning, sliding and rocking, displacement
-// relative to the table; for the run its status and the energy balance. Written at the end of
+// summary.json: per body its outcome (world/outcome.hpp) with the peak rotation, overturning,
+// sliding and rocking, displacement relative to the table; per assembly its collapse; the
+// model's extent and the bodies that left it; for the run its status and the energy balance. Written at the end of
 // a run, and also when the run stops on an error (status "failed" with the message).
 #include <filesystem>
 #include <string>

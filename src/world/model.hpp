@@ -9,6 +9,7 @@
 #include "geometry/vec2.hpp"
 #include "laws/contact_parameters.hpp"
 #include "motion/table_motion.hpp"
+#include "world/outcome.hpp"
 
 namespace blockdem {
 
@@ -33,6 +34,7 @@ struct BodyDef {
     Vec2 velocity_m_s;                       ///< [m/s] initial velocity of the centroid
     double angular_velocity_rad_s = 0.0;     ///< [rad/s] initial, counter-clockwise
     bool record = true;                      ///< write this body to history.csv
+    std::string assembly;                    ///< name of the [[assemblies]] entry that made it ("" for [[bodies]])
 };
 
 /// Contact parameters for every pair of materials (symmetric).
@@ -49,6 +51,12 @@ struct MaterialPairs {
     static MaterialPairs uniform(const ContactParameters& p);
 };
 
+/// An axis-aligned box [m]; a body whose bounding box lies wholly outside it has left the model.
+struct DomainBox {
+    Vec2 lo_m;   ///< [m] lower-left corner
+    Vec2 hi_m;   ///< [m] upper-right corner
+};
+
 struct SimulationSettings {
     double duration_s = 1.0;                 ///< [s]
     std::optional<double> dt_s;              ///< [s]; nullopt: dt_safety * critical time step
@@ -56,6 +64,9 @@ struct SimulationSettings {
     double gravity_m_s2 = 9.81;              ///< [m/s^2], acting in -y
     double output_interval_s = 1e-3;         ///< [s] between rows of history.csv
     double max_energy_error = 0.5;           ///< [-] stop when the balance error exceeds this fraction
+    /// [simulation] domain: the model's extent; nullopt: derived (world/model_domain.hpp).
+    std::optional<DomainBox> domain;
+    OutcomeThresholds outcomes;              ///< [outcomes]: thresholds of world/outcome.hpp
 };
 
 /// A settling stage before the run (world/settling.hpp): the assembly is stepped under gravity,

@@ -11,6 +11,7 @@
 #include "contact/contact_table.hpp"
 #include "world/energy_ledger.hpp"
 #include "world/model.hpp"
+#include "world/model_domain.hpp"
 
 namespace blockdem {
 
@@ -18,8 +19,9 @@ namespace blockdem {
 struct Bodies {
     std::vector<std::string> name;
     std::vector<BodyKind> kind;
-    std::vector<std::uint8_t> is_static;        ///< 1 for fixed and driven bodies
+    std::vector<std::uint8_t> is_static;        ///< 1 for fixed and driven bodies, and bodies taken out (model_domain.hpp)
     std::vector<std::uint8_t> record;           ///< 1: written to history.csv
+    std::vector<std::string> assembly;          ///< the [[assemblies]] entry that made it ("" for [[bodies]])
     std::vector<std::uint32_t> material;        ///< id in MaterialPairs
     std::vector<double> mass_kg;                ///< [kg]
     std::vector<double> inv_mass_1_kg;          ///< [1/kg], 0 for static bodies
@@ -100,6 +102,7 @@ struct World {
     std::int64_t broad_phase_rebuilds = 0;
 
     EnergyLedger energy;
+    ModelDomain domain;                   ///< the model's extent and the bodies that left it
     StepTimings timings;
 
     std::uint32_t body_id(const std::string& name) const;  ///< throws std::out_of_range
