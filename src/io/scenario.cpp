@@ -10,6 +10,7 @@
 
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
+#include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/time_series_csv.hpp"
@@ -30,6 +31,7 @@ SimulationSettings read_settings(TableReader t) {
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -y and must be >= 0");
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
     s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
+    s.domain = read_domain(t);
     t.reject_unknown_keys();
     return s;
 }
@@ -246,6 +248,8 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
             bt.fail("name", fmt::format("two bodies are named '{}'", model.bodies.back().name));
     }
     read_assemblies(top, model);  // generated blocks and [settling] (io/assembly_keys.hpp)
+    check_domain_contains_bodies(top.table("simulation"), model);
+    if (auto outcomes = top.optional_table("outcomes")) model.settings.outcomes = read_outcome_thresholds(*outcomes);
     model.contact = read_contact(top.table("contact"), model.bodies);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
     top.allow({"title", "description", "output"});  // [output] is read by load_scenario: not physics
