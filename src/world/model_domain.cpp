@@ -22,13 +22,15 @@ bool contains(const Aabb& outer, const Aabb& inner) {
 }
 
 // The range of the table's displacement over the run [m]: lo and hi of (x, y). Sampled every
-// millisecond (finer than any record's sample interval that matters for a box size).
+// millisecond (the displacement is smooth; the margin is a body size), and at most 1e5 times, so
+// that a run set to go on "for ever" (duration 1e9 s) costs no more.
 Aabb table_displacement_range(const World& w) {
     Aabb range{{0.0, 0.0}, {0.0, 0.0}};
     const double duration_s = w.settings.duration_s;
-    const auto samples = static_cast<std::int64_t>(std::ceil(duration_s / 1e-3)) + 1;
+    const double interval_s = std::max(1e-3, duration_s / 1e5);
+    const auto samples = static_cast<std::int64_t>(std::ceil(duration_s / interval_s));
     for (std::int64_t k = 0; k <= samples; ++k) {
-        const double t = std::min(duration_s, static_cast<double>(k) * 1e-3);
+        const double t = std::min(duration_s, static_cast<double>(k) * interval_s);
         const Vec2 d{sample(w.table_motion.horizontal, t).displacement_m, sample(w.table_motion.vertical, t).displacement_m};
         grow(range, {d, d});
     }
