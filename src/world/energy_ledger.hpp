@@ -18,10 +18,11 @@ struct EnergyLedger {
     double shear_dashpot_j = 0.0;    ///< [J] dissipated so far
     double friction_j = 0.0;         ///< [J] dissipated so far
     double table_work_j = 0.0;       ///< [J] work done by driven bodies on the rest so far
-    double removed_j = 0.0;          ///< [J] kinetic + gravitational energy of bodies taken out of the model, at removal
     double initial_j = 0.0;          ///< [J] stored energy at t = 0
     double initial_gravitational_j = 0.0;  ///< [J] gravitational part of initial_j
     double peak_scale_j = 0.0;       ///< [J] the largest term seen so far in the run
+    // (Last, so that code filling the ledger in order, e.g. the energy tests, is unchanged.)
+    double removed_j = 0.0;          ///< [J] kinetic + gravitational energy of bodies taken out of the model, at removal
 
     double stored_j() const { return kinetic_j + gravitational_j + elastic_j; }
     double dissipated_j() const { return normal_dashpot_j + shear_dashpot_j + friction_j; }

@@ -17,7 +17,9 @@ namespace {
 const std::filesystem::path scenes = BLOCKDEM_SOURCE_DIR "/tests/data/outcomes";
 
 nlohmann::json run(const std::string& scene, std::vector<std::string> overrides = {}) {
-    const auto out = std::filesystem::temp_directory_path() / ("blockdem_test_outcomes_" + scene);
+    // (One folder per test: ctest runs the tests of this file in parallel processes.)
+    const auto out = std::filesystem::temp_directory_path() /
+                     ("blockdem_test_outcomes_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(out);
     return run_scenario({scenes / (scene + ".toml"), std::move(overrides), out, nullptr});
 }
