@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Fragility curve: the probability that a block overturns (or slides beyond a threshold)
+"""Fragility curve: the probability of failure of a block or an assembly (a column of drums)
 against the peak table acceleration, from a suite of records each scaled to a set of target
 PGAs by `blockdem sweep --records ... --target-pga ...`; a lognormal curve
 P(x) = Phi(ln(x / theta) / beta) fitted by maximum likelihood (binomial, one trial per
@@ -9,7 +9,16 @@ Records: the real accelerograms in /work/shared/data/ground-motions/ (or --recor
 present; otherwise seeded synthetic Kanai-Tajimi motions (scenario key type = "synthetic").
 
     /usr/bin/python3 studies/fragility.py [--out out/studies/fragility] [--big] [--mpi N]
-        [--measure overturning|sliding --sliding-threshold 0.01]
+        [--scenario examples/columns/column3_elcentro.toml] [--body drum2]
+        [--measure failure|overturning|sliding --sliding-threshold 0.01]
+
+Failure (--measure failure, the default): a case fails when a dynamic body's outcome is
+overturned, fell or left_model (the sweep's <body>.failed column, docs/outputs.md "Outcomes");
+any dynamic body of the scenario, or only --body. A drum that came off a column has failed even
+when it landed upright. --measure overturning counts only <body>.overturned (the rule before
+outcomes existed); sliding adds a peak base slip above --sliding-threshold.
+--scenario: the block or assembly (default studies/scenarios/sine_block.toml); its
+[table_motion.horizontal] table must come last in the file (it is replaced by the suite's motion).
 
 Default: 9 records (or 9 seeds) x 8 PGA levels = 72 cases of 15 s (about a minute on 2 cores).
 --big: 16 levels, and 30 synthetic seeds when there are no records.
@@ -19,6 +28,7 @@ import argparse
 import csv
 import math
 import pathlib
+import re
 
 import numpy as np
 
@@ -32,11 +42,12 @@ SUITE = ["peer-at2/IELC180.AT2", "peer-at2/ARL360.at2", "peer-at2/Rinaldi228.AT2
 DURATION_S = 15.0
 
 
-def scenario_with(out, motion_table):
-    """The study's block (sine_block.toml) with its table motion replaced."""
-    text = (sc.SCENARIOS / "sine_block.toml").read_text()
+def scenario_with(out, motion_table, scenario):
+    """The study's block or assembly with its table motion replaced and the run DURATION_S long."""
+    text = pathlib.Path(scenario).read_text()
     text = text[: text.index("[table_motion.horizontal]")] + motion_table
-    text = text.replace("duration = 10.0           # [s] = cycles * period", f"duration = {DURATION_S}")
+    # The first `duration =` at the start of a line is [simulation]'s (the motion's is cut off).
+    text = re.sub(r"(?m)^duration = .*$", f"duration = {DURATION_S}", text, count=1)
     path = out / "scenario.toml"
     path.write_text(text)
     return path
@@ -46,7 +57,7 @@ def run_records(args, blockdem, out, levels):
     folder = pathlib.Path(args.records_dir)
     listing = out / "records.txt"
     listing.write_text("".join(f"{folder / line}\n" for line in SUITE if (folder / line.split()[0]).is_file()))
-    scenario = scenario_with(out, '[table_motion.horizontal]\ntype = "none"\n')
+    scenario = scenario_with(out, '[table_motion.horizontal]\ntype = "none"\n', args.scenario)
     return sc.run_sweep(blockdem, scenario, out / "sweep",
                         ["--records", str(listing), "--target-pga", ",".join(levels), "--target-pga-unit", "g",
                          "--record-key", f"duration={DURATION_S}"], sc.launcher_from(args)), "target_pga_g", "record"
@@ -54,11 +65,20 @@ def run_records(args, blockdem, out, levels):
 
 def run_synthetic(args, blockdem, out, levels, seeds):
     scenario = scenario_with(out, '[table_motion.horizontal]\ntype = "synthetic"\nseed = 1\n'
-                                  f'target_pga = 0.3\ntarget_pga_unit = "g"\nduration = {DURATION_S}\n')
+                                  f'target_pga = 0.3\ntarget_pga_unit = "g"\nduration = {DURATION_S}\n', args.scenario)
     return sc.run_sweep(blockdem, scenario, out / "sweep",
                         ["--vary", f"table_motion.horizontal.seed=1:{seeds}:1",
                          "--vary", f"table_motion.horizontal.target_pga={','.join(levels)}"],
                         sc.launcher_from(args)), "table_motion.horizontal.target_pga", "table_motion.horizontal.seed"
+
+
+def failed(row, body, args):
+    """The failure rule of --measure for one body of one case (see the module's text)."""
+    if args.measure == "failure":
+        return row[body + ".failed"] == "1"
+    if args.measure == "overturning":
+        return row[body + ".overturned"] == "1"
+    return row[body + ".overturned"] == "1" or float(row[body + ".peak_sliding_m"]) > args.sliding_threshold
 
 
 def phi(z):
@@ -119,7 +139,9 @@ def main():
     ap.add_argument("--blockdem")
     ap.add_argument("--records-dir", default=str(GROUND_MOTIONS))
     ap.add_argument("--synthetic", action="store_true", help="use synthetic motions even when records are present")
-    ap.add_argument("--measure", choices=["overturning", "sliding"], default="overturning")
+    ap.add_argument("--scenario", default=str(sc.SCENARIOS / "sine_block.toml"), help="block or assembly to judge")
+    ap.add_argument("--body", help="judge only this dynamic body (default: a case fails when any fails)")
+    ap.add_argument("--measure", choices=["failure", "overturning", "sliding"], default="failure")
     ap.add_argument("--sliding-threshold", type=float, default=0.01, help="[m] peak base slip that counts as failure")
     ap.add_argument("--big", action="store_true")
     ap.add_argument("--mpi", type=int, default=0)
@@ -136,17 +158,19 @@ def main():
         source = "synthetic Kanai-Tajimi motions"
     cases = [r for r in rows if r["status"] == "completed"]
     x = np.array([float(r[level_key]) for r in cases])
-    if args.measure == "overturning":
-        y = np.array([1.0 if r["block.overturned"] == "1" else 0.0 for r in cases])
-    else:
-        y = np.array([1.0 if r["block.overturned"] == "1" or float(r["block.peak_sliding_m"]) > args.sliding_threshold
-                      else 0.0 for r in cases])
+    bodies = [c[: -len(".failed")] for c in (rows[0].keys() if rows else []) if c.endswith(".failed")]
+    if args.body:
+        if args.body not in bodies:
+            raise SystemExit(f"--body {args.body}: not a dynamic body of the scenario ({', '.join(bodies)})")
+        bodies = [args.body]
+    y = np.array([1.0 if any(failed(r, b, args) for b in bodies) else 0.0 for r in cases])
     with open(out / "fragility.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["motion", "pga_g", "failed", "peak_rotation_rad", "peak_sliding_m", "mode"])
+        w.writerow(["motion", "pga_g", "failed", "outcomes", "peak_rotation_rad", "peak_sliding_m"])
         for r, yi in zip(cases, y):
-            w.writerow([r[motion_key], r[level_key], int(yi), r["block.peak_rotation_rad"], r["block.peak_sliding_m"],
-                        r["block.mode"]])
+            w.writerow([r[motion_key], r[level_key], int(yi), " ".join(f"{b}:{r[b + '.outcome']}" for b in bodies),
+                        max(float(r[b + ".peak_rotation_rad"]) for b in bodies),
+                        max(float(r[b + ".peak_sliding_m"]) for b in bodies)])
     if y.min() == y.max():
         print(f"every case gave failed = {int(y[0])}: no curve to fit; widen the PGA levels")
         return
@@ -175,10 +199,11 @@ def plot(path, x, y, xs, p, lo, hi, mu, beta, args, source):
     ax.plot(levels, [y[x == v].mean() for v in levels], "ko", label="fraction of the suite per level")
     jitter = (np.random.default_rng(1).random(len(x)) - 0.5) * 0.02
     ax.plot(x, y + jitter * 2, "|", color="grey", alpha=0.6, label="cases (0 / 1)")
-    what = "overturning" if args.measure == "overturning" else f"base slip > {args.sliding_threshold} m or overturning"
+    what = {"failure": "overturned, fell or left the model", "overturning": "overturning"}.get(
+        args.measure, f"base slip > {args.sliding_threshold} m or overturning")
     ax.set_xlabel("PGA of the table motion [g]")
     ax.set_ylabel(f"P({what})")
-    ax.set_title(f"Fragility of a b = 0.1 m, h = 0.4 m block ({source.split(' from ')[0]})", fontsize=10)
+    ax.set_title(f"Fragility of {pathlib.Path(args.scenario).stem} ({source.split(' from ')[0]})", fontsize=10)
     ax.set_ylim(-0.05, 1.05)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")

@@ -2,7 +2,9 @@
 """Rocking-mode map: a slender block (b = 0.1 m, h = 0.4 m) on a sine table, each cell of an
 amplitude x frequency grid coloured by the steady rocking mode that blockdem's classifier finds
 (none, sliding, in-phase, anti-phase, subharmonic, irregular, overturned; docs/sweeps.md), with
-the static overturning line a/g = b/h.
+the static overturning line a/g = b/h. Failure follows docs/outputs.md "Outcomes": a case whose
+block failed (overturned, fell or left the model: the sweep's block.failed column) is drawn as
+overturned.
 
     /usr/bin/python3 studies/rocking_mode_map.py [--out out/studies/modes] [--big] [--mpi N]
 
@@ -58,6 +60,10 @@ def main():
             fr = 1.0 / float(row["table_motion.horizontal.period"])
             a = float(row["table_motion.horizontal.amplitude"]) / GRAVITY
             mode = row["block.mode"] if row["status"] == "completed" else "failed"
+            # Failure as in docs/outputs.md "Outcomes": a block that fell or left the model is
+            # drawn with the overturned ones (the rocking classifier only knows overturning).
+            if row["status"] == "completed" and row["block.failed"] == "1":
+                mode = "overturned"
             cells[(round(fr, 6), round(a, 6))] = mode
             w.writerow([sc.fmt(fr), sc.fmt(a), mode, row["block.rocking_period_ratio"], row["block.phase_lag_deg"],
                         row["block.peak_rotation_rad"], row["status"]])
@@ -97,7 +103,9 @@ def plot(path, freqs, amps_g, cells):
     ax.set_xlabel("table frequency [Hz]")
     ax.set_ylabel("table acceleration amplitude a/g [-]")
     ax.set_title(f"Rocking modes of a b = {B} m, h = {H} m block on a sine table (DEM)")
-    ax.legend(handles=[Patch(facecolor=c, edgecolor="#888888", label=m.replace("_", "-")) for m, c in zip(MODES, COLOURS)],
+    labels = {"overturned": "overturned / fell (failed)"}
+    ax.legend(handles=[Patch(facecolor=c, edgecolor="#888888", label=labels.get(m, m.replace("_", "-")))
+                       for m, c in zip(MODES, COLOURS)],
               fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     fig.savefig(path, dpi=120)

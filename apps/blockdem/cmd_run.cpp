@@ -20,18 +20,47 @@ void print_progress(const RunProgress& p) {
                p.time_s, p.end_time_s, 100.0 * fraction, p.steps, rate, left);
 }
 
+// The outcome word (docs/outputs.md, "Outcomes"), upper case for a failure, with its event.
+std::string outcome_words(const nlohmann::json& body) {
+    const std::string outcome = body["outcome"].get<std::string>();
+    const double t = body["outcome_time_s"].is_number() ? body["outcome_time_s"].get<double>() : -1.0;
+    if (outcome == "fell") {
+        const auto& fell = body["fell"];
+        return fmt::format("FELL from its supporters at t = {:.3f} s, {} ({:.3f}, {:.3f}) m", t,
+                           fell["came_to_rest"].get<bool>() ? "came to rest at" : "still moving at the end, at",
+                           fell["position_m"][0].get<double>(), fell["position_m"][1].get<double>());
+    }
+    if (outcome == "left_model") {
+        const auto& left = body["left_model"];
+        return fmt::format("LEFT THE MODEL at t = {:.3f} s at ({:.3f}, {:.3f}) m (taken out of the run)", t,
+                           left["position_m"][0].get<double>(), left["position_m"][1].get<double>());
+    }
+    if (outcome == "overturned") return fmt::format("OVERTURNED at t = {:.3f} s", t);
+    if (outcome == "stable") return "stable";
+    return fmt::format("{} (from t = {:.3f} s)", outcome == "rocked_and_slid" ? "rocked and slid" : outcome, t);
+}
+
 void print_outcome(const nlohmann::json& summary, const std::string& out_dir) {
     for (const auto& body : summary["bodies"]) {
         if (body["kind"] != "dynamic") continue;
-        fmt::print("{}: peak rotation {:.4g} rad, {}, {}, {}; peak displacement relative to {} {:.4g} m\n",
-                   body["name"].get<std::string>(), body["peak_abs_rotation_rad"].get<double>(),
-                   body["overturned"].get<bool>()
-                       ? fmt::format("OVERTURNED at t = {:.3f} s", body["overturning_time_s"].get<double>())
-                       : std::string("did not overturn"),
-                   body["rocked"].get<bool>() ? "rocked" : "did not rock",
-                   body["slid"].get<bool>() ? "slid" : "did not slide",
-                   summary["displacements_relative_to"].get<std::string>(),
+        fmt::print("{}: {}; peak rotation {:.4g} rad, peak base slip {:.4g} m, peak displacement relative to {} {:.4g} m\n",
+                   body["name"].get<std::string>(), outcome_words(body), body["peak_abs_rotation_rad"].get<double>(),
+                   body["peak_abs_base_slip_m"].get<double>(), summary["displacements_relative_to"].get<std::string>(),
                    body["peak_abs_relative_displacement_m"].get<double>());
+    }
+    const auto& collapse = summary["collapse"];
+    for (const auto& c : collapse) {
+        // ("all" repeats a lone assembly that holds every block.)
+        const bool repeats = c["group"] == "all" && collapse.size() == 2 && collapse[0]["blocks"] == c["blocks"];
+        if (c["blocks"].get<std::size_t>() < 2 || repeats) continue;
+        fmt::print("{}: {} of {} blocks fell, {} overturned, {} left the model; {:.0f}% of the mass displaced{}\n",
+                   c["group"] == "all" ? std::string("all blocks") : "assembly " + c["group"].get<std::string>(),
+                   c["fell"].get<std::size_t>(), c["blocks"].get<std::size_t>(), c["overturned"].get<std::size_t>(),
+                   c["left_model"].get<std::size_t>(), 100.0 * c["displaced_mass_fraction"].get<double>(),
+                   c["first_to_go"].is_string() ? fmt::format("; first to go: {} at t = {:.3f} s",
+                                                              c["first_to_go"].get<std::string>(),
+                                                              c["first_to_go_time_s"].get<double>())
+                                                : std::string());
     }
     fmt::print("energy balance error {:.3g} of the largest term; results in {}/ (history.csv, summary.json)\n",
                summary["energy_j"]["balance_error_relative"].get<double>(), out_dir);

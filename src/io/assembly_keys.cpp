@@ -147,6 +147,7 @@ std::vector<BodyDef> read_assembly(TableReader t) {
         t.fail("", e.what());  // a generator's own check (region outline, spread range, ...)
     }
     std::vector<BodyDef> bodies = scenes::as_bodies(polygons, style);
+    for (BodyDef& b : bodies) b.assembly = style.name_prefix;  // the collapse summary's group
     // Boundary blocks: those whose centroid lies in a zone move with the table (or stay fixed).
     for (const char* key : {"driven_zone", "fixed_zone"})
         if (t.has(key) && scenes::set_kind_inside(bodies, t.vec2_list(key), key[0] == 'd' ? BodyKind::driven : BodyKind::fixed) == 0)

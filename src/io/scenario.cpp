@@ -10,6 +10,7 @@
 
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
+#include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/time_series_csv.hpp"
@@ -35,6 +36,7 @@ SimulationSettings read_settings(TableReader t) {
     if (s.max_overlap_ratio > 1.0)
         t.fail("max_overlap", fmt::format("is a fraction of the thinner body's least width and must be <= 1, got {}",
                                           s.max_overlap_ratio));
+    s.domain = read_domain(t);
     t.reject_unknown_keys();
     return s;
 }
@@ -378,6 +380,8 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
             bt.fail("name", fmt::format("two bodies are named '{}'", model.bodies.back().name));
     }
     read_assemblies(top, model);  // generated blocks and [settling] (io/assembly_keys.hpp)
+    check_domain_contains_bodies(top.table("simulation"), model);
+    if (auto outcomes = top.optional_table("outcomes")) model.settings.outcomes = read_outcome_thresholds(*outcomes);
     model.contact = read_contact(top.table("contact"), model.bodies);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
     top.allow({"title", "description", "output"});  // [output] is read by load_scenario: not physics

@@ -1,5 +1,9 @@
 #include "io/summary_writer.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
 #include "io/output_file.hpp"
@@ -7,6 +11,85 @@
 
 namespace blockdem {
 namespace {
+
+nlohmann::json time_or_null(double t_s) { return t_s >= 0.0 ? nlohmann::json(t_s) : nlohmann::json(nullptr); }
+nlohmann::json point(Vec2 p) { return {p.x, p.y}; }
+nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// The outcome (world/outcome.hpp) and what decided it.
+void add_outcome(nlohmann::json& j, const World& w, const BodyRecord& record, const ClassifiedOutcome& o) {
+    j["outcome"] = to_string(o.outcome);
+    j["outcome_time_s"] = time_or_null(o.time_s);
+    j["failed"] = is_failure(o.outcome);
+    nlohmann::json supporters = nlohmann::json::array();
+    for (std::uint32_t s : record.supporters) supporters.push_back(w.bodies.name[s]);
+    j["supporters"] = supporters;
+    j["touches_a_supporter"] = record.touches_a_supporter;
+    j["support_lost_time_s"] = time_or_null(record.support_lost_time_s);
+    j["final_drop_m"] = record.drop_m;
+    if (o.outcome == Outcome::fell)
+        j["fell"] = {{"came_to_rest", o.at_rest}, {"position_m", point(o.rest_position_m)}};
+    if (o.outcome == Outcome::left_model)
+        j["left_model"] = {{"time_s", record.left_model_time_s}, {"position_m", point(record.left_model_position_m)}};
+}
+
+nlohmann::json collapse_summary(const World& w, const CollapseSummary& c) {
+    return {{"group", c.group},
+            {"blocks", c.blocks},
+            {"fell", c.fell},
+            {"overturned", c.overturned},
+            {"left_model", c.left_model},
+            {"displaced_mass_fraction", c.displaced_mass_fraction},
+            {"first_to_go", c.first_to_go >= 0 ? nlohmann::json(w.bodies.name[static_cast<std::size_t>(c.first_to_go)])
+                                               : nlohmann::json(nullptr)},
+            {"first_to_go_time_s", time_or_null(c.first_to_go_time_s)}};
+}
+
+// One collapse summary per assembly, in the order they were generated, then one of every
+// dynamic body ("all").
+nlohmann::json collapse_summaries(const World& w, const std::vector<BodyRecord>& records,
+                                  const std::vector<ClassifiedOutcome>& outcomes, const OutcomeThresholds& t) {
+    const Bodies& b = w.bodies;
+    std::vector<std::string> groups;
+    std::vector<std::vector<std::uint32_t>> members;
+    std::vector<std::uint32_t> all;
+    for (std::uint32_t i = 0; i < b.size(); ++i) {
+        if (b.kind[i] != BodyKind::dynamic) continue;
+        all.push_back(i);
+        if (b.assembly[i].empty()) continue;
+        const auto found = std::find(groups.begin(), groups.end(), b.assembly[i]);
+        if (found == groups.end()) {
+            groups.push_back(b.assembly[i]);
+            members.push_back({i});
+        } else {
+            members[static_cast<std::size_t>(found - groups.begin())].push_back(i);
+        }
+    }
+    nlohmann::json out = nlohmann::json::array();
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        out.push_back(collapse_summary(w, summarize_collapse(groups[g], members[g], records, outcomes, t)));
+    out.push_back(collapse_summary(w, summarize_collapse("all", all, records, outcomes, t)));
+    return out;
+}
+
+nlohmann::json domain_summary(const World& w) {
+    const ModelDomain& d = w.domain;
+    nlohmann::json left = nlohmann::json::array();
+    for (const BodyLeftModel& l : d.left)
+        left.push_back({{"body", w.bodies.name[l.body]}, {"time_s", l.time_s}, {"position_m", point(l.position_m)},
+                        {"velocity_m_s", point(l.velocity_m_s)}});
+    return {{"from", d.from_scenario ? "scenario" : "derived"},
+            {"lo_m", {finite_or_null(d.box_m.lo.x), finite_or_null(d.box_m.lo.y)}},
+            {"hi_m", {finite_or_null(d.box_m.hi.x), finite_or_null(d.box_m.hi.y)}},
+            {"margin_m", d.margin_m},
+            {"left", left}};
+}
+
+nlohmann::json thresholds_summary(const OutcomeThresholds& t) {
+    return {{"rocking_ratio", t.rocking_ratio},       {"slip_ratio", t.slip_ratio},
+            {"fall_drop_ratio", t.fall_drop_ratio},   {"displaced_ratio", t.displaced_ratio},
+            {"rest_speed_m_s", t.rest_speed_m_s},     {"support_window_s", t.support_window_s}};
+}
 
 nlohmann::json body_summary(const World& w, const BodyResponse& r, std::size_t i) {
     const Bodies& b = w.bodies;
@@ -31,6 +114,7 @@ nlohmann::json body_summary(const World& w, const BodyResponse& r, std::size_t i
     j["final_base_slip_m"] = r.base_slip_m;
     j["peak_abs_relative_displacement_m"] = r.peak_abs_relative_displacement_m;
     j["final_relative_displacement_m"] = {r.relative_displacement_m.x, r.relative_displacement_m.y};
+    j["final_position_m"] = point(b.position_m[i]);
     return j;
 }
 
@@ -57,14 +141,23 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
                      {"shear_dashpot_dissipated", e.shear_dashpot_j},
                      {"friction_dissipated", e.friction_j},
                      {"table_work", e.table_work_j},
+                     {"removed_with_bodies_leaving", e.removed_j},
                      {"initial_stored", e.initial_j},
                      {"residual", e.residual_j()},
                      {"balance_error_relative", e.balance_error()}};
+    const std::vector<BodyRecord> records = monitor.records(w);
+    const std::vector<ClassifiedOutcome> outcomes = classify_outcomes(records, monitor.thresholds());
     nlohmann::json bodies = nlohmann::json::array();
-    for (std::size_t i = 0; i < w.bodies.size(); ++i) bodies.push_back(body_summary(w, monitor.responses()[i], i));
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        bodies.push_back(body_summary(w, monitor.responses()[i], i));
+        if (w.bodies.kind[i] == BodyKind::dynamic) add_outcome(bodies.back(), w, records[i], outcomes[i]);
+    }
     s["bodies"] = bodies;
     s["checks"] = run_checks(w);
     s["warnings"] = run_warnings(w);
+    s["collapse"] = collapse_summaries(w, records, outcomes, monitor.thresholds());
+    s["domain"] = domain_summary(w);
+    s["outcome_thresholds"] = thresholds_summary(monitor.thresholds());
     nlohmann::json units;
     for (const auto& [suffix, unit] : history_column_units()) units[std::string("<body>.") + suffix] = unit;
     units["t"] = "s";

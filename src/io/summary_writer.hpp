@@ -1,8 +1,10 @@
 #pragma once
-// summary.json: per body the peak rotation, overturning, sliding and rocking, displacement
-// relative to the table; for the run its status and the energy balance. Written at the end of
-// a run, and also when the run stops on an error (status "failed" with the message) or on a
-// signal (status "interrupted"). Written whole or not at all (io/output_file.hpp).
+// summary.json: per body its outcome (world/outcome.hpp) with the peak rotation, overturning,
+// sliding and rocking, displacement relative to the table; per assembly its collapse; the
+// model's extent and the bodies that left it; the run's checks and warnings (io/run_checks.hpp);
+// for the run its status and the energy balance. Written at the end of a run, and also when the
+// run stops on an error (status "failed" with the message) or on a signal (status
+// "interrupted"). Written whole or not at all (io/output_file.hpp).
 #include <filesystem>
 #include <string>
 

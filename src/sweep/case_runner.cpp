@@ -67,9 +67,13 @@ bool all_blocks_down(const World& w, const ResponseMonitor& monitor) {
     return any;
 }
 
-BodyOutcome outcome_of(const ResponseMonitor& monitor, const RockingModeObserver& modes, std::size_t i) {
+BodyOutcome outcome_of(const ResponseMonitor& monitor, const RockingModeObserver& modes, std::size_t i,
+                       const ClassifiedOutcome& classified) {
     const BodyResponse& r = monitor.responses()[i];
     BodyOutcome o;
+    o.outcome = to_string(classified.outcome);
+    o.outcome_time_s = classified.time_s;
+    o.failed = is_failure(classified.outcome);
     o.overturned = r.overturned();
     o.overturning_time_s = o.overturned ? r.last_crossing_s : -1.0;
     o.peak_rotation_rad = r.peak_abs_rotation_rad;
@@ -123,10 +127,11 @@ void run_dem(World& w, const SweepScenario& scenario, const SweepCase& c, const 
         result.error = e.what();
         return;
     }
+    const std::vector<ClassifiedOutcome> classified = classify_outcomes(monitor.records(w), monitor.thresholds());
     for (std::size_t k = 0; k < scenario.body_names.size(); ++k) {
         for (std::size_t i = 0; i < w.bodies.size(); ++i)
             if (w.bodies.name[i] == scenario.body_names[k] && w.bodies.kind[i] == BodyKind::dynamic)
-                result.bodies[k] = outcome_of(monitor, modes, i);
+                result.bodies[k] = outcome_of(monitor, modes, i, classified[i]);
     }
 }
 
@@ -185,6 +190,11 @@ void run_housner(const World& w, const SweepScenario& scenario, const CaseOption
     signal.rocking_threshold_rad = 0.01 * alpha;  // as the DEM's monitor
     signal.overturned = r.overturned;
     signal.rocked = r.peak_abs_theta_rad >= signal.rocking_threshold_rad;
+    // (Housner's block neither slides nor leaves its base: only these three outcomes.)
+    const Outcome outcome = r.overturned ? Outcome::overturned : signal.rocked ? Outcome::rocked : Outcome::stable;
+    o.outcome = to_string(outcome);
+    o.outcome_time_s = r.overturned ? o.overturning_time_s : -1.0;
+    o.failed = is_failure(outcome);
     const RockingClassification mode = classify_rocking_mode(signal);
     o.mode = to_string(mode.mode);
     o.rocking_period_ratio = mode.period_ratio;

@@ -48,6 +48,10 @@ struct BodyOutcome {
     std::string mode;                     ///< rocking mode (analysis/rocking_mode.hpp)
     int rocking_period_ratio = 0;         ///< [-] rocking period / table period (0: not rocking)
     double phase_lag_deg = 0.0;           ///< [deg] rotation behind the table acceleration (in/anti-phase)
+    // The outcome of world/outcome.hpp (docs/outputs.md, "Outcomes"), as `blockdem run` reports it.
+    std::string outcome = "stable";       ///< stable, rocked, slid, rocked_and_slid, overturned, fell, left_model
+    double outcome_time_s = -1.0;         ///< [s] time of the deciding event, -1 for stable
+    bool failed = false;                  ///< overturned, fell or left_model: what fragility counts
 };
 
 struct CaseResult {

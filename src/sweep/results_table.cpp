@@ -18,7 +18,9 @@ namespace {
 
 const std::vector<std::string> body_columns{"overturned",     "overturning_time_s", "peak_rotation_rad",
                                             "peak_sliding_m", "residual_sliding_m", "mode",
-                                            "rocking_period_ratio", "phase_lag_deg"};
+                                            "rocking_period_ratio", "phase_lag_deg",
+                                            // world/outcome.hpp; failed = overturned, fell or left_model
+                                            "outcome", "outcome_time_s", "failed"};
 
 std::string number(double v) { return fmt::format("{:.10g}", v); }
 
@@ -56,10 +58,11 @@ std::int64_t leading_id(const std::string& row) {
 
 std::string body_fields(const std::optional<BodyOutcome>& o) {
     if (!o) return std::string(body_columns.size() - 1, ',');
-    return fmt::format("{},{},{},{},{},{},{},{}", o->overturned ? 1 : 0,
+    return fmt::format("{},{},{},{},{},{},{},{},{},{},{}", o->overturned ? 1 : 0,
                        o->overturned ? number(o->overturning_time_s) : std::string(), number(o->peak_rotation_rad),
                        number(o->peak_sliding_m), number(o->residual_sliding_m), o->mode, o->rocking_period_ratio,
-                       number(o->phase_lag_deg));
+                       number(o->phase_lag_deg), o->outcome,
+                       o->outcome_time_s >= 0.0 ? number(o->outcome_time_s) : std::string(), o->failed ? 1 : 0);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "laws/contact_parameters.hpp"
 #include "laws/material_stiffness.hpp"
 #include "motion/table_motion.hpp"
+#include "world/outcome.hpp"
 
 namespace blockdem {
 
@@ -34,6 +35,7 @@ struct BodyDef {
     Vec2 velocity_m_s;                       ///< [m/s] initial velocity of the centroid
     double angular_velocity_rad_s = 0.0;     ///< [rad/s] initial, counter-clockwise
     bool record = true;                      ///< write this body to history.csv
+    std::string assembly;                    ///< name of the [[assemblies]] entry that made it ("" for [[bodies]])
 };
 
 /// Contact parameters for every pair of materials (symmetric).
@@ -58,6 +60,11 @@ inline constexpr double default_dt_safety = 0.5;
 /// Overlaps deeper than this fraction of the thinner body's least width are reported as a
 /// warning: the rigid-body idealisation is then in question.
 inline constexpr double overlap_warning_ratio = 0.01;
+/// An axis-aligned box [m]; a body whose bounding box lies wholly outside it has left the model.
+struct DomainBox {
+    Vec2 lo_m;   ///< [m] lower-left corner
+    Vec2 hi_m;   ///< [m] upper-right corner
+};
 
 struct SimulationSettings {
     double duration_s = 1.0;                 ///< [s]
@@ -69,6 +76,9 @@ struct SimulationSettings {
     /// [-] stop when an overlap exceeds this fraction of the least width of the thinner body of
     /// its pair (a contact too soft for its load: bodies sinking into each other)
     double max_overlap_ratio = 0.25;
+    /// [simulation] domain: the model's extent; nullopt: derived (world/model_domain.hpp).
+    std::optional<DomainBox> domain;
+    OutcomeThresholds outcomes;              ///< [outcomes]: thresholds of world/outcome.hpp
 };
 
 /// A settling stage before the run (world/settling.hpp): the assembly is stepped under gravity,

@@ -13,9 +13,15 @@
 // Sliding is measured at the base corner the body is tipping about (either, when level),
 // horizontally and relative to the table: rocking moves the centroid by about h theta but
 // leaves that corner in place, so a block that rocks without sliding shows no base slip.
+//
+// For the outcome of each body (world/outcome.hpp) it also keeps the bodies that held it up at
+// the start (its supporters), whether it still touches one and when it last let go of them, how
+// far it has dropped relative to the table, and whether it is at rest; records() hands these to
+// classify_outcomes.
 #include <cstdint>
 #include <vector>
 
+#include "world/outcome.hpp"
 #include "world/world.hpp"
 
 namespace blockdem {
@@ -36,13 +42,23 @@ struct BodyResponse {
     double base_slip_m = 0.0;            ///< [m] horizontal slip of the base relative to the table, now
     double peak_abs_base_slip_m = 0.0;   ///< [m]
     double sliding_time_s = 0.0;         ///< [s] time with at least one of its contact points sliding
-    double rocking_threshold_rad = 0.0;  ///< [rad] rotation above which it counts as rocking (0.01 alpha)
+    double rocking_threshold_rad = 0.0;  ///< [rad] rotation above which it counts as rocking (rocking_ratio alpha)
+    double slip_threshold_m = 0.0;       ///< [m] base slip above which it counts as sliding (slip_ratio x base length)
+    double rocking_onset_s = -1.0;       ///< [s] first time |rotation| reached the rocking threshold
+    double slip_onset_s = -1.0;          ///< [s] first time it slid beyond the slip threshold
+
+    double height_m = 0.0;               ///< [m] vertical extent at the start
+    std::vector<std::uint32_t> supporters;  ///< bodies below it in contact during the support window
+    bool touches_a_supporter = false;    ///< now
+    double support_lost_time_s = -1.0;   ///< [s] last time it let go of its last supporter (-1: holds one)
+    double drop_time_s = -1.0;           ///< [s] first time its centroid was fall_drop_ratio x height below its start
+    bool at_rest = true;                 ///< now
 
     bool overturned() const { return beyond_alpha; }
     bool rocked() const { return peak_abs_rotation_rad >= rocking_threshold_rad; }
-    /// Slid: some contact point slid and the base moved on the table by more than 0.1% of its
-    /// length (well above the elastic shear deformation of the contacts).
-    bool slid() const { return sliding_time_s > 0.0 && peak_abs_base_slip_m > 1e-3 * base_length_m; }
+    /// Slid: some contact point slid and the base moved on the table by more than slip_ratio
+    /// (default 0.1%) of its length (well above the elastic shear deformation of the contacts).
+    bool slid() const { return sliding_time_s > 0.0 && peak_abs_base_slip_m > slip_threshold_m; }
 };
 
 class ResponseMonitor {
@@ -51,12 +67,20 @@ public:
     /// Called once per step with the state at t.
     void observe(const World& w);
     const std::vector<BodyResponse>& responses() const { return responses_; }
+    /// What classify_outcomes needs, one record per body (taken-out bodies from w.domain).
+    std::vector<BodyRecord> records(const World& w) const;
+    const OutcomeThresholds& thresholds() const { return thresholds_; }
     /// The driven body relative to which displacements are measured, or -1 for the ground.
     std::int64_t reference_body() const { return reference_; }
 
 private:
+    void note_contacts(const World& w);
+    void observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s);
+
+    OutcomeThresholds thresholds_;
     std::vector<BodyResponse> responses_;
     std::vector<std::uint8_t> sliding_now_;
+    std::vector<std::uint8_t> touching_supporter_now_;
     std::int64_t reference_ = -1;
 };
 

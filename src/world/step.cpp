@@ -57,6 +57,7 @@ void rebuild_candidate_pairs(World& w) {
     w.boxes.resize(b.size());
     parallel_for(n, [&](std::ptrdiff_t i) { w.boxes[i] = {b.box_m[i].lo - Vec2{pad, pad}, b.box_m[i].hi + Vec2{pad, pad}}; });
     w.broad_phase.find_pairs(w.boxes, b.is_static, w.candidate_pairs);
+    take_out_bodies_outside_domain(w);  // before the merge: a taken-out body's contacts are dropped
     merge_candidate_pairs(w.contacts, w.candidate_pairs, w.contacts_scratch);
     index_pairs_by_body(w);
     b.position_at_rebuild_m = b.position_m;
@@ -144,7 +145,7 @@ bool state_is_finite(const Bodies& b, std::size_t i) {
 BodyEnergy body_energy_terms(const Bodies& b, std::size_t i, double g) {
     BodyEnergy e;
     e.non_finite = state_is_finite(b, i) ? 0.0 : 1.0;
-    if (b.kind[i] != BodyKind::dynamic) return e;
+    if (b.kind[i] != BodyKind::dynamic || b.is_static[i]) return e;  // (taken out: its energy is in removed_j)
     const Vec2 v = b.velocity_at_t_m_s[i];
     const double omega = b.angular_velocity_at_t_rad_s[i];
     e.kinetic_j = 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;

@@ -44,6 +44,7 @@ void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
     b.kind.push_back(def.kind);
     b.is_static.push_back(dynamic ? 0 : 1);
     b.record.push_back(def.record ? 1 : 0);
+    b.assembly.push_back(def.assembly);
     b.material.push_back(material);
     b.mass_kg.push_back(mass);
     b.inv_mass_1_kg.push_back(dynamic ? 1.0 / mass : 0.0);
@@ -167,6 +168,7 @@ World build_world(const Model& model) {
     place_driven_bodies(w, 0.0);
     check_no_initial_overlap(w);
     set_time_step(w, model.settings);
+    init_model_domain(w);
     initialise_energy(w);
     if (model.settling) {
         const SettlingReport settled = settle(w, *model.settling);

@@ -12,6 +12,7 @@
 #include "dynamics/stability_rows.hpp"
 #include "world/energy_ledger.hpp"
 #include "world/model.hpp"
+#include "world/model_domain.hpp"
 
 namespace blockdem {
 
@@ -19,8 +20,9 @@ namespace blockdem {
 struct Bodies {
     std::vector<std::string> name;
     std::vector<BodyKind> kind;
-    std::vector<std::uint8_t> is_static;        ///< 1 for fixed and driven bodies
+    std::vector<std::uint8_t> is_static;        ///< 1 for fixed and driven bodies, and bodies taken out (model_domain.hpp)
     std::vector<std::uint8_t> record;           ///< 1: written to history.csv
+    std::vector<std::string> assembly;          ///< the [[assemblies]] entry that made it ("" for [[bodies]])
     std::vector<std::uint32_t> material;        ///< id in MaterialPairs
     std::vector<double> mass_kg;                ///< [kg]
     std::vector<double> inv_mass_1_kg;          ///< [1/kg], 0 for static bodies
@@ -127,6 +129,7 @@ struct World {
     EnergyLedger energy;
     StabilityWatch stability;
     StabilityRows stability_rows;         ///< scratch of the live stable-step check
+    ModelDomain domain;                   ///< the model's extent and the bodies that left it
     StepTimings timings;
 
     std::uint32_t body_id(const std::string& name) const;  ///< throws std::out_of_range

@@ -75,7 +75,7 @@ def outcome_section(run):
     parts.append(f"<p>Simulated {s.get('time_s', 0):.4g} s in {s.get('steps', 0)} steps of dt = {s.get('dt_s', 0):.4g} s "
                  f"(stable limit {s.get('critical_dt_s', 0):.4g} s); wall time {s.get('wall_time_s', 0):.3g} s. "
                  f"Displacements are relative to {html.escape(str(s.get('displacements_relative_to', 'ground')))}.</p>")
-    rows = ["<tr><th>body</th><th>slid?</th><th>rocked?</th><th>overturned?</th><th>peak |rotation|</th>"
+    rows = ["<tr><th>body</th><th>outcome</th><th>slid?</th><th>rocked?</th><th>overturned?</th><th>peak |rotation|</th>"
             "<th>at t</th><th>peak |u| relative</th><th>final u_x relative</th></tr>"]
     for b in s.get("bodies", []):
         if b.get("kind") != "dynamic":
@@ -84,12 +84,14 @@ def outcome_section(run):
         over = f" at t = {b['overturning_time_s']:.3f} s" if b.get("overturned") else ""
         rot = b.get("peak_abs_rotation_rad", 0.0)
         final = (b.get("final_relative_displacement_m") or [None])[0]
-        rows.append(f"<tr><td>{html.escape(b['name'])}</td>{_yes_no(b.get('slid'), slid)}{_yes_no(b.get('rocked'))}"
+        rows.append(f"<tr><td>{html.escape(b['name'])}</td>{_outcome_cell(b)}{_yes_no(b.get('slid'), slid)}{_yes_no(b.get('rocked'))}"
                     f"{_yes_no(b.get('overturned'), over)}<td class='num'>{rot:.4g} rad ({math.degrees(rot):.3g}°)</td>"
                     f"{_num(b.get('time_of_peak_rotation_s'), 's')}{_num(b.get('peak_abs_relative_displacement_m'), 'm')}"
                     f"{_num(final, 'm')}</tr>")
     parts.append("<table>" + "".join(rows) + "</table>")
-    parts.append("<p class='note'>Definitions of sliding, rocking and overturning: docs/outputs.md.</p>")
+    parts.extend(_collapse_and_domain(s))
+    parts.append("<p class='note'>Outcomes (overturned, fell and left_model are failures), sliding, rocking and "
+                 "overturning: docs/outputs.md, \"Outcomes\".</p>")
     notes = run.limitations()
     if notes:
         items = "".join(f"<li>{html.escape(n)}</li>" for n in notes)
@@ -108,10 +110,55 @@ def warnings_section(run):
             f"trusting it (docs/outputs.md, \"Checks and warnings\").</p><ul class='limits'>{items}</ul>")
 
 
+def _outcome_cell(b):
+    """The body's outcome word with its event (docs/outputs.md, "Outcomes"); summaries without one say so."""
+    outcome = b.get("outcome")
+    if outcome is None:
+        return "<td>–</td>"
+    t = b.get("outcome_time_s")
+    detail = f" at t = {t:.3f} s" if t is not None else ""
+    if outcome == "fell" and b.get("fell"):
+        x, y = b["fell"]["position_m"]
+        rest = "came to rest" if b["fell"].get("came_to_rest") else "still moving"
+        detail += f", {rest} at ({x:.3f}, {y:.3f}) m"
+    if outcome == "left_model" and b.get("left_model"):
+        x, y = b["left_model"]["position_m"]
+        detail += f", taken out at ({x:.3f}, {y:.3f}) m"
+    cls = "yes" if b.get("failed") else "no"
+    return f"<td class='{cls}'><b>{html.escape(outcome.replace('_', ' '))}</b>{html.escape(detail)}</td>"
+
+
+def _collapse_and_domain(s):
+    """The collapse of each assembly (more than one block) and the bodies that left the model."""
+    parts = []
+    rows = []
+    collapse = s.get("collapse", [])
+    for c in collapse:
+        repeats = c["group"] == "all" and len(collapse) == 2 and collapse[0]["blocks"] == c["blocks"]
+        if c["blocks"] < 2 or repeats:
+            continue
+        first = (f"{html.escape(c['first_to_go'])} at t = {c['first_to_go_time_s']:.3f} s"
+                 if c.get("first_to_go") else "none")
+        rows.append(f"<tr><td>{html.escape(c['group'])}</td><td class='num'>{c['blocks']}</td><td class='num'>{c['fell']}</td>"
+                    f"<td class='num'>{c['overturned']}</td><td class='num'>{c['left_model']}</td>"
+                    f"<td class='num'>{100 * c['displaced_mass_fraction']:.3g}%</td><td>{first}</td></tr>")
+    if rows:
+        parts.append("<table><tr><th>assembly</th><th>blocks</th><th>fell</th><th>overturned</th><th>left the model</th>"
+                     "<th>mass displaced</th><th>first to go</th></tr>" + "".join(rows) + "</table>")
+    left = s.get("domain", {}).get("left", [])
+    if left:
+        items = "".join(f"<li>{html.escape(l['body'])} at t = {l['time_s']:.3f} s, at ({l['position_m'][0]:.3f}, "
+                        f"{l['position_m'][1]:.3f}) m</li>" for l in left)
+        parts.append(f"<p>Bodies that left the model (taken out of the run, frozen where they left):</p><ul>{items}</ul>")
+    return parts
+
+
 ENERGY_ROWS = [("kinetic", "kinetic (now)"), ("gravitational_change", "gravitational change since t = 0"),
                ("elastic", "elastic, in contact springs (now)"), ("normal_dashpot_dissipated", "dissipated by normal dashpots"),
                ("shear_dashpot_dissipated", "dissipated by shear dashpots"), ("friction_dissipated", "dissipated by friction"),
-               ("table_work", "work done by the table"), ("initial_stored", "stored at t = 0"), ("residual", "residual")]
+               ("table_work", "work done by the table"),
+               ("removed_with_bodies_leaving", "taken out with bodies that left the model"),
+               ("initial_stored", "stored at t = 0"), ("residual", "residual")]
 
 
 def energy_section(run):
