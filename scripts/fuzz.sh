@@ -100,9 +100,13 @@ for h in "${harnesses[@]}"; do
   rm -rf "$seeds"; mkdir -p "$seeds"
   seed_files "$h" | while read -r f; do [ -f "$f" ] && cp "$f" "$seeds/"; done
   if [ "$smoke" = 1 ]; then
+    # Stops at the first finding; reproducible (fixed seed) and leaves no corpus behind.
     corpus=$(mktemp -d); extra=(-seed=1)
   else
-    corpus="$build_dir/corpus/$h"; mkdir -p "$corpus"; extra=()
+    # Goes on after a finding (each one is saved) in a child process, so that one known crash
+    # does not end the campaign for that harness.
+    corpus="$build_dir/corpus/$h"; mkdir -p "$corpus"
+    extra=(-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
   fi
   log="$build_dir/logs/$h.log"
   before=$(ls "$build_dir/findings" | grep -c "^$h-" || true)
@@ -116,7 +120,9 @@ for h in "${harnesses[@]}"; do
   rc=$?
   set -e
   cpu=$(awk '{printf "%.0f", $1 + $2}' "$log.time" 2>/dev/null || echo "?")
+  # Plain runs end with stat:: lines; fork runs print "#EXECS: cov: N ft: N ..." as they go.
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  [ -n "$execs" ] || execs=$(grep -o '^#[0-9]*: cov' "$log" | tail -1 | tr -dc '0-9')
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
   ft=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | cut -d' ' -f2)
   size=$(ls "$corpus" | wc -l)
