@@ -133,7 +133,7 @@ for h in "${harnesses[@]}"; do
   if [ "$rc" -ne 0 ] || [ "$found" -gt 0 ]; then
     status=1
     echo "fuzz.sh: $h FOUND A PROBLEM (exit $rc); log $log:" >&2
-    grep -E 'ERROR|runtime error|terminate called|what\(\)|SUMMARY|Test unit written' "$log" | head -20 >&2
+    { grep -E 'ERROR|runtime error|terminate called|what\(\)|SUMMARY|Test unit written|artifact' "$log" || true; } | head -20 >&2
   fi
 done
 cat "$summary"

@@ -14,7 +14,9 @@ cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE
 cmake --build "$build_dir" -j "${JOBS:-$(nproc)}"
 
 # halt_on_error: the first report ends the process with a failure status, which fails the test.
-export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+# fast_unwind_on_malloc=0: full stacks for every allocation, through libraries built without frame
+# pointers, so that a leak inside Open MPI shows Open MPI's libraries and is matched by name.
+export ASAN_OPTIONS="detect_leaks=1:halt_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:fast_unwind_on_malloc=0"
 export LSAN_OPTIONS="suppressions=$source_dir/scripts/lsan-suppressions.txt:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The fuzz smoke is left out: it builds and runs its own sanitized harnesses (make test runs it).
