@@ -41,8 +41,11 @@ if [ "$build" = 1 ]; then
   cmake --build "$build_dir" -j "${JOBS:-$(nproc)}" --target fuzzers
 fi
 
-shared="$source_dir/../shared/data/ground-motions"
+# Record files: the test records, and the real ones beside the repository when they are there.
 records="$source_dir/tests/data/records"
+record_dirs=("$records")
+shared="$source_dir/../shared/data/ground-motions"
+[ -d "$shared" ] && record_dirs+=("$shared")
 
 # Seed files for one harness, one path a line (missing ones are skipped).
 seed_files() {
@@ -54,13 +57,13 @@ seed_files() {
     fuzz_time_series_csv)
       find "$source_dir/fuzz/seeds/time_series_csv" -type f
       echo "$records/two_columns.csv"; echo "$records/values_only.txt" ;;
-    fuzz_record_auto) find "$records" "$shared" -type f ! -name '*.py' ! -name '*.json' ! -name '*.md' ! -name '.*' 2>/dev/null ;;
-    fuzz_record_peer_at2) find "$records" "$shared" -iname '*.at2' 2>/dev/null ;;
-    fuzz_record_knet) find "$records" "$shared" \( -name 'knet*' -o -name 'kiknet*' -o -name '*.NS' -o -name '*.EW*' \) 2>/dev/null ;;
-    fuzz_record_cosmos_v2) find "$records" "$shared" \( -name '*.V2' -o -name '*.V2c' \) 2>/dev/null ;;
-    fuzz_record_jma_csv) find "$records" "$shared" -name '*jma*.csv' 2>/dev/null ;;
+    fuzz_record_auto) find "${record_dirs[@]}" -type f ! -name '*.py' ! -name '*.json' ! -name '*.md' ! -name '.*' ;;
+    fuzz_record_peer_at2) find "${record_dirs[@]}" -iname '*.at2' ;;
+    fuzz_record_knet) find "${record_dirs[@]}" \( -name 'knet*' -o -name 'kiknet*' -o -name '*.NS' -o -name '*.EW*' \) ;;
+    fuzz_record_cosmos_v2) find "${record_dirs[@]}" \( -name '*.V2' -o -name '*.V2c' \) ;;
+    fuzz_record_jma_csv) find "${record_dirs[@]}" -name '*jma*.csv' ;;
     fuzz_record_plain)
-      find "$shared" -name '*.dat' 2>/dev/null
+      find "${record_dirs[@]}" -name '*.dat'
       echo "$records/two_columns.csv"; echo "$records/values_only.txt" ;;
   esac
 }
