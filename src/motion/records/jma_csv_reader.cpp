@@ -71,6 +71,7 @@ GroundMotionRecord read_jma_csv(const RecordText& text, const RecordReadOptions&
             fail_at(text, rows.row_lines[k], fmt::format("{} values on this row, {} expected", rows.rows[k].size(), columns));
         record.acceleration_m_s2.push_back(rows.rows[k][column]);
     }
+    if (record.npts() < 2) fail_at(text, rows.first_line, "a record needs at least 2 samples");
     convert_to_si(record, to_m_s2);
     return record;
 }
