@@ -21,7 +21,11 @@ nlohmann::json run(const std::string& scene, std::vector<std::string> overrides 
     const auto out = std::filesystem::temp_directory_path() /
                      ("blockdem_test_outcomes_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(out);
-    return run_scenario({scenes / (scene + ".toml"), std::move(overrides), out, nullptr});
+    RunRequest request;
+    request.scenario = scenes / (scene + ".toml");
+    request.overrides = std::move(overrides);
+    request.out_dir = out;
+    return run_scenario(request);
 }
 
 const nlohmann::json& body(const nlohmann::json& summary, const std::string& name) {
