@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/central_difference.hpp"
+#include "world/model_domain.hpp"
 #include "world/step.hpp"
 
 namespace blockdem {
@@ -62,8 +63,21 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
     SettlingReport report;
     LeastSettled window_worst;
     std::size_t reported_body = 0;
+    const std::size_t left_before = w.domain.left.size();
     for (std::int64_t n = 1;; ++n) {
         step_begin(w);
+        if (w.domain.left.size() > left_before) {
+            // Taken out of the step, it would read as still; the set-up has lost a body.
+            const BodyLeftModel& left = w.domain.left[left_before];
+            report.left_model = true;
+            report.left_time_s = left.time_s;
+            report.left_position_m = left.position_m;
+            report.settled = false;
+            report.steps = n;
+            report.time_s = w.time_s;
+            reported_body = left.body;
+            break;
+        }
         const LeastSettled now = least_settled(w);
         if (now.ratio >= window_worst.ratio) window_worst = now;
         step_end(w);
@@ -93,6 +107,12 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
 }
 
 std::string settling_failure(const SettlingReport& r, const SettlingSettings& settings) {
+    if (r.left_model)
+        return fmt::format("the assembly did not settle: body '{}' left the model at t = {:.4g} s of settling, at "
+                           "({:.4g}, {:.4g}) m, so it had nothing to rest on (it moved {:.3g} m and turned {:.3g} rad "
+                           "since settling started); support the body or move it",
+                           r.body, r.left_time_s, r.left_position_m.x, r.left_position_m.y, r.body_moved_m,
+                           r.body_turned_rad);
     return fmt::format("the assembly did not settle within {:g} s: body '{}' still moves (kinetic energy {:.3g} J = "
                        "{:.3g} x m g L, L = {:.3g} m its size; asked for < {:.3g} over {:g} s); it moved {:.3g} m and "
                        "turned {:.3g} rad since settling started. Raise settling.max_time or settling.kinetic_ratio, "

@@ -29,6 +29,11 @@ struct SettlingReport {
     double body_size_m = 0.0;        ///< [m] its L
     double body_moved_m = 0.0;       ///< [m] how far its centroid moved from where settling started, at the end
     double body_turned_rad = 0.0;    ///< [rad] how far it turned, at the end
+    /// A body that fell out of the model's extent while settling (world/model_domain.hpp): the
+    /// set-up lost it before any shaking, so settling failed; body names it.
+    bool left_model = false;
+    double left_time_s = 0.0;        ///< [s] of settling when it left
+    Vec2 left_position_m;            ///< [m] where
 };
 
 /// Settles the world in place (table at rest), then restarts the clock at t = 0: time, step
