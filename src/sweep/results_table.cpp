@@ -1,5 +1,7 @@
 #include "sweep/results_table.hpp"
 
+#include <algorithm>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -57,7 +59,8 @@ std::int64_t leading_id(const std::string& row) {
 }
 
 std::string body_fields(const std::optional<BodyOutcome>& o) {
-    if (!o) return std::string(body_columns.size() - 1, ',');
+    // (The empty fields of a case without results: one comma fewer than columns.)
+    if (!o) return std::string(std::max<std::size_t>(body_columns.size(), 1) - 1, ',');
     return fmt::format("{},{},{},{},{},{},{},{},{},{},{}", o->overturned ? 1 : 0,
                        o->overturned ? number(o->overturning_time_s) : std::string(), number(o->peak_rotation_rad),
                        number(o->peak_sliding_m), number(o->residual_sliding_m), o->mode, o->rocking_period_ratio,
@@ -89,10 +92,16 @@ std::string csv_field(const std::string& text) {
 
 std::string format_row(const SweepCase& c, const CaseResult& r) {
     std::string row = std::to_string(c.id);
-    for (const auto& v : c.column_values) row += "," + csv_field(v);
+    for (const auto& v : c.column_values) {
+        row += ',';
+        row += csv_field(v);
+    }
     row += fmt::format(",{},{},{}", r.status, csv_field(r.error), r.status == "error" ? "" : number(r.table_pga_m_s2));
-    for (const auto& b : r.bodies) row += "," + body_fields(b);
-    row += "," + fmt::format("{:.4f}", r.wall_s);
+    for (const auto& b : r.bodies) {
+        row += ',';
+        row += body_fields(b);
+    }
+    row += fmt::format(",{:.4f}", r.wall_s);
     return row;
 }
 

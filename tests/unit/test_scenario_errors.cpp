@@ -104,6 +104,13 @@ TEST(ScenarioErrors, WrongTypeAndUnits) {
     expect_contains(error_of("negative", replace(valid, "mass = 1.0", "mass = -1.0")), "must be > 0");
 }
 
+TEST(ScenarioErrors, OverlapLimitIsAFractionOfAWidth) {
+    expect_contains(error_of("overlap", valid, {"simulation.max_overlap=1.5"}),
+                    "key 'simulation.max_overlap': is a fraction of the thinner body's least width and must be <= 1");
+    expect_contains(error_of("overlap0", valid, {"simulation.max_overlap=0"}), "key 'simulation.max_overlap'");
+    EXPECT_EQ(error_of("overlap_ok", valid, {"simulation.max_overlap=0.1"}), "");
+}
+
 TEST(ScenarioErrors, NonConvexAndSelfIntersectingPolygons) {
     const std::string arrow = R"(shape = "polygon"
 vertices = [[0.0, 0.0], [0.5, 0.0], [0.5, 0.3], [0.25, 0.1], [0.0, 0.3]])";
