@@ -28,7 +28,7 @@ done
 
 # 3. check prints the derived quantities.
 out=$("$bin" check "$src/examples/paper/sliding.toml" 2>&1) || fail "check failed"
-for part in "h_n = 0.28" "stable limit" "C_n = " "mass [kg]" "peak 3.5 m/s^2"; do expect_in "$out" "$part"; done
+for part in "h_n = 0.28" "stable limit" "is proven stable" "C_n = " "mass [kg]" "peak 3.5 m/s^2"; do expect_in "$out" "$part"; done
 
 # 4. Bad input: a clear message and exit status 2; nothing is run.
 run_bad() {  # name, expected text, run arguments...
