@@ -9,7 +9,7 @@ DEMO_OUT ?= out/demo
 # Packages the build and the tests need (Debian 12 names).
 CORE_PACKAGES := g++ cmake make pkg-config libtomlplusplus-dev libcli11-dev libfmt-dev \
                  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-                 libopenmpi-dev openmpi-bin
+                 libopenmpi-dev openmpi-bin libhdf5-dev
 # Packages for the checks (docs/checks.md): clang 14 with its sanitizer and libFuzzer runtimes
 # (libclang-rt-14-dev, only recommended by clang-14), its OpenMP runtime for the sanitized build,
 # and llvm-symbolizer (llvm-14) for readable sanitizer reports. `make test` runs the fuzz smoke.
@@ -18,7 +18,7 @@ CHECK_PACKAGES := clang-14 libclang-rt-14-dev libomp-14-dev llvm-14
 # python3-vtk9 reads the VTK output back in the tests; chromium and nodejs run the report test
 # (npm packages: tests/cli/report_browser/package.json); libjs-dygraphs is inlined in the report
 # for its zoomable plots; ffmpeg writes the MP4 animation (GIF without it).
-VIEW_PACKAGES := python3-matplotlib python3-numpy python3-vtk9 libjs-dygraphs ffmpeg chromium nodejs
+VIEW_PACKAGES := python3-matplotlib python3-numpy python3-h5py python3-vtk9 libjs-dygraphs ffmpeg chromium nodejs
 
 SANITIZE_DIR ?= build-sanitize
 FUZZ_DIR ?= $(BUILD_DIR)/fuzz

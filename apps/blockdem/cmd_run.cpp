@@ -1,5 +1,8 @@
-// `blockdem run SCENARIO --out DIR [--set key=value]... [--force] [--threads N]`
+// `blockdem run SCENARIO --out DIR [--set key=value]... [--force] [--threads N]
+//      [--save-state T1,T2,...] [--save-state-every DT]`
+// `blockdem run --restart STATE.h5 [SCENARIO] [--out DIR] ...`
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -78,37 +81,60 @@ void add_run_command(CLI::App& app) {
     auto quiet = std::make_shared<bool>(false);
     auto force = std::make_shared<bool>(false);
     auto threads = std::make_shared<int>(0);
-    cmd->add_option("scenario", *scenario, "scenario file (TOML)")->required();
-    cmd->add_option("--out,-o", *out, "output folder")->capture_default_str();
+    auto save_times = std::make_shared<std::vector<double>>();
+    auto save_every = std::make_shared<double>(0.0);
+    auto restart = std::make_shared<std::string>();
+    cmd->add_option("scenario", *scenario, "scenario file (TOML); with --restart, default: the run folder's scenario.toml");
+    auto* out_option = cmd->add_option("--out,-o", *out, "output folder (with --restart, default: the state's run folder, "
+                                                         "continued in place)")
+                           ->capture_default_str();
     cmd->add_option("--set", *sets, "override a scenario key: --set contact.h_s=0.5 (repeatable)");
     cmd->add_flag("--quiet,-q", *quiet, "no progress lines");
     cmd->add_flag("--force", *force, "replace the run already in --out (removes only blockdem's own files there)");
     cmd->add_option("--threads,-j", *threads, "threads of the time step (default: OMP_NUM_THREADS, else all cores); "
                                               "results do not depend on it")
         ->check(CLI::PositiveNumber);
+    cmd->add_option("--save-state", *save_times, "write the whole state at these times [s] to DIR/state/t_<time>s.h5 "
+                                                 "(comma-separated), to restart from or start other runs from")
+        ->delimiter(',')
+        ->check(CLI::NonNegativeNumber);
+    cmd->add_option("--save-state-every", *save_every, "write the whole state every DT seconds of simulated time")
+        ->check(CLI::PositiveNumber);
+    cmd->add_option("--restart", *restart, "continue the run a state file was saved in, from the state's time: the "
+                                           "files end as those of a run that never stopped");
     cmd->callback([=] {
         if (*threads != 0) set_step_threads(*threads);
+        if (scenario->empty() && restart->empty()) throw CLI::RequiredError("scenario");
         RunRequest request;
         request.scenario = *scenario;
         request.overrides = *sets;
-        request.out_dir = *out;
+        request.out_dir = restart->empty() || out_option->count() > 0 ? *out : std::string();
         request.force = *force;
+        request.save_state_times_s = *save_times;
+        request.save_state_every_s = *save_every;
+        request.restart = *restart;
         if (!*quiet) request.on_progress = print_progress;
         request.on_warning = [](const std::string& text) { fmt::print(stderr, "warning: {}\n", text); };
+        request.on_state_saved = [quiet](const std::filesystem::path& file) {
+            if (!*quiet) fmt::print(stderr, "blockdem: state saved to {}\n", file.string());
+        };
         request.stop_requested = &install_stop_handlers();
         const nlohmann::json summary = run_scenario(request);
+        const std::string folder = summary["run_folder"].get<std::string>();
         if (summary["status"] == "interrupted") {
             fmt::print(stderr, "interrupted at t = {:.4g} s of {:.4g} s: the results so far are in {}/ (summary.json "
                                "status \"interrupted\")\n",
-                       summary["time_s"].get<double>(), summary["end_time_s"].get<double>(), *out);
+                       summary["time_s"].get<double>(), summary["end_time_s"].get<double>(), folder);
+            if (!summary["state_files"].empty())
+                fmt::print(stderr, "to go on: blockdem run --restart {}\n", summary["state_files"].back().get<std::string>());
             throw ExitStatus{stop_exit_status()};
         }
-        print_outcome(summary, *out);
+        print_outcome(summary, folder);
         // [output] report = true: the report is made here, in the tool, because the library never
         // starts processes.
         if (summary.contains("outputs") && summary["outputs"].value("report", false)) {
-            write_report(*out);
-            fmt::print("report: {}/report.html\n", *out);
+            write_report(folder);
+            fmt::print("report: {}/report.html\n", folder);
         }
     });
 }

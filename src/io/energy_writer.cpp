@@ -4,7 +4,8 @@
 
 namespace blockdem {
 
-EnergyWriter::EnergyWriter(const std::filesystem::path& file) : out_(file) {
+EnergyWriter::EnergyWriter(const std::filesystem::path& file, OutputFile::Mode mode) : out_(file, mode) {
+    if (mode == OutputFile::Mode::append) return;
     out_.append("t_s,kinetic_J,gravitational_change_J,elastic_J,normal_dashpot_J,shear_dashpot_J,friction_J,table_work_J,"
             "residual_J,balance_error\n");
     out_.flush();

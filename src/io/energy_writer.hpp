@@ -16,9 +16,13 @@ namespace blockdem {
 
 class EnergyWriter : public Recorder {
 public:
-    explicit EnergyWriter(const std::filesystem::path& file);
+    /// mode append: the file already holds the header and the rows before a restart.
+    explicit EnergyWriter(const std::filesystem::path& file, OutputFile::Mode mode = OutputFile::Mode::replace);
     void record(const World& w) override;
     void finish(const World& w) override;
+    /// Writes the rows buffered so far (before a state file is saved, so that the file holds
+    /// every row the state counts).
+    void flush() { out_.flush(); }
 
 private:
     OutputFile out_;

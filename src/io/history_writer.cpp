@@ -13,7 +13,7 @@ const std::vector<std::pair<const char*, const char*>>& history_column_units() {
     return units;
 }
 
-HistoryWriter::HistoryWriter(const std::filesystem::path& file, const World& w) : out_(file) {
+HistoryWriter::HistoryWriter(const std::filesystem::path& file, const World& w, OutputFile::Mode mode) : out_(file, mode) {
     std::string header = "t";
     for (std::uint32_t i = 0; i < w.bodies.size(); ++i) {
         if (!w.bodies.record[i]) continue;
@@ -22,6 +22,7 @@ HistoryWriter::HistoryWriter(const std::filesystem::path& file, const World& w) 
             fmt::format_to(std::back_inserter(header), ",{}.{}", w.bodies.name[i], suffix);
     }
     header += '\n';
+    if (mode == OutputFile::Mode::append) return;
     out_.append(header);
     out_.flush();
 }

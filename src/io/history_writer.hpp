@@ -14,9 +14,13 @@ namespace blockdem {
 
 class HistoryWriter : public Recorder {
 public:
-    HistoryWriter(const std::filesystem::path& file, const World& w);
+    /// mode append: the file already holds the header and the rows before a restart (io/run_restart.hpp).
+    HistoryWriter(const std::filesystem::path& file, const World& w, OutputFile::Mode mode = OutputFile::Mode::replace);
     void record(const World& w) override;
     void finish(const World& w) override;
+    /// Writes the rows buffered so far (before a state file is saved, so that the file holds
+    /// every row the state counts).
+    void flush() { out_.flush(); }
 
 private:
     OutputFile out_;

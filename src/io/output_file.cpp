@@ -16,9 +16,16 @@ constexpr std::size_t flush_threshold_bytes = 64 * 1024;
 
 }  // namespace
 
-OutputFile::OutputFile(std::filesystem::path file) : file_(std::move(file)) {
-    fd_ = ::open(file_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-    if (fd_ < 0) fail("cannot create", errno);
+OutputFile::OutputFile(std::filesystem::path file, Mode mode) : file_(std::move(file)) {
+    const int truncate = mode == Mode::replace ? O_TRUNC : 0;
+    fd_ = ::open(file_.c_str(), O_WRONLY | O_CREAT | truncate | O_CLOEXEC, 0644);
+    if (fd_ < 0) fail(mode == Mode::replace ? "cannot create" : "cannot open", errno);
+    if (mode == Mode::append) {
+        // What is there already counts as complete: a failed write cuts back to it, never into it.
+        const off_t end = ::lseek(fd_, 0, SEEK_END);
+        if (end < 0) fail("cannot open", errno);
+        written_bytes_ = end;
+    }
 }
 
 OutputFile::~OutputFile() {

@@ -20,8 +20,10 @@ public:
 
 class OutputFile {
 public:
-    /// Creates or truncates file; throws OutputError naming it when it cannot.
-    explicit OutputFile(std::filesystem::path file);
+    /// replace: create or truncate; append: go on after what the file holds (a restarted run).
+    enum class Mode { replace, append };
+    /// Opens file; throws OutputError naming it when it cannot.
+    explicit OutputFile(std::filesystem::path file, Mode mode = Mode::replace);
     ~OutputFile();
     OutputFile(const OutputFile&) = delete;
     OutputFile& operator=(const OutputFile&) = delete;

@@ -4,6 +4,8 @@
 #include <optional>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "io/bodies_json_writer.hpp"
 #include "io/energy_writer.hpp"
 #include "io/history_writer.hpp"
@@ -11,65 +13,185 @@
 #include "io/output_file.hpp"
 #include "io/output_folder.hpp"
 #include "io/run_budget.hpp"
+#include "io/run_restart.hpp"
+#include "io/run_state_parts.hpp"
 #include "io/scenario.hpp"
+#include "io/state_file.hpp"
 #include "io/summary_writer.hpp"
 #include "io/vtk_writer.hpp"
 #include "world/response_monitor.hpp"
 #include "world/simulation_error.hpp"
+#include "world/world_state.hpp"
 
 namespace blockdem {
 namespace {
 
+namespace fs = std::filesystem;
+
 // The copy in the output folder must still find the files the scenario names (records, CSV
-// motions), which are relative to the original scenario's folder: make them absolute.
-void make_file_keys_absolute(toml::table& root, const std::filesystem::path& scenario_dir) {
-    for (const char* component : {"horizontal", "vertical"}) {
-        toml::node* file = root.at_path(std::string("table_motion.") + component + ".file").node();
+// motions, the initial state), which are relative to the original scenario's folder: make them
+// absolute.
+void make_file_keys_absolute(toml::table& root, const fs::path& scenario_dir) {
+    for (const char* key : {"table_motion.horizontal.file", "table_motion.vertical.file", "simulation.initial_state"}) {
+        toml::node* file = root.at_path(key).node();
         if (!file || !file->is_string()) continue;
-        const std::filesystem::path path = *file->value<std::string>();
-        if (path.is_relative())
-            *file->as_string() = std::filesystem::absolute(scenario_dir / path).lexically_normal().string();
+        const fs::path path = *file->value<std::string>();
+        if (path.is_relative()) *file->as_string() = fs::absolute(scenario_dir / path).lexically_normal().string();
     }
 }
 
-void write_scenario_copy(toml::table root, const std::filesystem::path& scenario, const std::filesystem::path& out_dir) {
+// The scenario as run (after --set, file names absolute), as the copy in the folder holds it.
+std::string scenario_as_run(toml::table root, const fs::path& scenario) {
     make_file_keys_absolute(root, scenario.parent_path());
     std::ostringstream text;
-    text << scenario_copy_marker << " (" << scenario.string() << ", after --set)\n" << root << '\n';
-    write_output_file(out_dir / "scenario.toml", text.str());
+    text << root;
+    return text.str();
+}
+
+void write_scenario_copy(const toml::table& root, const fs::path& scenario, const fs::path& out_dir) {
+    write_output_file(out_dir / "scenario.toml", fmt::format("{} ({}, after --set)\n{}\n", scenario_copy_marker,
+                                                             scenario.string(), scenario_as_run(root, scenario)));
 }
 
 // Everything that can refuse the run, before anything is written: whether the run fits the
-// machine, and the output folder. Returns whether VTK frames will be written.
-bool check_before_run(const LoadedScenario& loaded, const RunRequest& request) {
+// machine, and the output folder (not when a restart continues its own folder). Returns whether
+// VTK frames will be written.
+bool check_before_run(const LoadedScenario& loaded, const RunRequest& request, const fs::path& out_dir, bool in_place) {
     check_step_count(loaded);
     const World& world = loaded.world;
     const bool vtk_on = vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s);
-    for (const std::string& warning : check_run_budget(loaded, estimate_run_budget(loaded, vtk_on), request.out_dir))
+    for (const std::string& warning : check_run_budget(loaded, estimate_run_budget(loaded, vtk_on), out_dir))
         if (request.on_warning) request.on_warning(warning);
-    prepare_output_folder(request.out_dir, request.force);
+    if (!in_place) prepare_output_folder(out_dir, request.force);
     return vtk_on;
+}
+
+// Where a run starts from: nothing, a state it continues, or a state it starts anew from.
+struct StartingState {
+    std::optional<StateFile> restart;   ///< --restart
+    fs::path run_folder;                ///< the restarted run's folder
+    std::optional<StateFile> initial;   ///< [simulation] initial_state
+};
+
+// A state file named by the scenario: its problems name the scenario's key too.
+StateFile open_initial_state(const LoadedScenario& loaded) {
+    try {
+        return StateFile(loaded.initial_state);
+    } catch (const InputError& e) {
+        throw InputError(e.where(), fmt::format("{} (simulation.initial_state in {})", e.problem(), loaded.file.string()));
+    }
+}
+
+void check_state_fits(const World& w, const StateFile& state, const fs::path& scenario) {
+    if (auto mismatch = state_mismatch(w, state.world()))
+        throw InputError({state.path().string(), "", 0, 0},
+                         fmt::format("the state does not belong to scenario {}: {}", scenario.string(), *mismatch));
+}
+
+// The checks only a restart needs: the same time step, and a state within the run.
+void check_restart(const World& w, const StateFile& state, const fs::path& scenario) {
+    check_state_fits(w, state, scenario);
+    const WorldState& s = state.world();
+    if (s.dt_s != w.dt_s)
+        throw InputError({state.path().string(), "", 0, 0},
+                         fmt::format("the state was saved with dt = {:.17g} s, scenario {} gives dt = {:.17g} s: a "
+                                     "restart keeps the time step",
+                                     s.dt_s, scenario.string(), w.dt_s));
+    if (s.step_index > total_steps(w))
+        throw InputError({state.path().string(), "", 0, 0},
+                         fmt::format("the state is at t = {:g} s, after the end of the run (simulation.duration = {:g} "
+                                     "s); give a longer duration with --set simulation.duration=...",
+                                     s.time_s, w.settings.duration_s));
+}
+
+// Without its duration (a restart may go on longer than the run it continues).
+std::string without_duration(const std::string& scenario_toml) {
+    try {
+        toml::table root = toml::parse(scenario_toml);
+        if (auto* simulation = root["simulation"].as_table()) simulation->erase("duration");
+        std::ostringstream text;
+        text << root;
+        return text.str();
+    } catch (const toml::parse_error&) {
+        return scenario_toml;  // (not a scenario: it differs from any)
+    }
+}
+
+// The steps of the state files asked for: --save-state times and --save-state-every.
+SavePoints save_points(const World& w, const RunRequest& request) {
+    SavePoints points;
+    for (double t_s : request.save_state_times_s) {
+        if (!(t_s >= 0.0) || t_s > w.settings.duration_s + 0.5 * w.dt_s)
+            throw InputError({"--save-state", "", 0, 0},
+                             fmt::format("{:g} s is outside the run (0 to {:g} s)", t_s, w.settings.duration_s));
+        points.steps.push_back(step_at_time(w, t_s));
+    }
+    if (request.save_state_every_s > 0.0)
+        points.every_steps = std::max<std::int64_t>(1, std::llround(request.save_state_every_s / w.dt_s));
+    return points;
 }
 
 }  // namespace
 
 nlohmann::json run_scenario(const RunRequest& request) {
-    LoadedScenario loaded = load_scenario(request.scenario, request.overrides);
+    StartingState start;
+    fs::path scenario = request.scenario;
+    fs::path out_dir = request.out_dir;
+    if (!request.restart.empty()) {
+        start.restart.emplace(request.restart);
+        start.run_folder = state_run_folder(request.restart, start.restart->info());
+        if (scenario.empty()) scenario = start.run_folder / "scenario.toml";
+        if (out_dir.empty()) out_dir = start.run_folder;
+    }
+    std::error_code ec;
+    const bool in_place = start.restart && fs::exists(out_dir) && fs::equivalent(out_dir, start.run_folder, ec);
+
+    LoadedScenario loaded = load_scenario(scenario, request.overrides);
     World& world = loaded.world;
-    const bool vtk_on = check_before_run(loaded, request);
+    if (start.restart) {
+        check_restart(world, *start.restart, scenario);
+        restore_state(world, start.restart->world());
+        if (without_duration(start.restart->info().scenario_toml) != without_duration(scenario_as_run(loaded.root, scenario)) &&
+            request.on_warning)
+            request.on_warning(fmt::format("scenario {} is not the one state {} was saved with: the run goes on from the "
+                                           "state under the changed scenario",
+                                           scenario.string(), request.restart.string()));
+    } else if (!loaded.initial_state.empty()) {
+        start.initial.emplace(open_initial_state(loaded));
+        check_state_fits(world, *start.initial, scenario);
+        start_from_state(world, start.initial->world());
+    }
+    const SavePoints points = save_points(world, request);
+    const bool vtk_on = check_before_run(loaded, request, out_dir, in_place);
+    const auto mode = start.restart ? OutputFile::Mode::append : OutputFile::Mode::replace;
+    if (start.restart) {
+        const std::int64_t rows = start.restart->info().output_rows;
+        keep_first_rows(start.run_folder / "history.csv", out_dir / "history.csv", rows);
+        keep_first_rows(start.run_folder / "energy.csv", out_dir / "energy.csv", rows);
+    }
     // The scenario as run (after --set), so that the folder documents itself.
-    write_scenario_copy(loaded.root, request.scenario, request.out_dir);
-    HistoryWriter history(request.out_dir / "history.csv", world);
-    EnergyWriter energy(request.out_dir / "energy.csv");
-    write_bodies_json(request.out_dir / "bodies.json", world);
+    if (!in_place || !request.scenario.empty()) write_scenario_copy(loaded.root, scenario, out_dir);
+    HistoryWriter history(out_dir / "history.csv", world, mode);
+    EnergyWriter energy(out_dir / "energy.csv", mode);
+    write_bodies_json(out_dir / "bodies.json", world);
     ResponseMonitor monitor(world);
+    MonitorStatePart monitor_state(monitor);
+    std::vector<StatePart*> parts = {&monitor_state};
     RunOptions options;
     options.recorders = {&history, &energy};
     std::optional<VtkWriter> vtk;
+    std::optional<VtkStatePart> vtk_state;
     if (vtk_on) {
-        vtk.emplace(request.out_dir / "vtk", VtkSettings{loaded.output.vtk_interval_s, loaded.output.vtk_contacts});
+        vtk.emplace(out_dir / "vtk", VtkSettings{loaded.output.vtk_interval_s, loaded.output.vtk_contacts});
         options.recorders.push_back(&*vtk);
+        vtk_state.emplace(*vtk, world);
+        parts.push_back(&*vtk_state);
     }
+    if (start.restart)
+        for (StatePart* part : parts)
+            // The monitor's group is required; a part the state lacks (VTK frames that the saved
+            // run did not write) starts afresh.
+            if (part == &monitor_state || start.restart->has_group(part->state_group())) start.restart->restore(*part);
     // What was written besides history.csv and summary.json; `blockdem run` reads "report".
     auto outputs = [&] {
         return nlohmann::json{{"energy", "energy.csv"}, {"bodies", "bodies.json"},
@@ -80,33 +202,69 @@ nlohmann::json run_scenario(const RunRequest& request) {
     options.on_step = [&monitor](const World& w) { monitor.observe(w); };
     options.on_progress = request.on_progress;
     options.stop_requested = request.stop_requested;
+    options.save_points = points;
+
+    const std::string original_scenario = start.restart ? start.restart->info().scenario : scenario.string();
+    StateFileInfo state_info;
+    state_info.scenario = original_scenario;
+    state_info.scenario_toml = scenario_as_run(loaded.root, scenario);
+    state_info.run_folder = fs::absolute(out_dir).lexically_normal().string();
+    std::vector<std::string> state_files;
+    options.on_save_point = [&](const World& w, SaveReason reason) {
+        // The rows the state counts must be on disk with it.
+        history.flush();
+        energy.flush();
+        state_info.reason = reason == SaveReason::stopped ? "interrupted" : reason == SaveReason::every ? "save_state_every"
+                                                                                                          : "save_state";
+        state_info.output_rows = output_rows_before(w, w.step_index);
+        const fs::path file = state_file_name(out_dir, w.time_s);
+        std::vector<const StatePart*> const_parts(parts.begin(), parts.end());
+        write_state_file(file, w, state_info, const_parts);
+        state_files.push_back(file.string());
+        if (request.on_state_saved) request.on_state_saved(file);
+    };
 
     const auto started = std::chrono::steady_clock::now();
     RunInfo info;
-    info.scenario = request.scenario.string();
-    auto wall = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+    info.scenario = original_scenario;
+    auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
     auto summary_with = [&](const std::string& status, const std::string& error) {
         info.status = status;
         info.error = error;
-        info.wall_s = wall();
         nlohmann::json summary = make_summary(world, monitor, info);
         summary["end_time_s"] = world.settings.duration_s;  // time_s below it: failed or interrupted
         summary["outputs"] = outputs();
         return summary;
+    };
+    // What differs from one invocation to the next, kept out of summary.json so that a restarted
+    // run's summary is the uninterrupted run's, byte for byte.
+    auto run_info = [&](const std::string& status) {
+        nlohmann::json j{{"status", status},
+                         {"wall_time_s", wall_s()},
+                         {"started_at_time_s", start.restart ? start.restart->world().time_s : 0.0},
+                         {"restarted_from", start.restart ? nlohmann::json(fs::absolute(request.restart).string()) : nullptr},
+                         {"initial_state", start.initial ? nlohmann::json(fs::absolute(loaded.initial_state).string()) : nullptr},
+                         {"state_files", state_files}};
+        return j;
     };
     RunEnd end = RunEnd::completed;
     try {
         end = run_simulation(world, options);
     } catch (const std::exception& e) {
         try {
-            write_summary(request.out_dir / "summary.json", summary_with("failed", e.what()));
+            write_summary(out_dir / "summary.json", summary_with("failed", e.what()));
+            write_summary(out_dir / "run_info.json", run_info("failed"));
         } catch (const OutputError&) {
             // The disk that stopped the run may refuse the summary too: the first error is the news.
         }
         throw;
     }
-    nlohmann::json summary = summary_with(end == RunEnd::stopped ? "interrupted" : "completed", "");
-    write_summary(request.out_dir / "summary.json", summary);
+    const std::string status = end == RunEnd::stopped ? "interrupted" : "completed";
+    nlohmann::json summary = summary_with(status, "");
+    write_summary(out_dir / "summary.json", summary);
+    write_summary(out_dir / "run_info.json", run_info(status));
+    summary["run_folder"] = out_dir.string();
+    summary["state_files"] = state_files;
     return summary;
 }
 

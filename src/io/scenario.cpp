@@ -37,6 +37,7 @@ SimulationSettings read_settings(TableReader t) {
         t.fail("max_overlap", fmt::format("is a fraction of the thinner body's least width and must be <= 1, got {}",
                                           s.max_overlap_ratio));
     s.domain = read_domain(t);
+    t.allow({"initial_state"});  // a state file: read by load_scenario (io, not physics)
     t.reject_unknown_keys();
     return s;
 }
@@ -403,6 +404,15 @@ LoadedScenario load_scenario(const std::filesystem::path& file, const std::vecto
     s.model = read_model(s.root, file.string(), file.parent_path());
     TableReader top(s.root, file.string(), "");
     if (auto output = top.optional_table("output")) s.output = read_output_settings(*output);
+    TableReader simulation = top.table("simulation");
+    if (auto state = simulation.optional_string("initial_state")) {
+        if (state->empty()) simulation.fail("initial_state", "is empty: give a state file (.h5)");
+        if (s.model.settling)
+            simulation.fail("initial_state", "starts from a state that is already settled: remove [settling] (or "
+                                              "initial_state)");
+        s.initial_state = std::filesystem::path(*state).is_absolute() ? std::filesystem::path(*state)
+                                                                      : file.parent_path() / *state;
+    }
     try {
         s.world = build_world(s.model);
     } catch (const ModelError& e) {

@@ -34,6 +34,10 @@ struct LoadedScenario {
     Model model;
     World world;
     OutputSettings output;   ///< [output]: files besides history.csv and summary.json (io only)
+    /// [simulation] initial_state: a state file to start from (io/state_file.hpp), relative
+    /// names resolved against the scenario's folder; empty: none. The world is built from the
+    /// scenario alone: run_scenario and the sweeps apply the state.
+    std::filesystem::path initial_state;
 };
 
 /// Loads, overrides, validates and builds. A model error (overlap at start, unstable dt) is

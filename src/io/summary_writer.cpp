@@ -129,7 +129,6 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
     s["steps"] = w.step_index;
     s["dt_s"] = w.dt_s;
     s["critical_dt_s"] = w.critical_dt_s;
-    s["wall_time_s"] = info.wall_s;
     s["broad_phase_rebuilds"] = w.broad_phase_rebuilds;
     s["displacements_relative_to"] =
         monitor.reference_body() >= 0 ? w.bodies.name[static_cast<std::size_t>(monitor.reference_body())] : "ground";

@@ -19,7 +19,8 @@ struct RunInfo {
     std::string scenario;        ///< scenario file
     std::string status;          ///< "completed", "failed" or "interrupted" (SIGINT / SIGTERM)
     std::string error;           ///< the message when failed
-    double wall_s = 0.0;         ///< [s]
+    // (The wall-clock time is in run_info.json: summary.json holds results only, the same
+    // byte for byte for a run and for the same run stopped and restarted.)
 };
 
 nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, const RunInfo& info);

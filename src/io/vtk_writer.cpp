@@ -186,6 +186,14 @@ void VtkWriter::record(const World& w) {
     while (static_cast<double>(next_frame_) * settings_.frame_interval_s < w.time_s + 0.5 * w.dt_s) ++next_frame_;
 }
 
+void VtkWriter::resume(std::vector<double> times_s, double dt_s) {
+    times_s_ = std::move(times_s);
+    next_frame_ = 0;
+    // As record() left it after the last of these frames.
+    if (!times_s_.empty())
+        while (static_cast<double>(next_frame_) * settings_.frame_interval_s < times_s_.back() + 0.5 * dt_s) ++next_frame_;
+}
+
 void VtkWriter::finish(const World&) {
     write_collection(dir_ / "bodies.pvd", "bodies", times_s_);
     if (settings_.contacts) write_collection(dir_ / "contacts.pvd", "contacts", times_s_);

@@ -31,6 +31,10 @@ public:
     /// whose write failed is removed and not listed, so the collection names only whole files.
     void finish(const World& w) override;
     std::int64_t frames_written() const { return static_cast<std::int64_t>(times_s_.size()); }
+    /// [s] the time of each frame written (a state file keeps them: io/run_state_parts.hpp).
+    const std::vector<double>& frame_times_s() const { return times_s_; }
+    /// Goes on after the frames at times_s, written earlier by the same run (a restart).
+    void resume(std::vector<double> times_s, double dt_s);
 
 private:
     std::filesystem::path dir_;

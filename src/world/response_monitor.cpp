@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace blockdem {
 namespace {
@@ -62,6 +63,12 @@ ResponseMonitor::ResponseMonitor(const World& w)
             break;
         }
     for (std::size_t i = 0; i < b.size(); ++i) responses_[i] = base_of(b, i, thresholds_);
+}
+
+void ResponseMonitor::restore(std::vector<BodyResponse> responses) {
+    if (responses.size() != responses_.size())
+        throw std::invalid_argument("ResponseMonitor::restore: one response per body is needed");
+    responses_ = std::move(responses);
 }
 
 void ResponseMonitor::note_contacts(const World& w) {

@@ -67,6 +67,9 @@ public:
     /// Called once per step with the state at t.
     void observe(const World& w);
     const std::vector<BodyResponse>& responses() const { return responses_; }
+    /// Goes on from responses saved earlier in the same run (a restart, io/state_file.hpp): one
+    /// per body. What else it holds is recomputed at every step.
+    void restore(std::vector<BodyResponse> responses);
     /// What classify_outcomes needs, one record per body (taken-out bodies from w.domain).
     std::vector<BodyRecord> records(const World& w) const;
     const OutcomeThresholds& thresholds() const { return thresholds_; }

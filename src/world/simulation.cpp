@@ -18,7 +18,21 @@ std::int64_t steps_per_output(const World& w) {
     return static_cast<std::int64_t>(std::clamp(std::round(w.settings.output_interval_s / w.dt_s), 1.0, 1e18));
 }
 
+std::int64_t output_rows_before(const World& w, std::int64_t n) {
+    // The rows of the steps k < n with k % every == 0 (the last step's row comes at k = n = steps).
+    return n <= 0 ? 0 : (n - 1) / steps_per_output(w) + 1;
+}
+
+std::int64_t step_at_time(const World& w, double t_s) {
+    return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::llround(t_s / w.dt_s)), 0, total_steps(w));
+}
+
 namespace {
+
+bool save_point_due(const SavePoints& points, std::int64_t n) {
+    if (points.every_steps > 0 && n > 0 && n % points.every_steps == 0) return true;
+    return std::find(points.steps.begin(), points.steps.end(), n) != points.steps.end();
+}
 
 // Every recorder is finished (each closes its own files), then the first failure is rethrown.
 void finish_all(const World& w, const std::vector<Recorder*>& recorders) {
@@ -43,8 +57,15 @@ RunEnd run_simulation(World& w, const RunOptions& options) {
     const std::int64_t every = steps_per_output(w);
     auto stop_requested = [&] { return options.stop_requested && options.stop_requested->load(std::memory_order_relaxed); };
     RunEnd end = RunEnd::completed;
+    const std::int64_t first = w.step_index;
     try {
-        for (std::int64_t n = 0;; ++n) {
+        for (std::int64_t n = first;; ++n) {
+            // (A restored run does not save again the state it started from.)
+            if (options.on_save_point && (n > first || first == 0) && save_point_due(options.save_points, n))
+                options.on_save_point(w, std::find(options.save_points.steps.begin(), options.save_points.steps.end(), n) !=
+                                                 options.save_points.steps.end()
+                                             ? SaveReason::at_time
+                                             : SaveReason::every);
             step_begin(w);
             if (options.on_step) options.on_step(w);
             const bool output_now = n % every == 0 || n == steps;
@@ -55,6 +76,13 @@ RunEnd run_simulation(World& w, const RunOptions& options) {
                 // The time reached is the last row of every file, also between output times.
                 if (!output_now)
                     for (Recorder* r : options.recorders) r->record(w);
+                if (options.on_save_point) {
+                    // The world stays at the time recorded last (the summary reports it); the
+                    // state to go on from is the one after this step.
+                    World next = w;
+                    step_end(next);
+                    options.on_save_point(next, SaveReason::stopped);
+                }
                 end = RunEnd::stopped;
                 break;
             }

@@ -4,6 +4,8 @@
 // prints). The state handed to observers is the complete state at t (see step.hpp). A stop
 // request (a flag the app sets from SIGINT/SIGTERM) is honoured between two steps: the state
 // reached is recorded and every recorder finished, so the files end at a whole output row.
+// Save points (state files, io/state_file.hpp) fall between two steps, where the state is whole
+// (world/world_state.hpp); a run restored from one goes on from its step index.
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -30,11 +32,26 @@ struct RunProgress {
     double wall_s = 0.0;         ///< [s] elapsed
 };
 
+/// Why the run offers its state at a save point.
+enum class SaveReason { at_time, every, stopped };
+
+/// When to offer the state (RunOptions::on_save_point): before the step of each listed index,
+/// every `every_steps` steps (0: never), and on a stop request.
+struct SavePoints {
+    std::vector<std::int64_t> steps;   ///< step indices, any order
+    std::int64_t every_steps = 0;
+};
+
 struct RunOptions {
     std::vector<Recorder*> recorders;
     std::function<void(const World&)> on_step;              ///< every step (monitors)
     std::function<void(const RunProgress&)> on_progress;    ///< about once per second of wall time
     const std::atomic<bool>* stop_requested = nullptr;      ///< checked between steps; may be null
+    SavePoints save_points;
+    /// Called with the whole state between two steps (see SavePoints). On a stop request it is
+    /// the state after the step whose time was recorded last, so a run restored from it goes on
+    /// with the next step. Not called again at the step a restored run starts from.
+    std::function<void(const World&, SaveReason)> on_save_point;
 };
 
 enum class RunEnd { completed, stopped };
@@ -42,9 +59,14 @@ enum class RunEnd { completed, stopped };
 /// Number of steps to cover settings.duration_s, and steps between outputs.
 std::int64_t total_steps(const World& w);
 std::int64_t steps_per_output(const World& w);
+/// Output rows (history.csv, energy.csv) a run has written before the step of index n.
+std::int64_t output_rows_before(const World& w, std::int64_t n);
+/// The step index whose state is the time t_s (the nearest step, within the run).
+std::int64_t step_at_time(const World& w, double t_s);
 
-/// Runs to the end, or until *options.stop_requested turns true (RunEnd::stopped, after the
-/// current step, with a last record at the time reached). Recorders are finished even when an
+/// Runs from w.step_index (0, or where a restored state left off) to the end, or until
+/// *options.stop_requested turns true (RunEnd::stopped, after the current step, with a last
+/// record at the time reached). Recorders are finished even when an
 /// exception stops the run; the first exception is the one that propagates.
 RunEnd run_simulation(World& w, const RunOptions& options);
 

@@ -1,0 +1,75 @@
+#include "io/run_restart.hpp"
+
+#include <fstream>
+#include <system_error>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+#include "io/output_file.hpp"
+
+namespace blockdem {
+
+namespace fs = std::filesystem;
+
+fs::path state_run_folder(const fs::path& state_file, const StateFileInfo& info) {
+    const fs::path dir = fs::absolute(state_file).lexically_normal().parent_path();
+    if (dir.filename() == "state" && fs::exists(dir.parent_path() / "scenario.toml")) return dir.parent_path();
+    return info.run_folder;
+}
+
+namespace {
+
+// Bytes of the header and the first `rows` rows, or -1 with *found rows when the file has fewer.
+std::int64_t bytes_of_rows(const fs::path& file, std::int64_t rows, std::int64_t* found) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw InputError({file.string(), "", 0, 0}, "cannot open it to continue the run (the state's run folder "
+                                                         "must still hold it)");
+    const std::int64_t lines = rows + 1;
+    std::int64_t seen = 0, bytes = 0;
+    std::vector<char> chunk(1 << 16);
+    while (seen < lines && in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+        const std::streamsize got = in.gcount();
+        for (std::streamsize i = 0; i < got; ++i) {
+            if (chunk[static_cast<std::size_t>(i)] != '\n') continue;
+            if (++seen == lines) {
+                bytes += i + 1;
+                return bytes;
+            }
+        }
+        bytes += got;
+    }
+    *found = seen > 0 ? seen - 1 : 0;
+    return -1;
+}
+
+}  // namespace
+
+void keep_first_rows(const fs::path& from, const fs::path& to, std::int64_t rows) {
+    std::int64_t found = 0;
+    const std::int64_t bytes = bytes_of_rows(from, rows, &found);
+    if (bytes < 0)
+        throw InputError({from.string(), "", 0, 0},
+                         fmt::format("has {} rows, the state file counts {} before its time: these are not the files "
+                                     "of the run the state was saved in", found, rows));
+    std::error_code ec;
+    if (fs::exists(to) && fs::equivalent(from, to, ec)) {
+        fs::resize_file(from, static_cast<std::uintmax_t>(bytes), ec);
+        if (ec) throw OutputError(fmt::format("{}: cannot cut it back to the state's time: {}", from.string(), ec.message()));
+        return;
+    }
+    std::ifstream in(from, std::ios::binary);
+    OutputFile out(to);
+    std::vector<char> chunk(1 << 16);
+    std::int64_t left = bytes;
+    while (left > 0 && in) {
+        in.read(chunk.data(), static_cast<std::streamsize>(std::min<std::int64_t>(left, static_cast<std::int64_t>(chunk.size()))));
+        out.append(std::string_view(chunk.data(), static_cast<std::size_t>(in.gcount())));
+        left -= in.gcount();
+    }
+    out.close();
+}
+
+}  // namespace blockdem

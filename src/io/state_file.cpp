@@ -1,0 +1,611 @@
+#include "io/state_file.hpp"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+#include "io/output_file.hpp"
+
+namespace blockdem {
+namespace {
+
+constexpr const char* format_name = "blockdem state";
+constexpr std::int64_t format_version = 1;
+
+// HDF5 prints its own error stack to stderr by default; the messages here say it better.
+void quiet_hdf5() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
+// Closes an HDF5 handle at the end of a scope.
+class Handle {
+public:
+    Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+    ~Handle() {
+        if (id_ >= 0) close_(id_);
+    }
+    Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    Handle& operator=(Handle&&) = delete;
+    hid_t get() const { return id_; }
+    bool ok() const { return id_ >= 0; }
+
+private:
+    hid_t id_;
+    herr_t (*close_)(hid_t);
+};
+
+Handle string_type() {
+    Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+    H5Tset_size(type.get(), H5T_VARIABLE);
+    H5Tset_cset(type.get(), H5T_CSET_UTF8);
+    return type;
+}
+
+template <class T>
+hid_t memory_type();
+template <>
+hid_t memory_type<double>() { return H5T_NATIVE_DOUBLE; }
+template <>
+hid_t memory_type<std::int64_t>() { return H5T_NATIVE_INT64; }
+template <>
+hid_t memory_type<std::uint32_t>() { return H5T_NATIVE_UINT32; }
+template <>
+hid_t memory_type<std::uint8_t>() { return H5T_NATIVE_UINT8; }
+
+}  // namespace
+
+StateGroup::StateGroup(std::int64_t id, std::string file, std::string path)
+    : id_(id), file_(std::move(file)), path_(std::move(path)) {}
+
+StateGroup::~StateGroup() {
+    if (id_ < 0) return;
+    if (H5Iget_type(id_) == H5I_FILE)
+        H5Fclose(id_);
+    else
+        H5Gclose(id_);
+}
+
+StateGroup::StateGroup(StateGroup&& other) noexcept : id_(other.id_), file_(std::move(other.file_)), path_(std::move(other.path_)) {
+    other.id_ = -1;
+}
+
+void StateGroup::fail_read(const std::string& name, const std::string& problem) const {
+    const std::string item = path_ == "/" ? "/" + name : path_ + "/" + name;
+    throw InputError({file_, "", 0, 0}, fmt::format("not a readable blockdem state file: {}: {}", item, problem));
+}
+
+void StateGroup::fail_write(const std::string& name) const {
+    throw OutputError(fmt::format("{}: cannot write {}/{} of the state (disk full?)", file_, path_ == "/" ? "" : path_, name));
+}
+
+StateGroup StateGroup::create_group(const std::string& name) {
+    const hid_t g = H5Gcreate2(id_, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    if (g < 0) fail_write(name);
+    return StateGroup(g, file_, path_ == "/" ? "/" + name : path_ + "/" + name);
+}
+
+StateGroup StateGroup::open_group(const std::string& name) const {
+    if (!has(name)) fail_read(name, "missing group");
+    const hid_t g = H5Gopen2(id_, name.c_str(), H5P_DEFAULT);
+    if (g < 0) fail_read(name, "cannot open the group");
+    return StateGroup(g, file_, path_ == "/" ? "/" + name : path_ + "/" + name);
+}
+
+bool StateGroup::has(const std::string& name) const {
+    return H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0 || H5Aexists(id_, name.c_str()) > 0;
+}
+
+namespace {
+
+// A dataset of rows x columns (columns 0: one dimension) from contiguous memory.
+bool write_array(hid_t loc, const std::string& name, hid_t type, const void* data, hsize_t rows, hsize_t columns) {
+    const hsize_t dims[2] = {rows, columns};
+    Handle space(H5Screate_simple(columns ? 2 : 1, dims, nullptr), H5Sclose);
+    if (!space.ok()) return false;
+    Handle set(H5Dcreate2(loc, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+    if (!set.ok()) return false;
+    return rows * (columns ? columns : 1) == 0 || H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0;
+}
+
+}  // namespace
+
+void StateGroup::write(const std::string& name, const std::vector<double>& v) {
+    if (!write_array(id_, name, H5T_NATIVE_DOUBLE, v.data(), v.size(), 0)) fail_write(name);
+}
+void StateGroup::write(const std::string& name, const std::vector<std::int64_t>& v) {
+    if (!write_array(id_, name, H5T_NATIVE_INT64, v.data(), v.size(), 0)) fail_write(name);
+}
+void StateGroup::write(const std::string& name, const std::vector<std::uint32_t>& v) {
+    if (!write_array(id_, name, H5T_NATIVE_UINT32, v.data(), v.size(), 0)) fail_write(name);
+}
+void StateGroup::write(const std::string& name, const std::vector<std::uint8_t>& v) {
+    if (!write_array(id_, name, H5T_NATIVE_UINT8, v.data(), v.size(), 0)) fail_write(name);
+}
+void StateGroup::write(const std::string& name, const std::vector<Vec2>& v) {
+    std::vector<double> flat;
+    flat.reserve(2 * v.size());
+    for (Vec2 p : v) {
+        flat.push_back(p.x);
+        flat.push_back(p.y);
+    }
+    if (!write_array(id_, name, H5T_NATIVE_DOUBLE, flat.data(), v.size(), 2)) fail_write(name);
+}
+void StateGroup::write(const std::string& name, const std::vector<std::string>& v) {
+    std::vector<const char*> pointers;
+    for (const std::string& s : v) pointers.push_back(s.c_str());
+    const Handle type = string_type();
+    if (!write_array(id_, name, type.get(), pointers.data(), v.size(), 0)) fail_write(name);
+}
+
+namespace {
+
+bool write_attribute(hid_t loc, const std::string& name, hid_t type, const void* value) {
+    Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+    Handle attribute(H5Acreate2(loc, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    return attribute.ok() && H5Awrite(attribute.get(), type, value) >= 0;
+}
+
+}  // namespace
+
+void StateGroup::set(const std::string& name, double value) {
+    if (!write_attribute(id_, name, H5T_NATIVE_DOUBLE, &value)) fail_write(name);
+}
+void StateGroup::set(const std::string& name, std::int64_t value) {
+    if (!write_attribute(id_, name, H5T_NATIVE_INT64, &value)) fail_write(name);
+}
+void StateGroup::set(const std::string& name, const std::string& value) {
+    const char* text = value.c_str();
+    const Handle type = string_type();
+    if (!write_attribute(id_, name, type.get(), &text)) fail_write(name);
+}
+
+namespace {
+
+}  // namespace
+
+// Reads a numeric dataset of expected_columns columns (0: one dimension) into out.
+template <class T>
+static void read_numeric(const StateGroup& g, hid_t loc, const std::string& name, hsize_t expected_columns,
+                         std::int64_t expected_rows, std::vector<T>& out,
+                         void (StateGroup::*fail)(const std::string&, const std::string&) const) {
+    if (H5Lexists(loc, name.c_str(), H5P_DEFAULT) <= 0) (g.*fail)(name, "missing dataset");
+    Handle set(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!set.ok()) (g.*fail)(name, "cannot open the dataset");
+    Handle space(H5Dget_space(set.get()), H5Sclose);
+    const int rank = H5Sget_simple_extent_ndims(space.get());
+    hsize_t dims[2] = {0, 0};
+    if (rank != (expected_columns ? 2 : 1) || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 ||
+        (expected_columns && dims[1] != expected_columns))
+        (g.*fail)(name, expected_columns ? fmt::format("expected an n x {} array", expected_columns)
+                                         : std::string("expected a one-dimensional array"));
+    if (expected_rows >= 0 && dims[0] != static_cast<hsize_t>(expected_rows))
+        (g.*fail)(name, fmt::format("{} rows, expected {}", dims[0], expected_rows));
+    out.resize(dims[0] * (expected_columns ? expected_columns : 1));
+    if (!out.empty() && H5Dread(set.get(), memory_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+        (g.*fail)(name, "cannot read the values (wrong type, or a damaged file)");
+}
+
+std::vector<double> StateGroup::doubles(const std::string& name, std::int64_t expected) const {
+    std::vector<double> v;
+    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    return v;
+}
+std::vector<std::int64_t> StateGroup::integers(const std::string& name, std::int64_t expected) const {
+    std::vector<std::int64_t> v;
+    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    return v;
+}
+std::vector<std::uint32_t> StateGroup::indices(const std::string& name, std::int64_t expected) const {
+    std::vector<std::uint32_t> v;
+    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    return v;
+}
+std::vector<std::uint8_t> StateGroup::flags(const std::string& name, std::int64_t expected) const {
+    std::vector<std::uint8_t> v;
+    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    return v;
+}
+std::vector<Vec2> StateGroup::vectors(const std::string& name, std::int64_t expected) const {
+    std::vector<double> flat;
+    read_numeric(*this, id_, name, 2, expected, flat, &StateGroup::fail_read);
+    std::vector<Vec2> v(flat.size() / 2);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = {flat[2 * i], flat[2 * i + 1]};
+    return v;
+}
+
+std::vector<std::string> StateGroup::strings(const std::string& name, std::int64_t expected) const {
+    if (H5Lexists(id_, name.c_str(), H5P_DEFAULT) <= 0) fail_read(name, "missing dataset");
+    Handle set(H5Dopen2(id_, name.c_str(), H5P_DEFAULT), H5Dclose);
+    if (!set.ok()) fail_read(name, "cannot open the dataset");
+    Handle space(H5Dget_space(set.get()), H5Sclose);
+    hsize_t rows = 0;
+    if (H5Sget_simple_extent_ndims(space.get()) != 1 || H5Sget_simple_extent_dims(space.get(), &rows, nullptr) < 0)
+        fail_read(name, "expected a one-dimensional array of strings");
+    if (expected >= 0 && rows != static_cast<hsize_t>(expected)) fail_read(name, fmt::format("{} rows, expected {}", rows, expected));
+    std::vector<char*> raw(rows, nullptr);
+    const Handle type = string_type();
+    if (rows > 0 && H5Dread(set.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, raw.data()) < 0)
+        fail_read(name, "cannot read the strings");
+    std::vector<std::string> out;
+    for (char* s : raw) out.emplace_back(s ? s : "");
+    if (rows > 0) H5Dvlen_reclaim(type.get(), space.get(), H5P_DEFAULT, raw.data());
+    return out;
+}
+
+namespace {
+
+// Opens attribute name of loc, or nothing.
+hid_t open_attribute(hid_t loc, const std::string& name) {
+    if (H5Aexists(loc, name.c_str()) <= 0) return -1;
+    return H5Aopen(loc, name.c_str(), H5P_DEFAULT);
+}
+
+}  // namespace
+
+double StateGroup::number(const std::string& name) const {
+    Handle attribute(open_attribute(id_, name), H5Aclose);
+    double value = 0.0;
+    if (!attribute.ok()) fail_read(name, "missing attribute");
+    if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0) fail_read(name, "not a number");
+    return value;
+}
+
+std::int64_t StateGroup::integer(const std::string& name) const {
+    Handle attribute(open_attribute(id_, name), H5Aclose);
+    std::int64_t value = 0;
+    if (!attribute.ok()) fail_read(name, "missing attribute");
+    Handle stored(H5Aget_type(attribute.get()), H5Tclose);
+    if (H5Tget_class(stored.get()) != H5T_INTEGER) fail_read(name, "not an integer");
+    if (H5Aread(attribute.get(), H5T_NATIVE_INT64, &value) < 0) fail_read(name, "not an integer");
+    return value;
+}
+
+std::string StateGroup::text(const std::string& name) const {
+    Handle attribute(open_attribute(id_, name), H5Aclose);
+    if (!attribute.ok()) fail_read(name, "missing attribute");
+    Handle stored(H5Aget_type(attribute.get()), H5Tclose);
+    if (H5Tget_class(stored.get()) != H5T_STRING || H5Tis_variable_str(stored.get()) <= 0) fail_read(name, "not a string");
+    char* raw = nullptr;
+    const Handle type = string_type();
+    if (H5Aread(attribute.get(), type.get(), &raw) < 0) fail_read(name, "not a string");
+    std::string value = raw ? raw : "";
+    H5free_memory(raw);
+    return value;
+}
+
+// ---- the world's groups ----------------------------------------------------------------------
+
+namespace {
+
+template <class T, class Field>
+std::vector<T> column(const std::vector<PairContact>& contacts, Field field) {
+    std::vector<T> out;
+    out.reserve(contacts.size());
+    for (const PairContact& p : contacts) out.push_back(field(p));
+    return out;
+}
+
+// Per contact point k (0, 1) of every pair: an n x 2 array, row = pair.
+template <class T, class Field>
+std::vector<T> point_column(const std::vector<PairContact>& contacts, Field field) {
+    std::vector<T> out;
+    out.reserve(2 * contacts.size());
+    for (const PairContact& p : contacts)
+        for (const ContactPoint& point : p.points) out.push_back(field(point));
+    return out;
+}
+
+void write_contacts(StateGroup g, const std::vector<PairContact>& c) {
+    g.write("a", column<std::uint32_t>(c, [](const PairContact& p) { return p.a; }));
+    g.write("b", column<std::uint32_t>(c, [](const PairContact& p) { return p.b; }));
+    g.write("count", column<std::uint32_t>(c, [](const PairContact& p) { return p.count; }));
+    g.write("reference", column<std::uint32_t>(c, [](const PairContact& p) { return p.reference; }));
+    g.write("normal", column<Vec2>(c, [](const PairContact& p) { return p.normal; }));
+    g.write("stiffness_scale", column<double>(c, [](const PairContact& p) { return p.stiffness_scale; }));
+    g.write("axis_separating", column<std::uint32_t>(c, [](const PairContact& p) { return p.axis_cache.separating; }));
+    g.write("axis_incident", column<std::uint32_t>(c, [](const PairContact& p) { return p.axis_cache.incident; }));
+    g.write("axis_others_max_separation_m",
+            column<double>(c, [](const PairContact& p) { return p.axis_cache.others_max_separation_m; }));
+    g.write("axis_drift_m", column<double>(c, [](const PairContact& p) { return p.axis_cache.drift_m; }));
+    g.write("axis_incident_margin", column<double>(c, [](const PairContact& p) { return p.axis_cache.incident_margin; }));
+    g.write("axis_turn_rad", column<double>(c, [](const PairContact& p) { return p.axis_cache.turn_rad; }));
+    // The two point slots of each pair, slot 0 then slot 1 (a slot at or beyond count is unused).
+    g.write("point_feature", point_column<std::uint32_t>(c, [](const ContactPoint& q) { return q.feature; }));
+    g.write("point_m", point_column<Vec2>(c, [](const ContactPoint& q) { return q.point_m; }));
+    g.write("point_overlap_m", point_column<double>(c, [](const ContactPoint& q) { return q.overlap_m; }));
+    g.write("point_normal_force_n", point_column<double>(c, [](const ContactPoint& q) { return q.normal_force_n; }));
+    g.write("point_shear_spring_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_spring_n; }));
+    g.write("point_shear_force_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_force_n; }));
+    g.write("point_normal_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.normal_dashpot_n; }));
+    g.write("point_shear_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_dashpot_n; }));
+    g.write("point_sliding", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.sliding); }));
+}
+
+std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_count) {
+    const std::vector<std::uint32_t> a = g.indices("a");
+    const auto n = static_cast<std::int64_t>(a.size());
+    const std::vector<std::uint32_t> b = g.indices("b", n), count = g.indices("count", n), reference = g.indices("reference", n);
+    const std::vector<Vec2> normal = g.vectors("normal", n);
+    const std::vector<double> scale = g.doubles("stiffness_scale", n);
+    const std::vector<std::uint32_t> separating = g.indices("axis_separating", n), incident = g.indices("axis_incident", n);
+    const std::vector<double> others = g.doubles("axis_others_max_separation_m", n), drift = g.doubles("axis_drift_m", n),
+                              margin = g.doubles("axis_incident_margin", n), turn = g.doubles("axis_turn_rad", n);
+    const std::vector<std::uint32_t> feature = g.indices("point_feature", 2 * n);
+    const std::vector<Vec2> point = g.vectors("point_m", 2 * n);
+    const std::vector<double> overlap = g.doubles("point_overlap_m", 2 * n), normal_force = g.doubles("point_normal_force_n", 2 * n),
+                              spring = g.doubles("point_shear_spring_n", 2 * n), shear = g.doubles("point_shear_force_n", 2 * n),
+                              normal_dashpot = g.doubles("point_normal_dashpot_n", 2 * n),
+                              shear_dashpot = g.doubles("point_shear_dashpot_n", 2 * n);
+    const std::vector<std::uint8_t> sliding = g.flags("point_sliding", 2 * n);
+    std::vector<PairContact> out(a.size());
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        PairContact& p = out[i];
+        // The table is sorted by (a, b) with a < b: the merge and the force sums rely on it.
+        const bool sorted = i == 0 || out[i - 1].a < a[i] || (out[i - 1].a == a[i] && out[i - 1].b < b[i]);
+        if (a[i] >= b[i] || b[i] >= body_count || count[i] > 2 || !sorted)
+            throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: pair {} is not a "
+                                                               "valid entry of the contact table", g.path(), i + 1));
+        p.a = a[i];
+        p.b = b[i];
+        p.count = count[i];
+        p.reference = reference[i];
+        p.normal = normal[i];
+        p.stiffness_scale = scale[i];
+        p.axis_cache = {separating[i], incident[i], others[i], drift[i], margin[i], turn[i]};
+        for (std::size_t k = 0; k < 2; ++k) {
+            const std::size_t j = 2 * i + k;
+            p.points[k] = {feature[j], point[j], overlap[j], normal_force[j], spring[j], shear[j], normal_dashpot[j],
+                           shear_dashpot[j], sliding[j] != 0};
+        }
+    }
+    return out;
+}
+
+void write_energy(StateGroup g, const EnergyLedger& e) {
+    g.set("kinetic_j", e.kinetic_j);
+    g.set("gravitational_j", e.gravitational_j);
+    g.set("elastic_j", e.elastic_j);
+    g.set("normal_dashpot_j", e.normal_dashpot_j);
+    g.set("shear_dashpot_j", e.shear_dashpot_j);
+    g.set("friction_j", e.friction_j);
+    g.set("table_work_j", e.table_work_j);
+    g.set("initial_j", e.initial_j);
+    g.set("initial_gravitational_j", e.initial_gravitational_j);
+    g.set("peak_scale_j", e.peak_scale_j);
+    g.set("removed_j", e.removed_j);
+}
+
+EnergyLedger read_energy(const StateGroup& g) {
+    EnergyLedger e;
+    e.kinetic_j = g.number("kinetic_j");
+    e.gravitational_j = g.number("gravitational_j");
+    e.elastic_j = g.number("elastic_j");
+    e.normal_dashpot_j = g.number("normal_dashpot_j");
+    e.shear_dashpot_j = g.number("shear_dashpot_j");
+    e.friction_j = g.number("friction_j");
+    e.table_work_j = g.number("table_work_j");
+    e.initial_j = g.number("initial_j");
+    e.initial_gravitational_j = g.number("initial_gravitational_j");
+    e.peak_scale_j = g.number("peak_scale_j");
+    e.removed_j = g.number("removed_j");
+    return e;
+}
+
+void write_stability(StateGroup g, const StabilityWatch& s) {
+    g.set("start_bound_s", s.start_bound_s);
+    g.set("least_limit_s", s.least_limit_s);
+    g.set("least_limit_body", s.least_limit_body);
+    g.set("least_limit_time_s", s.least_limit_time_s);
+    g.set("first_exceeded_s", s.first_exceeded_s);
+    g.set("exceeded_body", s.exceeded_body);
+    g.set("max_overlap_ratio", s.max_overlap_ratio);
+    g.set("max_overlap_time_s", s.max_overlap_time_s);
+    g.set("max_overlap_pair_a", std::int64_t{s.max_overlap_pair_a});
+    g.set("max_overlap_pair_b", std::int64_t{s.max_overlap_pair_b});
+    g.set("max_overlap_m", s.max_overlap_m);
+    g.set("max_overlap_kn_N_m", s.max_overlap_kn_N_m);
+}
+
+StabilityWatch read_stability(const StateGroup& g) {
+    StabilityWatch s;
+    s.start_bound_s = g.number("start_bound_s");
+    s.least_limit_s = g.number("least_limit_s");
+    s.least_limit_body = g.text("least_limit_body");
+    s.least_limit_time_s = g.number("least_limit_time_s");
+    s.first_exceeded_s = g.number("first_exceeded_s");
+    s.exceeded_body = g.text("exceeded_body");
+    s.max_overlap_ratio = g.number("max_overlap_ratio");
+    s.max_overlap_time_s = g.number("max_overlap_time_s");
+    s.max_overlap_pair_a = static_cast<std::uint32_t>(g.integer("max_overlap_pair_a"));
+    s.max_overlap_pair_b = static_cast<std::uint32_t>(g.integer("max_overlap_pair_b"));
+    s.max_overlap_m = g.number("max_overlap_m");
+    s.max_overlap_kn_N_m = g.number("max_overlap_kn_N_m");
+    return s;
+}
+
+void write_world(StateGroup& root, const WorldState& s) {
+    StateGroup clock = root.create_group("clock");
+    clock.set("time_s", s.time_s);
+    clock.set("step_index", s.step_index);
+    clock.set("dt_s", s.dt_s);
+    clock.set("critical_dt_s", s.critical_dt_s);
+    clock.set("proven_stable_dt_s", s.proven_stable_dt_s);
+    clock.set("settling_time_s", s.settling_time_s);
+    clock.set("velocities_staggered", std::int64_t{s.velocities_staggered});
+    clock.set("broad_phase_rebuilds", s.broad_phase_rebuilds);
+
+    StateGroup b = root.create_group("bodies");
+    b.write("name", s.name);
+    std::vector<std::string> kinds;
+    for (BodyKind k : s.kind) kinds.emplace_back(to_string(k));
+    b.write("kind", kinds);
+    b.write("vertex_count", s.vertex_count);
+    b.write("local_vertices_m", s.local_vertices_m);
+    b.write("is_static", s.is_static);
+    b.write("position_m", s.position_m);
+    b.write("rotation_rad", s.rotation_rad);
+    b.write("velocity_m_s", s.velocity_m_s);
+    b.write("angular_velocity_rad_s", s.angular_velocity_rad_s);
+    b.write("velocity_at_t_m_s", s.velocity_at_t_m_s);
+    b.write("angular_velocity_at_t_rad_s", s.angular_velocity_at_t_rad_s);
+    b.write("initial_position_m", s.initial_position_m);
+    b.write("world_vertices_m", s.world_vertices_m);
+    b.write("world_normals", s.world_normals);
+    b.write("position_at_rebuild_m", s.position_at_rebuild_m);
+    b.write("rotation_at_rebuild_rad", s.rotation_at_rebuild_rad);
+
+    write_contacts(root.create_group("contacts"), s.contacts);
+    write_energy(root.create_group("energy"), s.energy);
+    write_stability(root.create_group("stability"), s.stability);
+
+    StateGroup d = root.create_group("domain");
+    std::vector<std::uint32_t> body;
+    std::vector<double> time_s;
+    std::vector<Vec2> position_m, velocity_m_s;
+    for (const BodyLeftModel& l : s.left) {
+        body.push_back(l.body);
+        time_s.push_back(l.time_s);
+        position_m.push_back(l.position_m);
+        velocity_m_s.push_back(l.velocity_m_s);
+    }
+    d.write("left_body", body);
+    d.write("left_time_s", time_s);
+    d.write("left_position_m", position_m);
+    d.write("left_velocity_m_s", velocity_m_s);
+}
+
+WorldState read_world(const StateGroup& root) {
+    WorldState s;
+    const StateGroup clock = root.open_group("clock");
+    s.time_s = clock.number("time_s");
+    s.step_index = clock.integer("step_index");
+    s.dt_s = clock.number("dt_s");
+    s.critical_dt_s = clock.number("critical_dt_s");
+    s.proven_stable_dt_s = clock.number("proven_stable_dt_s");
+    s.settling_time_s = clock.number("settling_time_s");
+    s.velocities_staggered = clock.integer("velocities_staggered") != 0;
+    s.broad_phase_rebuilds = clock.integer("broad_phase_rebuilds");
+
+    const StateGroup b = root.open_group("bodies");
+    s.name = b.strings("name");
+    const auto n = static_cast<std::int64_t>(s.name.size());
+    for (const std::string& kind : b.strings("kind", n)) {
+        if (kind == "dynamic") s.kind.push_back(BodyKind::dynamic);
+        else if (kind == "fixed") s.kind.push_back(BodyKind::fixed);
+        else if (kind == "driven") s.kind.push_back(BodyKind::driven);
+        else throw InputError({b.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: /bodies/kind: "
+                                                                "unknown kind '{}'", kind));
+    }
+    s.vertex_count = b.indices("vertex_count", n);
+    std::int64_t corners = 0;
+    for (std::uint32_t c : s.vertex_count) corners += c;
+    s.local_vertices_m = b.vectors("local_vertices_m", corners);
+    s.is_static = b.flags("is_static", n);
+    s.position_m = b.vectors("position_m", n);
+    s.rotation_rad = b.doubles("rotation_rad", n);
+    s.velocity_m_s = b.vectors("velocity_m_s", n);
+    s.angular_velocity_rad_s = b.doubles("angular_velocity_rad_s", n);
+    s.velocity_at_t_m_s = b.vectors("velocity_at_t_m_s", n);
+    s.angular_velocity_at_t_rad_s = b.doubles("angular_velocity_at_t_rad_s", n);
+    s.initial_position_m = b.vectors("initial_position_m", n);
+    s.world_vertices_m = b.vectors("world_vertices_m", corners);
+    s.world_normals = b.vectors("world_normals", corners);
+    s.position_at_rebuild_m = b.vectors("position_at_rebuild_m");
+    s.rotation_at_rebuild_rad = b.doubles("rotation_at_rebuild_rad", static_cast<std::int64_t>(s.position_at_rebuild_m.size()));
+    if (!s.position_at_rebuild_m.empty() && static_cast<std::int64_t>(s.position_at_rebuild_m.size()) != n)
+        throw InputError({b.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: /bodies/position_at_rebuild_m: "
+                                                           "{} rows, expected {}", s.position_at_rebuild_m.size(), n));
+
+    s.contacts = read_contacts(root.open_group("contacts"), s.name.size());
+    s.energy = read_energy(root.open_group("energy"));
+    s.stability = read_stability(root.open_group("stability"));
+
+    const StateGroup d = root.open_group("domain");
+    const std::vector<std::uint32_t> body = d.indices("left_body");
+    const auto left = static_cast<std::int64_t>(body.size());
+    const std::vector<double> time_s = d.doubles("left_time_s", left);
+    const std::vector<Vec2> position_m = d.vectors("left_position_m", left), velocity_m_s = d.vectors("left_velocity_m_s", left);
+    for (std::size_t i = 0; i < body.size(); ++i) {
+        if (body[i] >= s.name.size())
+            throw InputError({d.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: /domain/left_body: "
+                                                               "body {} of {}", body[i], s.name.size()));
+        s.left.push_back({body[i], time_s[i], position_m[i], velocity_m_s[i]});
+    }
+    return s;
+}
+
+}  // namespace
+
+void write_state_file(const std::filesystem::path& file, const World& w, const StateFileInfo& info,
+                      const std::vector<const StatePart*>& parts) {
+    quiet_hdf5();
+    std::error_code ignored;
+    std::filesystem::create_directories(file.parent_path(), ignored);
+    std::filesystem::path partial = file;
+    partial += ".partial";
+    try {
+        {
+            const hid_t id = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+            if (id < 0) throw OutputError(fmt::format("{}: cannot create the state file", partial.string()));
+            StateGroup root(id, file.string(), "/");
+            root.set("format", std::string(format_name));
+            root.set("format_version", format_version);
+            root.set("reason", info.reason);
+            root.set("scenario", info.scenario);
+            root.set("scenario_toml", info.scenario_toml);
+            root.set("run_folder", info.run_folder);
+            root.set("output_rows", info.output_rows);
+            root.set("time_s", w.time_s);
+            root.set("step_index", w.step_index);
+            write_world(root, capture_state(w));
+            for (const StatePart* part : parts) {
+                StateGroup g = root.create_group(part->state_group());
+                part->save_state(g);
+            }
+            // The data reach the disk here: a full disk shows now, not as a torn file later.
+            if (H5Fflush(id, H5F_SCOPE_GLOBAL) < 0)
+                throw OutputError(fmt::format("{}: cannot write the state file (disk full?)", file.string()));
+        }  // (closed here, by root)
+        std::filesystem::rename(partial, file);
+    } catch (const OutputError&) {
+        std::filesystem::remove(partial, ignored);
+        throw;
+    } catch (const std::filesystem::filesystem_error& e) {
+        std::filesystem::remove(partial, ignored);
+        throw OutputError(fmt::format("{}: cannot write the state file: {}", file.string(), e.code().message()));
+    }
+}
+
+StateFile::StateFile(const std::filesystem::path& file) : file_(file) {
+    quiet_hdf5();
+    const InputLocation where{file.string(), "", 0, 0};
+    if (!std::filesystem::is_regular_file(file)) throw InputError(where, "no such state file");
+    if (H5Fis_hdf5(file.c_str()) <= 0) throw InputError(where, "not an HDF5 file (not a blockdem state file)");
+    const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id < 0) throw InputError(where, "cannot open the HDF5 file (damaged or truncated?)");
+    root_ = std::make_shared<StateGroup>(id, file.string(), "/");
+    if (!root_->has("format") || root_->text("format") != format_name)
+        throw InputError(where, "an HDF5 file, but not a blockdem state file (no attribute format = \"blockdem state\")");
+    const std::int64_t version = root_->integer("format_version");
+    if (version != format_version)
+        throw InputError(where, fmt::format("state file format version {}; this blockdem reads version {}", version,
+                                            format_version));
+    info_.reason = root_->text("reason");
+    info_.scenario = root_->text("scenario");
+    info_.scenario_toml = root_->text("scenario_toml");
+    info_.run_folder = root_->text("run_folder");
+    info_.output_rows = root_->integer("output_rows");
+    world_ = read_world(*root_);
+}
+
+void StateFile::restore(StatePart& part) const { part.restore_state(root_->open_group(part.state_group())); }
+
+std::filesystem::path state_file_name(const std::filesystem::path& run_dir, double t_s) {
+    return run_dir / "state" / fmt::format("t_{:.6f}s.h5", t_s);
+}
+
+}  // namespace blockdem

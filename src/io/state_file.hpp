@@ -1,0 +1,116 @@
+#pragma once
+// State files: the complete state of a run between two steps, in HDF5 (docs/outputs.md, "State
+// files"), written by `blockdem run --save-state`, `--save-state-every` and on an interruption,
+// read by `--restart` and by a scenario's [simulation] initial_state.
+//
+// The world's part (world/world_state.hpp) has fixed groups (/clock, /bodies, /contacts,
+// /energy, /stability, /domain). Whatever else keeps state across the run (the response monitor
+// behind summary.json, the VTK writer's frame list, a sensor's filter) is a StatePart: it writes
+// and reads its own group, named by itself, so a new recorder adds its state without touching
+// this file. Every dataset and attribute has its unit in its name, as in the code.
+//
+// A state file is written to NAME.partial and renamed when complete, so a failed write (a full
+// disk) never leaves a torn state file and never replaces an earlier one.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "world/world_state.hpp"
+
+namespace blockdem {
+
+/// One group of a state file. Arrays are datasets (a Vec2 array is n x 2), scalars attributes.
+/// Writing throws OutputError, reading InputError, each naming the file and the item.
+class StateGroup {
+public:
+    StateGroup(std::int64_t id, std::string file, std::string path);
+    ~StateGroup();
+    StateGroup(StateGroup&& other) noexcept;
+    StateGroup(const StateGroup&) = delete;
+    StateGroup& operator=(const StateGroup&) = delete;
+    StateGroup& operator=(StateGroup&&) = delete;
+
+    /// A subgroup: created when writing, opened when reading.
+    StateGroup create_group(const std::string& name);
+    StateGroup open_group(const std::string& name) const;
+    bool has(const std::string& name) const;
+
+    void write(const std::string& name, const std::vector<double>& values);
+    void write(const std::string& name, const std::vector<std::int64_t>& values);
+    void write(const std::string& name, const std::vector<std::uint32_t>& values);
+    void write(const std::string& name, const std::vector<std::uint8_t>& values);
+    void write(const std::string& name, const std::vector<Vec2>& values);
+    void write(const std::string& name, const std::vector<std::string>& values);
+    void set(const std::string& name, double value);
+    void set(const std::string& name, std::int64_t value);
+    void set(const std::string& name, const std::string& value);
+
+    /// Arrays; expected_size (rows), when given, is checked.
+    std::vector<double> doubles(const std::string& name, std::int64_t expected_size = -1) const;
+    std::vector<std::int64_t> integers(const std::string& name, std::int64_t expected_size = -1) const;
+    std::vector<std::uint32_t> indices(const std::string& name, std::int64_t expected_size = -1) const;
+    std::vector<std::uint8_t> flags(const std::string& name, std::int64_t expected_size = -1) const;
+    std::vector<Vec2> vectors(const std::string& name, std::int64_t expected_size = -1) const;
+    std::vector<std::string> strings(const std::string& name, std::int64_t expected_size = -1) const;
+    double number(const std::string& name) const;
+    std::int64_t integer(const std::string& name) const;
+    std::string text(const std::string& name) const;
+
+    const std::string& file() const { return file_; }
+    const std::string& path() const { return path_; }
+
+private:
+    [[noreturn]] void fail_read(const std::string& name, const std::string& problem) const;
+    [[noreturn]] void fail_write(const std::string& name) const;
+    std::int64_t id_ = -1;   ///< hid_t
+    std::string file_;       ///< for messages
+    std::string path_;       ///< of this group in the file, "/" for the root
+};
+
+/// Something besides the world that keeps state across a run (see above).
+class StatePart {
+public:
+    virtual ~StatePart() = default;
+    virtual std::string state_group() const = 0;
+    virtual void save_state(StateGroup& group) const = 0;
+    virtual void restore_state(const StateGroup& group) = 0;
+};
+
+/// Facts about the run, kept at the file's root.
+struct StateFileInfo {
+    std::string reason;            ///< "save_state", "save_state_every", "interrupted"
+    std::string scenario;          ///< the scenario file the run was started from
+    std::string scenario_toml;     ///< the scenario as run (after --set), to recognise a changed one
+    std::string run_folder;        ///< the run's folder, absolute
+    std::int64_t output_rows = 0;  ///< rows of history.csv and energy.csv written before this state
+};
+
+/// Writes w's state and every part's group to file (see above). Throws OutputError.
+void write_state_file(const std::filesystem::path& file, const World& w, const StateFileInfo& info,
+                      const std::vector<const StatePart*>& parts);
+
+/// An open state file. Throws InputError naming the file and the item for a missing, corrupt or
+/// foreign file.
+class StateFile {
+public:
+    explicit StateFile(const std::filesystem::path& file);
+    const WorldState& world() const { return world_; }
+    const StateFileInfo& info() const { return info_; }
+    /// Restores part from its group; InputError when the file has none.
+    void restore(StatePart& part) const;
+    bool has_group(const std::string& name) const { return root_->has(name); }
+    const std::filesystem::path& path() const { return file_; }
+
+private:
+    std::filesystem::path file_;
+    std::shared_ptr<StateGroup> root_;
+    WorldState world_;
+    StateFileInfo info_;
+};
+
+/// The name of a state file at time t_s in a run folder: state/t_0.500000s.h5.
+std::filesystem::path state_file_name(const std::filesystem::path& run_dir, double t_s);
+
+}  // namespace blockdem
