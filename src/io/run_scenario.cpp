@@ -131,6 +131,19 @@ SavePoints save_points(const World& w, const RunRequest& request) {
     return points;
 }
 
+// A restart into a new folder takes the frames written before the state with it, so that the
+// folder is complete (the .pvd collections list them).
+void copy_vtk_frames(const fs::path& from, const fs::path& to, std::int64_t frames) {
+    for (std::int64_t i = 0; i < frames; ++i)
+        for (const char* kind : {"bodies", "contacts"}) {
+            const fs::path file = from / fmt::format("{}_{:06d}.vtp", kind, i);
+            if (!fs::exists(file)) continue;  // (contacts = false)
+            std::error_code ec;
+            fs::copy_file(file, to / file.filename(), fs::copy_options::overwrite_existing, ec);
+            if (ec) throw OutputError(fmt::format("{}: cannot copy it to {}: {}", file.string(), to.string(), ec.message()));
+        }
+}
+
 }  // namespace
 
 nlohmann::json run_scenario(const RunRequest& request) {
@@ -192,6 +205,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
             // The monitor's group is required; a part the state lacks (VTK frames that the saved
             // run did not write) starts afresh.
             if (part == &monitor_state || start.restart->has_group(part->state_group())) start.restart->restore(*part);
+    if (start.restart && !in_place && vtk) copy_vtk_frames(start.run_folder / "vtk", out_dir / "vtk", vtk->frames_written());
     // What was written besides history.csv and summary.json; `blockdem run` reads "report".
     auto outputs = [&] {
         return nlohmann::json{{"energy", "energy.csv"}, {"bodies", "bodies.json"},
