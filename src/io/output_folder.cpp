@@ -17,9 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // The files and folders a run and its report write at the top of the folder.
-constexpr std::array<const char*, 6> run_files = {"scenario.toml", "history.csv", "energy.csv",
-                                                  "summary.json",  "bodies.json", "report.html"};
-constexpr std::array<const char*, 2> run_subfolders = {"vtk", "figures"};
+constexpr std::array<const char*, 7> run_files = {"scenario.toml", "history.csv", "energy.csv",  "summary.json",
+                                                  "bodies.json",   "report.html", "run_info.json"};
+constexpr std::array<const char*, 3> run_subfolders = {"vtk", "figures", "state"};
 
 bool is_run_summary(const fs::path& file) {
     std::ifstream in(file);
@@ -41,9 +41,12 @@ bool has_extension(const fs::path& file, std::initializer_list<std::string_view>
     return false;
 }
 
-// vtk/: the frames and collections of VtkWriter; figures/: the report's images and animation.
+// vtk/: the frames and collections of VtkWriter; figures/: the report's images and animation;
+// state/: the state files (io/state_file.hpp).
 bool written_by_blockdem(const fs::path& subfolder, const fs::path& file) {
     const std::string name = file.filename().string();
+    if (subfolder.filename() == "state")
+        return name.starts_with("t_") && (name.ends_with("s.h5") || name.ends_with("s.h5.partial"));
     if (subfolder.filename() == "vtk")
         return ((name.starts_with("bodies_") || name.starts_with("contacts_")) && file.extension() == ".vtp") ||
                name == "bodies.pvd" || name == "contacts.pvd";

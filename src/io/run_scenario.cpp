@@ -278,6 +278,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
     write_summary(out_dir / "summary.json", summary);
     write_summary(out_dir / "run_info.json", run_info(status));
     summary["run_folder"] = out_dir.string();
+    summary["wall_time_s"] = wall_s();  // (for the callers that time their runs: converge)
     summary["state_files"] = state_files;
     return summary;
 }

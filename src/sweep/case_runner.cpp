@@ -14,9 +14,11 @@
 #include "io/input_error.hpp"
 #include "io/overrides.hpp"
 #include "io/scenario.hpp"
+#include "io/state_file.hpp"
 #include "world/response_monitor.hpp"
 #include "world/simulation.hpp"
 #include "world/simulation_error.hpp"
+#include "world/world_state.hpp"
 
 namespace blockdem::sweep {
 namespace {
@@ -30,6 +32,14 @@ std::vector<std::string> as_set_arguments(const std::vector<Assignment>& assignm
     return out;
 }
 
+void start_case_from_state(World& w, const std::filesystem::path& file, const std::filesystem::path& scenario) {
+    const StateFile state(file);
+    if (auto mismatch = state_mismatch(w, state.world()))
+        throw InputError({file.string(), "", 0, 0},
+                         fmt::format("the state does not belong to scenario {}: {}", scenario.string(), *mismatch));
+    start_from_state(w, state.world());
+}
+
 // The scenario of one case: the unvaried TOML, the assignments, then the record (which replaces
 // the whole horizontal motion, since a sine's keys mean nothing to a record).
 World build_case_world(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c) {
@@ -40,11 +50,17 @@ World build_case_world(const SweepScenario& scenario, const SweepPlan& plan, con
         apply_overrides(root, as_set_arguments(record_assignments(plan.suite, c)));
     }
     const Model model = read_model(root, scenario.file.string(), scenario.file.parent_path());
+    World w;
     try {
-        return build_world(model);
+        w = build_world(model);
     } catch (const ModelError& e) {
         throw InputError({scenario.file.string(), "", 0, 0}, e.what());
     }
+    // [simulation] initial_state: every case starts from the settled state (settle once, shake
+    // many times). The file is read for each case: a sweep may vary it.
+    if (const auto state = root.at_path("simulation.initial_state").value<std::string>())
+        start_case_from_state(w, scenario.file.parent_path() / *state, scenario.file);
+    return w;
 }
 
 RockingWindow window_for(const World& w) {
@@ -211,6 +227,8 @@ SweepScenario load_sweep_scenario(const std::filesystem::path& file) {
     s.file = file;
     LoadedScenario loaded = load_scenario(file, {});
     s.root = loaded.root;
+    // A bad initial state is bad input of the sweep, found before any case runs.
+    if (!loaded.initial_state.empty()) start_case_from_state(loaded.world, loaded.initial_state, file);
     for (std::size_t i = 0; i < loaded.world.bodies.size(); ++i)
         if (loaded.world.bodies.kind[i] == BodyKind::dynamic) s.body_names.push_back(loaded.world.bodies.name[i]);
     return s;

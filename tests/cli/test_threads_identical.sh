@@ -22,7 +22,7 @@ slope=("$src/examples/assemblies/rock_slope.toml" --set simulation.duration=0.00
        --set assemblies.rock.record=true --set output.vtk=false --set assemblies.rock.min_block_area=0.02
        --set assemblies.rock.joint_sets.0.spacing=0.3 --set assemblies.rock.joint_sets.1.spacing=0.45
        --set settling.kinetic_ratio=1 --set settling.window=0.002)
-without_wall_time() { /usr/bin/python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s.pop("wall_time_s"); print(json.dumps(s, sort_keys=True))' "$1"; }
+without_wall_time() { /usr/bin/python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s.pop("wall_time_s", None); print(json.dumps(s, sort_keys=True))' "$1"; }
 
 for scene in wall slope; do
   declare -n args=$scene

@@ -73,7 +73,7 @@ def outcome_section(run):
     elif s.get("status") != "completed":
         parts.append(f"<p class='failed'>The run stopped: {html.escape(str(s.get('error', s.get('status'))))}</p>")
     parts.append(f"<p>Simulated {s.get('time_s', 0):.4g} s in {s.get('steps', 0)} steps of dt = {s.get('dt_s', 0):.4g} s "
-                 f"(stable limit {s.get('critical_dt_s', 0):.4g} s); wall time {s.get('wall_time_s', 0):.3g} s. "
+                 f"(stable limit {s.get('critical_dt_s', 0):.4g} s); wall time {run.run_info.get('wall_time_s', s.get('wall_time_s', 0)):.3g} s. "
                  f"Displacements are relative to {html.escape(str(s.get('displacements_relative_to', 'ground')))}.</p>")
     rows = ["<tr><th>body</th><th>outcome</th><th>slid?</th><th>rocked?</th><th>overturned?</th><th>peak |rotation|</th>"
             "<th>at t</th><th>peak |u| relative</th><th>final u_x relative</th></tr>"]

@@ -34,6 +34,9 @@ class RunFolder:
         self.t_s = self.columns["t"]
         self.summary = json.loads((self.path / "summary.json").read_text(encoding="utf-8"))
         self.bodies = json.loads((self.path / "bodies.json").read_text(encoding="utf-8"))["bodies"]
+        # Wall-clock time and restarts (run_info.json, absent in folders of older versions).
+        info = self.path / "run_info.json"
+        self.run_info = json.loads(info.read_text(encoding="utf-8")) if info.is_file() else {}
         self.energy = None
         if (self.path / "energy.csv").is_file():
             header, data = _read_csv(self.path / "energy.csv")

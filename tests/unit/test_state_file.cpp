@@ -1,0 +1,167 @@
+// State files (io/state_file.hpp, world/world_state.hpp): a world saved between two steps and
+// restored into a fresh world from the same model goes on bit for bit as the world that never
+// stopped; the file round trip loses nothing; bad files are refused with the file's name.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include "io/input_error.hpp"
+#include "io/run_state_parts.hpp"
+#include "io/state_file.hpp"
+#include "scenes/assemblies.hpp"
+#include "world/response_monitor.hpp"
+#include "world/step.hpp"
+#include "world/world_state.hpp"
+
+namespace blockdem {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path temp_file(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / fmt::format("blockdem_state_test_{}", ::getpid());
+    fs::create_directories(dir);
+    return dir / name;
+}
+
+void advance(World& w, ResponseMonitor& monitor, int steps) {
+    for (int i = 0; i < steps; ++i) {
+        step_begin(w);
+        monitor.observe(w);
+        step_end(w);
+    }
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool same_bits(Vec2 a, Vec2 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
+
+// A wall of bricks laid touching on a shaken table: contacts open, close and slide.
+Model wall() { return scenes::s3_wall_scene(60, 1.0, 1e-4); }
+
+TEST(StateFile, RestoredWorldGoesOnBitForBit) {
+    World straight = build_world(wall());
+    ResponseMonitor straight_monitor(straight);
+    advance(straight, straight_monitor, 1500);
+    const fs::path file = temp_file("wall.h5");
+    MonitorStatePart saved_monitor(straight_monitor);
+    write_state_file(file, straight, {"save_state", "wall", "", "", 0}, {&saved_monitor});
+
+    World restored = build_world(wall());
+    ResponseMonitor restored_monitor(restored);
+    const StateFile state(file);
+    ASSERT_FALSE(state_mismatch(restored, state.world()));
+    restore_state(restored, state.world());
+    MonitorStatePart monitor_part(restored_monitor);
+    state.restore(monitor_part);
+    EXPECT_EQ(restored.step_index, 1500);
+    EXPECT_TRUE(same_bits(restored.time_s, straight.time_s));
+
+    advance(straight, straight_monitor, 1500);
+    advance(restored, restored_monitor, 1500);
+    const Bodies& a = straight.bodies;
+    const Bodies& b = restored.bodies;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_TRUE(same_bits(a.position_m[i], b.position_m[i])) << a.name[i];
+        EXPECT_TRUE(same_bits(a.rotation_rad[i], b.rotation_rad[i])) << a.name[i];
+        EXPECT_TRUE(same_bits(a.velocity_m_s[i], b.velocity_m_s[i])) << a.name[i];
+        const BodyResponse& ra = straight_monitor.responses()[i];
+        const BodyResponse& rb = restored_monitor.responses()[i];
+        EXPECT_TRUE(same_bits(ra.peak_abs_base_slip_m, rb.peak_abs_base_slip_m)) << a.name[i];
+        EXPECT_TRUE(same_bits(ra.sliding_time_s, rb.sliding_time_s)) << a.name[i];
+        EXPECT_EQ(ra.supporters, rb.supporters) << a.name[i];
+    }
+    EXPECT_TRUE(same_bits(straight.energy.residual_j(), restored.energy.residual_j()));
+    EXPECT_TRUE(same_bits(straight.energy.friction_j, restored.energy.friction_j));
+    EXPECT_EQ(straight.broad_phase_rebuilds, restored.broad_phase_rebuilds);
+    ASSERT_EQ(straight.contacts.size(), restored.contacts.size());
+    for (std::size_t p = 0; p < straight.contacts.size(); ++p)
+        for (int k = 0; k < 2; ++k)
+            EXPECT_TRUE(same_bits(straight.contacts[p].points[k].shear_spring_n, restored.contacts[p].points[k].shear_spring_n));
+}
+
+TEST(StateFile, RoundTripKeepsTheHistoryOfEveryContact) {
+    World w = build_world(wall());
+    ResponseMonitor monitor(w);
+    advance(w, monitor, 800);
+    const fs::path file = temp_file("round_trip.h5");
+    write_state_file(file, w, {"save_state", "wall", "toml text", "/runs/wall", 17}, {});
+    const StateFile state(file);
+    EXPECT_EQ(state.info().output_rows, 17);
+    EXPECT_EQ(state.info().scenario_toml, "toml text");
+    const WorldState& s = state.world();
+    const WorldState now = capture_state(w);
+    ASSERT_EQ(s.contacts.size(), now.contacts.size());
+    int loaded_points = 0;
+    for (std::size_t p = 0; p < s.contacts.size(); ++p) {
+        EXPECT_EQ(std::memcmp(&s.contacts[p].axis_cache, &now.contacts[p].axis_cache, sizeof(AxisCache)), 0);
+        EXPECT_EQ(s.contacts[p].count, now.contacts[p].count);
+        for (int k = 0; k < 2; ++k) {
+            const ContactPoint& x = s.contacts[p].points[k];
+            const ContactPoint& y = now.contacts[p].points[k];
+            EXPECT_EQ(x.feature, y.feature);
+            EXPECT_TRUE(same_bits(x.shear_spring_n, y.shear_spring_n));
+            EXPECT_TRUE(same_bits(x.normal_dashpot_n, y.normal_dashpot_n));
+            EXPECT_TRUE(same_bits(x.shear_dashpot_n, y.shear_dashpot_n));
+        }
+        loaded_points += static_cast<int>(s.contacts[p].count);
+    }
+    EXPECT_GT(loaded_points, 60);  // the wall rests on its contacts
+    EXPECT_TRUE(same_bits(s.energy.normal_dashpot_j, w.energy.normal_dashpot_j));
+    EXPECT_EQ(s.stability.least_limit_body, w.stability.least_limit_body);
+    EXPECT_EQ(s.velocities_staggered, true);
+}
+
+TEST(StateFile, StartFromStateRestartsTheClock) {
+    World settled = build_world(wall());
+    ResponseMonitor monitor(settled);
+    advance(settled, monitor, 500);
+    World fresh = build_world(wall());
+    start_from_state(fresh, capture_state(settled));
+    EXPECT_EQ(fresh.time_s, 0.0);
+    EXPECT_EQ(fresh.step_index, 0);
+    EXPECT_EQ(fresh.energy.friction_j, 0.0);
+    EXPECT_EQ(fresh.energy.initial_j, fresh.energy.stored_j());
+    const std::uint32_t brick = fresh.body_id(settled.bodies.name.back());
+    EXPECT_TRUE(same_bits(fresh.bodies.initial_position_m[brick], settled.bodies.position_m[brick]));
+}
+
+TEST(StateFile, AnotherScenariosStateIsNamed) {
+    World small = build_world(scenes::s3_wall_scene(30, 1.0, 1e-4));
+    World large = build_world(wall());
+    const auto mismatch = state_mismatch(large, capture_state(small));
+    ASSERT_TRUE(mismatch);
+    EXPECT_NE(mismatch->find("the state has"), std::string::npos) << *mismatch;
+}
+
+std::string error_of(const fs::path& file) {
+    try {
+        StateFile state(file);
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+        return e.what();
+    }
+    return "";
+}
+
+TEST(StateFile, BadFilesAreRefusedWithTheirName) {
+    EXPECT_NE(error_of(temp_file("missing.h5")).find("no such state file"), std::string::npos);
+    const fs::path garbage = temp_file("garbage.h5");
+    std::ofstream(garbage) << "not hdf5 at all\n";
+    EXPECT_NE(error_of(garbage).find("not an HDF5 file"), std::string::npos);
+
+    World w = build_world(wall());
+    const fs::path whole = temp_file("whole.h5");
+    write_state_file(whole, w, {"save_state", "wall", "", "", 0}, {});
+    const fs::path cut = temp_file("cut.h5");
+    fs::copy_file(whole, cut, fs::copy_options::overwrite_existing);
+    fs::resize_file(cut, fs::file_size(whole) / 2);
+    EXPECT_NE(error_of(cut), "");
+}
+
+}  // namespace
+}  // namespace blockdem
