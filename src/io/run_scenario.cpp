@@ -224,6 +224,15 @@ nlohmann::json run_scenario(const RunRequest& request) {
     state_info.scenario_toml = scenario_as_run(loaded.root, scenario);
     state_info.run_folder = fs::absolute(out_dir).lexically_normal().string();
     std::vector<std::string> state_files;
+    // A state file is named by the time asked for (the step nearest 0.3 s may be at 0.2999994 s).
+    auto name_time = [&](const World& w, SaveReason reason) {
+        if (reason == SaveReason::at_time)
+            for (double t_s : request.save_state_times_s)
+                if (step_at_time(w, t_s) == w.step_index) return t_s;
+        if (reason == SaveReason::every)
+            return static_cast<double>(w.step_index / points.every_steps) * request.save_state_every_s;
+        return static_cast<double>(w.step_index) * w.dt_s;
+    };
     options.on_save_point = [&](const World& w, SaveReason reason) {
         // The rows the state counts must be on disk with it.
         history.flush();
@@ -231,7 +240,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
         state_info.reason = reason == SaveReason::stopped ? "interrupted" : reason == SaveReason::every ? "save_state_every"
                                                                                                           : "save_state";
         state_info.output_rows = output_rows_before(w, w.step_index);
-        const fs::path file = state_file_name(out_dir, w.time_s);
+        const fs::path file = state_file_name(out_dir, name_time(w, reason));
         std::vector<const StatePart*> const_parts(parts.begin(), parts.end());
         write_state_file(file, w, state_info, const_parts);
         state_files.push_back(file.string());

@@ -101,44 +101,55 @@ bool StateGroup::has(const std::string& name) const {
 
 namespace {
 
-// A dataset of rows x columns (columns 0: one dimension) from contiguous memory.
-bool write_array(hid_t loc, const std::string& name, hid_t type, const void* data, hsize_t rows, hsize_t columns) {
-    const hsize_t dims[2] = {rows, columns};
-    Handle space(H5Screate_simple(columns ? 2 : 1, dims, nullptr), H5Sclose);
+// A dataset of the given shape from contiguous memory.
+bool write_array(hid_t loc, const std::string& name, hid_t type, const void* data, const std::vector<hsize_t>& dims) {
+    Handle space(H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr), H5Sclose);
     if (!space.ok()) return false;
     Handle set(H5Dcreate2(loc, name.c_str(), type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
     if (!set.ok()) return false;
-    return rows * (columns ? columns : 1) == 0 || H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0;
+    hsize_t count = 1;
+    for (hsize_t d : dims) count *= d;
+    return count == 0 || H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0;
+}
+
+// n items as n rows, or as n / slots rows of `slots` (per contact point), then the item's own
+// dimensions (2 for a Vec2).
+std::vector<hsize_t> shape_of(std::size_t items, std::size_t slots, std::vector<hsize_t> item) {
+    std::vector<hsize_t> dims;
+    if (slots > 0) dims = {items / slots, slots};
+    else dims = {items};
+    dims.insert(dims.end(), item.begin(), item.end());
+    return dims;
 }
 
 }  // namespace
 
-void StateGroup::write(const std::string& name, const std::vector<double>& v) {
-    if (!write_array(id_, name, H5T_NATIVE_DOUBLE, v.data(), v.size(), 0)) fail_write(name);
+void StateGroup::write(const std::string& name, const std::vector<double>& v, std::size_t slots) {
+    if (!write_array(id_, name, H5T_NATIVE_DOUBLE, v.data(), shape_of(v.size(), slots, {}))) fail_write(name);
 }
-void StateGroup::write(const std::string& name, const std::vector<std::int64_t>& v) {
-    if (!write_array(id_, name, H5T_NATIVE_INT64, v.data(), v.size(), 0)) fail_write(name);
+void StateGroup::write(const std::string& name, const std::vector<std::int64_t>& v, std::size_t slots) {
+    if (!write_array(id_, name, H5T_NATIVE_INT64, v.data(), shape_of(v.size(), slots, {}))) fail_write(name);
 }
-void StateGroup::write(const std::string& name, const std::vector<std::uint32_t>& v) {
-    if (!write_array(id_, name, H5T_NATIVE_UINT32, v.data(), v.size(), 0)) fail_write(name);
+void StateGroup::write(const std::string& name, const std::vector<std::uint32_t>& v, std::size_t slots) {
+    if (!write_array(id_, name, H5T_NATIVE_UINT32, v.data(), shape_of(v.size(), slots, {}))) fail_write(name);
 }
-void StateGroup::write(const std::string& name, const std::vector<std::uint8_t>& v) {
-    if (!write_array(id_, name, H5T_NATIVE_UINT8, v.data(), v.size(), 0)) fail_write(name);
+void StateGroup::write(const std::string& name, const std::vector<std::uint8_t>& v, std::size_t slots) {
+    if (!write_array(id_, name, H5T_NATIVE_UINT8, v.data(), shape_of(v.size(), slots, {}))) fail_write(name);
 }
-void StateGroup::write(const std::string& name, const std::vector<Vec2>& v) {
+void StateGroup::write(const std::string& name, const std::vector<Vec2>& v, std::size_t slots) {
     std::vector<double> flat;
     flat.reserve(2 * v.size());
     for (Vec2 p : v) {
         flat.push_back(p.x);
         flat.push_back(p.y);
     }
-    if (!write_array(id_, name, H5T_NATIVE_DOUBLE, flat.data(), v.size(), 2)) fail_write(name);
+    if (!write_array(id_, name, H5T_NATIVE_DOUBLE, flat.data(), shape_of(v.size(), slots, {2}))) fail_write(name);
 }
 void StateGroup::write(const std::string& name, const std::vector<std::string>& v) {
     std::vector<const char*> pointers;
     for (const std::string& s : v) pointers.push_back(s.c_str());
     const Handle type = string_type();
-    if (!write_array(id_, name, type.get(), pointers.data(), v.size(), 0)) fail_write(name);
+    if (!write_array(id_, name, type.get(), pointers.data(), {v.size()})) fail_write(name);
 }
 
 namespace {
@@ -167,9 +178,9 @@ namespace {
 
 }  // namespace
 
-// Reads a numeric dataset of expected_columns columns (0: one dimension) into out.
+// Reads a numeric dataset of shape (rows, trailing...) into out; expected_rows < 0: any.
 template <class T>
-static void read_numeric(const StateGroup& g, hid_t loc, const std::string& name, hsize_t expected_columns,
+static void read_numeric(const StateGroup& g, hid_t loc, const std::string& name, const std::vector<hsize_t>& trailing,
                          std::int64_t expected_rows, std::vector<T>& out,
                          void (StateGroup::*fail)(const std::string&, const std::string&) const) {
     if (H5Lexists(loc, name.c_str(), H5P_DEFAULT) <= 0) (g.*fail)(name, "missing dataset");
@@ -177,41 +188,62 @@ static void read_numeric(const StateGroup& g, hid_t loc, const std::string& name
     if (!set.ok()) (g.*fail)(name, "cannot open the dataset");
     Handle space(H5Dget_space(set.get()), H5Sclose);
     const int rank = H5Sget_simple_extent_ndims(space.get());
-    hsize_t dims[2] = {0, 0};
-    if (rank != (expected_columns ? 2 : 1) || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0 ||
-        (expected_columns && dims[1] != expected_columns))
-        (g.*fail)(name, expected_columns ? fmt::format("expected an n x {} array", expected_columns)
-                                         : std::string("expected a one-dimensional array"));
+    hsize_t dims[4] = {0, 0, 0, 0};
+    bool fits = rank == static_cast<int>(trailing.size()) + 1 && rank <= 4 && H5Sget_simple_extent_dims(space.get(), dims, nullptr) >= 0;
+    for (std::size_t k = 0; fits && k < trailing.size(); ++k) fits = dims[k + 1] == trailing[k];
+    if (!fits) {
+        std::string shape = "n";
+        for (hsize_t d : trailing) shape += fmt::format(" x {}", d);
+        (g.*fail)(name, "expected an array of shape " + shape);
+    }
     if (expected_rows >= 0 && dims[0] != static_cast<hsize_t>(expected_rows))
         (g.*fail)(name, fmt::format("{} rows, expected {}", dims[0], expected_rows));
-    out.resize(dims[0] * (expected_columns ? expected_columns : 1));
+    std::size_t count = dims[0];
+    for (hsize_t d : trailing) count *= d;
+    out.resize(count);
     if (!out.empty() && H5Dread(set.get(), memory_type<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
         (g.*fail)(name, "cannot read the values (wrong type, or a damaged file)");
 }
 
-std::vector<double> StateGroup::doubles(const std::string& name, std::int64_t expected) const {
+namespace {
+
+// The trailing dimensions of an array read by rows of `slots` (0: one item a row) of an item
+// of shape `item`; expected rows counted in items become rows of slots.
+std::vector<hsize_t> trailing_of(std::size_t slots, std::vector<hsize_t> item) {
+    std::vector<hsize_t> dims;
+    if (slots > 0) dims.push_back(slots);
+    dims.insert(dims.end(), item.begin(), item.end());
+    return dims;
+}
+std::int64_t rows_of(std::int64_t expected_items, std::size_t slots) {
+    return expected_items < 0 || slots == 0 ? expected_items : expected_items / static_cast<std::int64_t>(slots);
+}
+
+}  // namespace
+
+std::vector<double> StateGroup::doubles(const std::string& name, std::int64_t expected, std::size_t slots) const {
     std::vector<double> v;
-    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    read_numeric(*this, id_, name, trailing_of(slots, {}), rows_of(expected, slots), v, &StateGroup::fail_read);
     return v;
 }
-std::vector<std::int64_t> StateGroup::integers(const std::string& name, std::int64_t expected) const {
+std::vector<std::int64_t> StateGroup::integers(const std::string& name, std::int64_t expected, std::size_t slots) const {
     std::vector<std::int64_t> v;
-    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    read_numeric(*this, id_, name, trailing_of(slots, {}), rows_of(expected, slots), v, &StateGroup::fail_read);
     return v;
 }
-std::vector<std::uint32_t> StateGroup::indices(const std::string& name, std::int64_t expected) const {
+std::vector<std::uint32_t> StateGroup::indices(const std::string& name, std::int64_t expected, std::size_t slots) const {
     std::vector<std::uint32_t> v;
-    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    read_numeric(*this, id_, name, trailing_of(slots, {}), rows_of(expected, slots), v, &StateGroup::fail_read);
     return v;
 }
-std::vector<std::uint8_t> StateGroup::flags(const std::string& name, std::int64_t expected) const {
+std::vector<std::uint8_t> StateGroup::flags(const std::string& name, std::int64_t expected, std::size_t slots) const {
     std::vector<std::uint8_t> v;
-    read_numeric(*this, id_, name, 0, expected, v, &StateGroup::fail_read);
+    read_numeric(*this, id_, name, trailing_of(slots, {}), rows_of(expected, slots), v, &StateGroup::fail_read);
     return v;
 }
-std::vector<Vec2> StateGroup::vectors(const std::string& name, std::int64_t expected) const {
+std::vector<Vec2> StateGroup::vectors(const std::string& name, std::int64_t expected, std::size_t slots) const {
     std::vector<double> flat;
-    read_numeric(*this, id_, name, 2, expected, flat, &StateGroup::fail_read);
+    read_numeric(*this, id_, name, trailing_of(slots, {2}), rows_of(expected, slots), flat, &StateGroup::fail_read);
     std::vector<Vec2> v(flat.size() / 2);
     for (std::size_t i = 0; i < v.size(); ++i) v[i] = {flat[2 * i], flat[2 * i + 1]};
     return v;
@@ -314,15 +346,15 @@ void write_contacts(StateGroup g, const std::vector<PairContact>& c) {
     g.write("axis_incident_margin", column<double>(c, [](const PairContact& p) { return p.axis_cache.incident_margin; }));
     g.write("axis_turn_rad", column<double>(c, [](const PairContact& p) { return p.axis_cache.turn_rad; }));
     // The two point slots of each pair, slot 0 then slot 1 (a slot at or beyond count is unused).
-    g.write("point_feature", point_column<std::uint32_t>(c, [](const ContactPoint& q) { return q.feature; }));
-    g.write("point_m", point_column<Vec2>(c, [](const ContactPoint& q) { return q.point_m; }));
-    g.write("point_overlap_m", point_column<double>(c, [](const ContactPoint& q) { return q.overlap_m; }));
-    g.write("point_normal_force_n", point_column<double>(c, [](const ContactPoint& q) { return q.normal_force_n; }));
-    g.write("point_shear_spring_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_spring_n; }));
-    g.write("point_shear_force_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_force_n; }));
-    g.write("point_normal_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.normal_dashpot_n; }));
-    g.write("point_shear_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_dashpot_n; }));
-    g.write("point_sliding", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.sliding); }));
+    g.write("point_feature", point_column<std::uint32_t>(c, [](const ContactPoint& q) { return q.feature; }), 2);
+    g.write("point_m", point_column<Vec2>(c, [](const ContactPoint& q) { return q.point_m; }), 2);
+    g.write("point_overlap_m", point_column<double>(c, [](const ContactPoint& q) { return q.overlap_m; }), 2);
+    g.write("point_normal_force_n", point_column<double>(c, [](const ContactPoint& q) { return q.normal_force_n; }), 2);
+    g.write("point_shear_spring_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_spring_n; }), 2);
+    g.write("point_shear_force_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_force_n; }), 2);
+    g.write("point_normal_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.normal_dashpot_n; }), 2);
+    g.write("point_shear_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_dashpot_n; }), 2);
+    g.write("point_sliding", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.sliding); }), 2);
 }
 
 std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_count) {
@@ -334,13 +366,13 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
     const std::vector<std::uint32_t> separating = g.indices("axis_separating", n), incident = g.indices("axis_incident", n);
     const std::vector<double> others = g.doubles("axis_others_max_separation_m", n), drift = g.doubles("axis_drift_m", n),
                               margin = g.doubles("axis_incident_margin", n), turn = g.doubles("axis_turn_rad", n);
-    const std::vector<std::uint32_t> feature = g.indices("point_feature", 2 * n);
-    const std::vector<Vec2> point = g.vectors("point_m", 2 * n);
-    const std::vector<double> overlap = g.doubles("point_overlap_m", 2 * n), normal_force = g.doubles("point_normal_force_n", 2 * n),
-                              spring = g.doubles("point_shear_spring_n", 2 * n), shear = g.doubles("point_shear_force_n", 2 * n),
-                              normal_dashpot = g.doubles("point_normal_dashpot_n", 2 * n),
-                              shear_dashpot = g.doubles("point_shear_dashpot_n", 2 * n);
-    const std::vector<std::uint8_t> sliding = g.flags("point_sliding", 2 * n);
+    const std::vector<std::uint32_t> feature = g.indices("point_feature", 2 * n, 2);
+    const std::vector<Vec2> point = g.vectors("point_m", 2 * n, 2);
+    const std::vector<double> overlap = g.doubles("point_overlap_m", 2 * n, 2), normal_force = g.doubles("point_normal_force_n", 2 * n, 2),
+                              spring = g.doubles("point_shear_spring_n", 2 * n, 2), shear = g.doubles("point_shear_force_n", 2 * n, 2),
+                              normal_dashpot = g.doubles("point_normal_dashpot_n", 2 * n, 2),
+                              shear_dashpot = g.doubles("point_shear_dashpot_n", 2 * n, 2);
+    const std::vector<std::uint8_t> sliding = g.flags("point_sliding", 2 * n, 2);
     std::vector<PairContact> out(a.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         PairContact& p = out[i];
@@ -543,40 +575,51 @@ WorldState read_world(const StateGroup& root) {
 void write_state_file(const std::filesystem::path& file, const World& w, const StateFileInfo& info,
                       const std::vector<const StatePart*>& parts) {
     quiet_hdf5();
-    std::error_code ignored;
-    std::filesystem::create_directories(file.parent_path(), ignored);
+    // The file is built in memory (HDF5's core driver) and written through OutputFile, so that a
+    // full disk is met by the project's own checks: the library never holds a half-written file.
+    std::string image;
+    {
+        Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+        if (!access.ok() || H5Pset_fapl_core(access.get(), 1 << 20, 0) < 0)
+            throw OutputError(fmt::format("{}: cannot set up the state file in memory", file.string()));
+        const hid_t id = H5Fcreate(file.filename().c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+        if (id < 0) throw OutputError(fmt::format("{}: cannot create the state file in memory", file.string()));
+        StateGroup root(id, file.string(), "/");
+        root.set("format", std::string(format_name));
+        root.set("format_version", format_version);
+        root.set("reason", info.reason);
+        root.set("scenario", info.scenario);
+        root.set("scenario_toml", info.scenario_toml);
+        root.set("run_folder", info.run_folder);
+        root.set("output_rows", info.output_rows);
+        root.set("time_s", w.time_s);
+        root.set("step_index", w.step_index);
+        write_world(root, capture_state(w));
+        for (const StatePart* part : parts) {
+            StateGroup g = root.create_group(part->state_group());
+            part->save_state(g);
+        }
+        const ssize_t size = H5Fflush(id, H5F_SCOPE_GLOBAL) < 0 ? -1 : H5Fget_file_image(id, nullptr, 0);
+        if (size <= 0) throw OutputError(fmt::format("{}: cannot complete the state file in memory", file.string()));
+        image.resize(static_cast<std::size_t>(size));
+        if (H5Fget_file_image(id, image.data(), image.size()) != size)
+            throw OutputError(fmt::format("{}: cannot complete the state file in memory", file.string()));
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(file.parent_path(), ec);
+    if (ec) throw OutputError(fmt::format("{}: cannot create the folder: {}", file.parent_path().string(), ec.message()));
+    // Whole or not at all, and an earlier file of the same name stays until the new one is whole.
     std::filesystem::path partial = file;
     partial += ".partial";
     try {
-        {
-            const hid_t id = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-            if (id < 0) throw OutputError(fmt::format("{}: cannot create the state file", partial.string()));
-            StateGroup root(id, file.string(), "/");
-            root.set("format", std::string(format_name));
-            root.set("format_version", format_version);
-            root.set("reason", info.reason);
-            root.set("scenario", info.scenario);
-            root.set("scenario_toml", info.scenario_toml);
-            root.set("run_folder", info.run_folder);
-            root.set("output_rows", info.output_rows);
-            root.set("time_s", w.time_s);
-            root.set("step_index", w.step_index);
-            write_world(root, capture_state(w));
-            for (const StatePart* part : parts) {
-                StateGroup g = root.create_group(part->state_group());
-                part->save_state(g);
-            }
-            // The data reach the disk here: a full disk shows now, not as a torn file later.
-            if (H5Fflush(id, H5F_SCOPE_GLOBAL) < 0)
-                throw OutputError(fmt::format("{}: cannot write the state file (disk full?)", file.string()));
-        }  // (closed here, by root)
-        std::filesystem::rename(partial, file);
-    } catch (const OutputError&) {
-        std::filesystem::remove(partial, ignored);
-        throw;
-    } catch (const std::filesystem::filesystem_error& e) {
-        std::filesystem::remove(partial, ignored);
-        throw OutputError(fmt::format("{}: cannot write the state file: {}", file.string(), e.code().message()));
+        write_output_file(partial, image);
+    } catch (const OutputError& e) {
+        throw OutputError(fmt::format("{} (state file {})", e.what(), file.string()));
+    }
+    std::filesystem::rename(partial, file, ec);
+    if (ec) {
+        std::filesystem::remove(partial, ec);
+        throw OutputError(fmt::format("{}: cannot write the state file: {}", file.string(), ec.message()));
     }
 }
 

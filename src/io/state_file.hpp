@@ -37,22 +37,24 @@ public:
     StateGroup open_group(const std::string& name) const;
     bool has(const std::string& name) const;
 
-    void write(const std::string& name, const std::vector<double>& values);
-    void write(const std::string& name, const std::vector<std::int64_t>& values);
-    void write(const std::string& name, const std::vector<std::uint32_t>& values);
-    void write(const std::string& name, const std::vector<std::uint8_t>& values);
-    void write(const std::string& name, const std::vector<Vec2>& values);
+    /// slots > 0: the values come in rows of `slots` (n x slots, as the two point slots of
+    /// each contact pair); a Vec2 adds a last dimension of 2.
+    void write(const std::string& name, const std::vector<double>& values, std::size_t slots = 0);
+    void write(const std::string& name, const std::vector<std::int64_t>& values, std::size_t slots = 0);
+    void write(const std::string& name, const std::vector<std::uint32_t>& values, std::size_t slots = 0);
+    void write(const std::string& name, const std::vector<std::uint8_t>& values, std::size_t slots = 0);
+    void write(const std::string& name, const std::vector<Vec2>& values, std::size_t slots = 0);
     void write(const std::string& name, const std::vector<std::string>& values);
     void set(const std::string& name, double value);
     void set(const std::string& name, std::int64_t value);
     void set(const std::string& name, const std::string& value);
 
-    /// Arrays; expected_size (rows), when given, is checked.
-    std::vector<double> doubles(const std::string& name, std::int64_t expected_size = -1) const;
-    std::vector<std::int64_t> integers(const std::string& name, std::int64_t expected_size = -1) const;
-    std::vector<std::uint32_t> indices(const std::string& name, std::int64_t expected_size = -1) const;
-    std::vector<std::uint8_t> flags(const std::string& name, std::int64_t expected_size = -1) const;
-    std::vector<Vec2> vectors(const std::string& name, std::int64_t expected_size = -1) const;
+    /// Arrays, flat in item order; expected_size (items), when given, is checked; slots as in write.
+    std::vector<double> doubles(const std::string& name, std::int64_t expected_size = -1, std::size_t slots = 0) const;
+    std::vector<std::int64_t> integers(const std::string& name, std::int64_t expected_size = -1, std::size_t slots = 0) const;
+    std::vector<std::uint32_t> indices(const std::string& name, std::int64_t expected_size = -1, std::size_t slots = 0) const;
+    std::vector<std::uint8_t> flags(const std::string& name, std::int64_t expected_size = -1, std::size_t slots = 0) const;
+    std::vector<Vec2> vectors(const std::string& name, std::int64_t expected_size = -1, std::size_t slots = 0) const;
     std::vector<std::string> strings(const std::string& name, std::int64_t expected_size = -1) const;
     double number(const std::string& name) const;
     std::int64_t integer(const std::string& name) const;

@@ -151,7 +151,7 @@ assert names == ["table", "drum0", "drum1", "drum2"], names
 assert f["bodies/position_m"].shape == (4, 2) and f["bodies/velocity_m_s"].shape == (4, 2)
 n = len(f["contacts/a"])
 assert f["contacts/point_shear_spring_n"].shape == (n, 2) and f["contacts/point_normal_dashpot_n"].shape == (n, 2)
-assert (f["contacts/count"][:] > 0).sum() >= 3, "the drums rest on each other"
+assert (f["contacts/count"][:] > 0).sum() >= 1 and abs(f["contacts/point_shear_spring_n"][:]).max() > 0, "no shear history"
 assert "kinetic_j" in f["energy"].attrs and "peak_abs_rotation_rad" in f["monitor"]
 assert f.attrs["output_rows"] == 60, f.attrs["output_rows"]   # rows at t = 0, 0.005, ..., 0.295
 PY
@@ -180,16 +180,23 @@ else
 fi
 
 # 4. initial_state: settle once (--save-state 0), shake many times. The same scenario without
-# [settling], started from the settled state, gives the run that settled itself.
-$py - "$tmp/wall.toml" "$tmp/from_state.toml" <<'PY'
+# [settling], started from the settled state, gives the run that settled itself. (A wall of 30
+# bricks, settled for real.)
+$py - "$tmp/wall.toml" "$tmp/small_wall.toml" "$tmp/from_state.toml" <<'PY'
 import sys
 text = open(sys.argv[1]).read()
+for old, new in (("length = 5.0", "length = 1.0"), ("courses = 50", "courses = 6"), ("width = 7.0", "width = 2.0"),
+                 ("center = [2.5", "center = [0.5"), ("kinetic_ratio = 1.0", "kinetic_ratio = 1.0e-6"),
+                 ("duration = 0.02", "duration = 0.1")):
+    assert old in text, old
+    text = text.replace(old, new)
+open(sys.argv[2], "w").write(text)
 start, end = text.index("[settling]"), text.index("[table_motion")
 text = text[:start] + text[end:]
 text = text.replace("output_interval = 0.002", 'output_interval = 0.002\ninitial_state = "settled/state/t_0.000000s.h5"')
-open(sys.argv[2], "w").write(text)
+open(sys.argv[3], "w").write(text)
 PY
-"$bin" run "$tmp/wall.toml" --out "$tmp/settled" -q --save-state 0 > /dev/null 2>&1 || fail "settled run"
+"$bin" run "$tmp/small_wall.toml" --out "$tmp/settled" -q --save-state 0 > /dev/null 2>&1 || fail "settled run"
 "$bin" run "$tmp/from_state.toml" --out "$tmp/branch" -q > /dev/null 2> "$tmp/branch.log" \
   || fail "run from initial_state: $(tail -2 "$tmp/branch.log")"
 for f in history.csv energy.csv; do
@@ -207,7 +214,7 @@ import csv, json, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
 assert [r["status"] for r in rows] == ["completed", "completed"], rows
 run = {b["name"]: b for b in json.load(open(sys.argv[2]))["bodies"]}
-brick = "brick600"
+brick = "brick10"
 assert abs(float(rows[0][brick + ".peak_rotation_rad"]) - run[brick]["peak_abs_rotation_rad"]) <= 1e-5 * max(1e-12, run[brick]["peak_abs_rotation_rad"]), (rows[0][brick + ".peak_rotation_rad"], run[brick]["peak_abs_rotation_rad"])
 PY
 
@@ -228,7 +235,7 @@ expect 2 "does not belong to scenario.*the state has 4 bodies, the scenario 2" \
   "$bin" run --restart "$good" "$src/examples/paper/rocking.toml" --out "$tmp/x4" -q
 [ -e "$tmp/x4" ] && fail "a refused restart wrote $tmp/x4"
 expect 2 "simulation.initial_state" "$bin" run "$tmp/from_state.toml" --set simulation.initial_state="$tmp/none.h5" --out "$tmp/x5" -q
-expect 2 "initial_state.*remove \[settling\]" "$bin" run "$tmp/wall.toml" --set simulation.initial_state="$good" --out "$tmp/x6" -q
+expect 2 "initial_state.*remove \[settling\]" "$bin" run "$tmp/small_wall.toml" --set simulation.initial_state="$good" --out "$tmp/x6" -q
 expect 2 "save-state.*outside the run" "$bin" run "$tmp/drums.toml" --save-state 5 --out "$tmp/x7" -q
 # A full disk: a 20 kB file-size limit lets the short history through but not the state.
 msg=$( (ulimit -f 20; "$bin" run "$tmp/drums.toml" --set simulation.output_interval=0.1 --save-state 0.3 --out "$tmp/full" -q) 2>&1); rc=$?

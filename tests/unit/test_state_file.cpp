@@ -23,11 +23,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_file(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / fmt::format("blockdem_state_test_{}", ::getpid());
-    fs::create_directories(dir);
-    return dir / name;
-}
+// A folder of its own for each test, removed after it.
+class StateFileTest : public ::testing::Test {
+protected:
+    fs::path dir_ = fs::temp_directory_path() / fmt::format("blockdem_state_test_{}", ::getpid());
+    void SetUp() override { fs::create_directories(dir_); }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path temp_file(const std::string& name) const { return dir_ / name; }
+};
 
 void advance(World& w, ResponseMonitor& monitor, int steps) {
     for (int i = 0; i < steps; ++i) {
@@ -43,7 +46,7 @@ bool same_bits(Vec2 a, Vec2 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.
 // A wall of bricks laid touching on a shaken table: contacts open, close and slide.
 Model wall() { return scenes::s3_wall_scene(60, 1.0, 1e-4); }
 
-TEST(StateFile, RestoredWorldGoesOnBitForBit) {
+TEST_F(StateFileTest, RestoredWorldGoesOnBitForBit) {
     World straight = build_world(wall());
     ResponseMonitor straight_monitor(straight);
     advance(straight, straight_monitor, 1500);
@@ -84,7 +87,7 @@ TEST(StateFile, RestoredWorldGoesOnBitForBit) {
             EXPECT_TRUE(same_bits(straight.contacts[p].points[k].shear_spring_n, restored.contacts[p].points[k].shear_spring_n));
 }
 
-TEST(StateFile, RoundTripKeepsTheHistoryOfEveryContact) {
+TEST_F(StateFileTest, RoundTripKeepsTheHistoryOfEveryContact) {
     World w = build_world(wall());
     ResponseMonitor monitor(w);
     advance(w, monitor, 800);
@@ -116,7 +119,7 @@ TEST(StateFile, RoundTripKeepsTheHistoryOfEveryContact) {
     EXPECT_EQ(s.velocities_staggered, true);
 }
 
-TEST(StateFile, StartFromStateRestartsTheClock) {
+TEST_F(StateFileTest, StartFromStateRestartsTheClock) {
     World settled = build_world(wall());
     ResponseMonitor monitor(settled);
     advance(settled, monitor, 500);
@@ -130,7 +133,7 @@ TEST(StateFile, StartFromStateRestartsTheClock) {
     EXPECT_TRUE(same_bits(fresh.bodies.initial_position_m[brick], settled.bodies.position_m[brick]));
 }
 
-TEST(StateFile, AnotherScenariosStateIsNamed) {
+TEST_F(StateFileTest, AnotherScenariosStateIsNamed) {
     World small = build_world(scenes::s3_wall_scene(30, 1.0, 1e-4));
     World large = build_world(wall());
     const auto mismatch = state_mismatch(large, capture_state(small));
@@ -148,7 +151,7 @@ std::string error_of(const fs::path& file) {
     return "";
 }
 
-TEST(StateFile, BadFilesAreRefusedWithTheirName) {
+TEST_F(StateFileTest, BadFilesAreRefusedWithTheirName) {
     EXPECT_NE(error_of(temp_file("missing.h5")).find("no such state file"), std::string::npos);
     const fs::path garbage = temp_file("garbage.h5");
     std::ofstream(garbage) << "not hdf5 at all\n";
