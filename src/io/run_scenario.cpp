@@ -159,7 +159,8 @@ nlohmann::json run_scenario(const RunRequest& request) {
     std::error_code ec;
     const bool in_place = start.restart && fs::exists(out_dir) && fs::equivalent(out_dir, start.run_folder, ec);
 
-    LoadedScenario loaded = load_scenario(scenario, request.overrides);
+    // (A restart takes the settled state from its file: settling again would be wasted time.)
+    LoadedScenario loaded = load_scenario(scenario, request.overrides, !start.restart);
     World& world = loaded.world;
     if (start.restart) {
         check_restart(world, *start.restart, scenario);

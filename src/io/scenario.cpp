@@ -390,7 +390,7 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     return model;
 }
 
-LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
+LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle) {
     LoadedScenario s;
     s.file = file;
     s.root = load_toml_file(file);
@@ -413,6 +413,7 @@ LoadedScenario load_scenario(const std::filesystem::path& file, const std::vecto
         s.initial_state = std::filesystem::path(*state).is_absolute() ? std::filesystem::path(*state)
                                                                       : file.parent_path() / *state;
     }
+    if (!settle) s.model.settling.reset();
     try {
         s.world = build_world(s.model);
     } catch (const ModelError& e) {

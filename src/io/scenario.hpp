@@ -41,7 +41,9 @@ struct LoadedScenario {
 };
 
 /// Loads, overrides, validates and builds. A model error (overlap at start, unstable dt) is
-/// reported as an InputError naming the file.
-LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+/// reported as an InputError naming the file. settle = false skips [settling] (a restart
+/// takes the settled state from its state file).
+LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                             bool settle = true);
 
 }  // namespace blockdem
