@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "io/output_keys.hpp"
+#include "io/sensor_keys.hpp"
 #include "io/toml_reader.hpp"
 #include "world/model.hpp"
 #include "world/world.hpp"
@@ -34,6 +35,7 @@ struct LoadedScenario {
     Model model;
     World world;
     OutputSettings output;   ///< [output]: files besides history.csv and summary.json (io only)
+    MeasurementSettings measurements;   ///< [[sensors]] and [output] interfaces (io/sensor_keys.hpp)
 };
 
 /// Loads, overrides, validates and builds. A model error (overlap at start, unstable dt) is
