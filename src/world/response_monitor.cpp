@@ -136,7 +136,17 @@ namespace {
 Vec2 carried_by(const Bodies& b, std::int64_t s, double start_rotation_rad, Vec2 start_m) {
     if (s < 0) return start_m;
     const auto i = static_cast<std::size_t>(s);
-    return b.position_m[i] + Rotation::from_angle(b.rotation_rad[i] - start_rotation_rad).apply(start_m - b.initial_position_m[i]);
+    // A table or a fixed body only translates: no rotation to evaluate (the common case).
+    if (b.kind[i] != BodyKind::dynamic) return start_m + (b.position_m[i] - b.initial_position_m[i]);
+    // Its rotation now from its first edge's normal (rest orientation to now), which spares a
+    // cosine and a sine per body and step; the start's rotation is 0 unless settling turned it.
+    const std::uint32_t k = b.vertex_begin[i];
+    const Vec2 rest = b.local_normals[k];
+    const Vec2 now = b.world_normals[k];
+    const Rotation turned{dot(rest, now), cross(rest, now)};
+    const Vec2 arm = start_m - b.initial_position_m[i];
+    if (start_rotation_rad == 0.0) return b.position_m[i] + turned.apply(arm);
+    return b.position_m[i] + turned.apply(Rotation::from_angle(-start_rotation_rad).apply(arm));
 }
 
 }  // namespace
