@@ -17,8 +17,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // The files and folders a run and its report write at the top of the folder.
-constexpr std::array<const char*, 6> run_files = {"scenario.toml", "history.csv", "energy.csv",
-                                                  "summary.json",  "bodies.json", "report.html"};
+constexpr std::array<const char*, 8> run_files = {"scenario.toml", "history.csv", "energy.csv",    "summary.json",
+                                                  "bodies.json",   "report.html", "sensors.csv", "interfaces.csv"};
 constexpr std::array<const char*, 2> run_subfolders = {"vtk", "figures"};
 
 bool is_run_summary(const fs::path& file) {
