@@ -72,17 +72,15 @@ ResponseMonitor::ResponseMonitor(const World& w)
 // while a body has no supporter yet).
 void ResponseMonitor::note_support_shear(const World& w, const PairContact& pair) {
     const Bodies& b = w.bodies;
-    const double ks_N_m = w.contact.at(b.material[pair.a], b.material[pair.b]).ks_N_m;
-    double spring_n = 0.0;
-    bool sliding = false;
-    for (std::uint32_t k = 0; k < pair.count; ++k) {
-        spring_n = std::max(spring_n, std::abs(pair.points[k].shear_spring_n));
-        sliding = sliding || pair.points[k].sliding;
-    }
     auto note = [&](std::uint32_t body, std::uint32_t other) {
         BodyResponse& r = responses_[body];
-        if (!r.supporters.empty() && !holds(r.supporters, other)) return;
-        if (sliding) sliding_now_[body] = 1;
+        if (b.kind[body] != BodyKind::dynamic || (!r.supporters.empty() && !holds(r.supporters, other))) return;
+        double spring_n = 0.0;
+        for (std::uint32_t k = 0; k < pair.count; ++k) {
+            spring_n = std::max(spring_n, std::abs(pair.points[k].shear_spring_n));
+            if (pair.points[k].sliding) sliding_now_[body] = 1;
+        }
+        const double ks_N_m = w.contact.at(b.material[pair.a], b.material[pair.b]).ks_N_m;
         if (ks_N_m > 0.0) r.peak_elastic_shear_m = std::max(r.peak_elastic_shear_m, spring_n / ks_N_m);
     };
     note(pair.a, pair.b);
