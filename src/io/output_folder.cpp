@@ -17,8 +17,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // The files and folders a run and its report write at the top of the folder.
-constexpr std::array<const char*, 7> run_files = {"scenario.toml", "history.csv", "energy.csv",  "summary.json",
-                                                  "bodies.json",   "report.html", "run_info.json"};
+constexpr std::array<const char*, 9> run_files = {"scenario.toml", "history.csv",   "energy.csv",
+                                                  "summary.json",  "bodies.json",   "report.html",
+                                                  "run_info.json", "sensors.csv",   "interfaces.csv"};
 constexpr std::array<const char*, 3> run_subfolders = {"vtk", "figures", "state"};
 
 bool is_run_summary(const fs::path& file) {

@@ -10,6 +10,7 @@
 #include "io/energy_writer.hpp"
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
+#include "io/interfaces_writer.hpp"
 #include "io/output_file.hpp"
 #include "io/output_folder.hpp"
 #include "io/run_budget.hpp"
@@ -17,6 +18,7 @@
 #include "io/run_state_parts.hpp"
 #include "io/scenario.hpp"
 #include "io/state_file.hpp"
+#include "io/sensors_writer.hpp"
 #include "io/summary_writer.hpp"
 #include "io/vtk_writer.hpp"
 #include "world/response_monitor.hpp"
@@ -207,14 +209,27 @@ nlohmann::json run_scenario(const RunRequest& request) {
             // run did not write) starts afresh.
             if (part == &monitor_state || start.restart->has_group(part->state_group())) start.restart->restore(*part);
     if (start.restart && !in_place && vtk) copy_vtk_frames(start.run_folder / "vtk", out_dir / "vtk", vtk->frames_written());
+    // Sensors and interfaces (io/sensor_keys.hpp): nothing at all when not configured.
+    std::optional<SensorsWriter> sensors;
+    std::optional<InterfacesWriter> interfaces;
+    if (!loaded.measurements.sensors.empty())
+        options.recorders.push_back(&sensors.emplace(out_dir / "sensors.csv", world, loaded.measurements.sensors));
+    if (loaded.measurements.interfaces.any())
+        options.recorders.push_back(&interfaces.emplace(out_dir / "interfaces.csv", loaded.measurements.interfaces));
     // What was written besides history.csv and summary.json; `blockdem run` reads "report".
     auto outputs = [&] {
         return nlohmann::json{{"energy", "energy.csv"}, {"bodies", "bodies.json"},
                               {"vtk", vtk ? nlohmann::json("vtk/bodies.pvd") : nlohmann::json(nullptr)},
                               {"vtk_frames", vtk ? vtk->frames_written() : 0},
-                              {"report", loaded.output.report}};
+                              {"report", loaded.output.report},
+                              {"sensors", sensors ? nlohmann::json("sensors.csv") : nlohmann::json(nullptr)},
+                              {"interfaces", interfaces ? nlohmann::json("interfaces.csv") : nlohmann::json(nullptr)}};
     };
-    options.on_step = [&monitor](const World& w) { monitor.observe(w); };
+    options.on_step = [&](const World& w) {
+        monitor.observe(w);
+        if (sensors) sensors->observe(w);
+        if (interfaces) interfaces->observe(w);
+    };
     options.on_progress = request.on_progress;
     options.stop_requested = request.stop_requested;
     options.save_points = points;
@@ -258,6 +273,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
         nlohmann::json summary = make_summary(world, monitor, info);
         summary["end_time_s"] = world.settings.duration_s;  // time_s below it: failed or interrupted
         summary["outputs"] = outputs();
+        if (interfaces) summary["interfaces"] = interfaces_summary(world, interfaces->monitor());
         return summary;
     };
     // What differs from one invocation to the next, kept out of summary.json so that a restarted

@@ -385,7 +385,7 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     if (auto outcomes = top.optional_table("outcomes")) model.settings.outcomes = read_outcome_thresholds(*outcomes);
     model.contact = read_contact(top.table("contact"), model.bodies);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
-    top.allow({"title", "description", "output"});  // [output] is read by load_scenario: not physics
+    top.allow({"title", "description", "output", "sensors"});  // read by load_scenario: not physics
     top.reject_unknown_keys();
     return model;
 }
@@ -403,7 +403,10 @@ LoadedScenario load_scenario(const std::filesystem::path& file, const std::vecto
     }
     s.model = read_model(s.root, file.string(), file.parent_path());
     TableReader top(s.root, file.string(), "");
-    if (auto output = top.optional_table("output")) s.output = read_output_settings(*output);
+    if (auto output = top.optional_table("output")) {
+        output->allow({"interfaces"});  // read below, with the sensors
+        s.output = read_output_settings(*output);
+    }
     TableReader simulation = top.table("simulation");
     if (auto state = simulation.optional_string("initial_state")) {
         if (state->empty()) simulation.fail("initial_state", "is empty: give a state file (.h5)");
@@ -419,6 +422,7 @@ LoadedScenario load_scenario(const std::filesystem::path& file, const std::vecto
     } catch (const ModelError& e) {
         throw InputError({file.string(), "", 0, 0}, e.what());
     }
+    s.measurements = read_measurement_keys(top, s.world);  // they name bodies and depend on dt
     return s;
 }
 

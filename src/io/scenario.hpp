@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "io/output_keys.hpp"
+#include "io/sensor_keys.hpp"
 #include "io/toml_reader.hpp"
 #include "world/model.hpp"
 #include "world/world.hpp"
@@ -38,6 +39,7 @@ struct LoadedScenario {
     /// names resolved against the scenario's folder; empty: none. The world is built from the
     /// scenario alone: run_scenario and the sweeps apply the state.
     std::filesystem::path initial_state;
+    MeasurementSettings measurements;   ///< [[sensors]] and [output] interfaces (io/sensor_keys.hpp)
 };
 
 /// Loads, overrides, validates and builds. A model error (overlap at start, unstable dt) is

@@ -88,7 +88,12 @@ nlohmann::json domain_summary(const World& w) {
 nlohmann::json thresholds_summary(const OutcomeThresholds& t) {
     return {{"rocking_ratio", t.rocking_ratio},       {"slip_ratio", t.slip_ratio},
             {"fall_drop_ratio", t.fall_drop_ratio},   {"displaced_ratio", t.displaced_ratio},
-            {"rest_speed_m_s", t.rest_speed_m_s},     {"support_window_s", t.support_window_s}};
+            {"rest_speed_m_s", t.rest_speed_m_s},     {"support_window_s", t.support_window_s},
+            {"elastic_slip_factor", elastic_slip_factor},
+            {"slid_rule", "slid: a contact point on the body below (judged_on) slid, and the base corner moved on that body by "
+                          "more than slip_threshold_m = max(slip_ratio x base length, elastic_slip_factor x "
+                          "peak_elastic_shear_displacement_m); rocked: peak |rotation relative to judged_on| >= rocking_ratio x "
+                          "the critical angle"}};
 }
 
 nlohmann::json body_summary(const World& w, const BodyResponse& r, std::size_t i) {
@@ -111,6 +116,11 @@ nlohmann::json body_summary(const World& w, const BodyResponse& r, std::size_t i
     j["slid"] = r.slid();
     j["sliding_time_s"] = r.sliding_time_s;
     j["peak_abs_base_slip_m"] = r.peak_abs_base_slip_m;
+    // What "slid" and "rocked" were judged on (world/response_monitor.hpp).
+    j["judged_on"] = r.support_body >= 0 ? b.name[static_cast<std::size_t>(r.support_body)] : "ground";
+    j["slip_threshold_m"] = r.slip_threshold();
+    j["peak_elastic_shear_displacement_m"] = r.peak_elastic_shear_m;
+    j["peak_abs_rotation_on_support_rad"] = r.peak_abs_rotation_on_support_rad;
     j["final_base_slip_m"] = r.base_slip_m;
     j["peak_abs_relative_displacement_m"] = r.peak_abs_relative_displacement_m;
     j["final_relative_displacement_m"] = {r.relative_displacement_m.x, r.relative_displacement_m.y};

@@ -62,7 +62,30 @@ ResponseMonitor::ResponseMonitor(const World& w)
             reference_ = static_cast<std::int64_t>(i);
             break;
         }
-    for (std::size_t i = 0; i < b.size(); ++i) responses_[i] = base_of(b, i, thresholds_);
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        responses_[i] = base_of(b, i, thresholds_);
+        responses_[i].start_rotation_rad = b.rotation_rad[i];
+        responses_[i].support_body = reference_;
+    }
+}
+
+// Sliding and the elastic shear displacement, at the pairs with the bodies below (any pair
+// while a body has no supporter yet).
+void ResponseMonitor::note_support_shear(const World& w, const PairContact& pair) {
+    const Bodies& b = w.bodies;
+    auto note = [&](std::uint32_t body, std::uint32_t other) {
+        BodyResponse& r = responses_[body];
+        if (b.kind[body] != BodyKind::dynamic || (!r.supporters.empty() && !holds(r.supporters, other))) return;
+        double spring_n = 0.0;
+        for (std::uint32_t k = 0; k < pair.count; ++k) {
+            spring_n = std::max(spring_n, std::abs(pair.points[k].shear_spring_n));
+            if (pair.points[k].sliding) sliding_now_[body] = 1;
+        }
+        const double ks_N_m = w.contact.at(b.material[pair.a], b.material[pair.b]).ks_N_m;
+        if (ks_N_m > 0.0) r.peak_elastic_shear_m = std::max(r.peak_elastic_shear_m, spring_n / ks_N_m);
+    };
+    note(pair.a, pair.b);
+    note(pair.b, pair.a);
 }
 
 void ResponseMonitor::restore(std::vector<BodyResponse> responses) {
@@ -80,17 +103,19 @@ void ResponseMonitor::note_contacts(const World& w) {
     const bool gathering = w.time_s <= thresholds_.support_window_s;
     for (const PairContact& pair : w.contacts) {
         if (pair.count == 0) continue;
-        for (std::uint32_t k = 0; k < pair.count; ++k)
-            if (pair.points[k].sliding) sliding_now_[pair.a] = sliding_now_[pair.b] = 1;
         if (gathering) {
-            // The normal points from a to b: upwards means a is below b and holds it up.
+            // The normal points from a to b: upwards means a is below b and holds it up. The
+            // first supporter found is the body whose interface judges sliding and rocking.
             auto add = [&](std::uint32_t upper, std::uint32_t lower) {
-                if (b.kind[upper] == BodyKind::dynamic && !holds(responses_[upper].supporters, lower))
-                    responses_[upper].supporters.push_back(lower);
+                BodyResponse& r = responses_[upper];
+                if (b.kind[upper] != BodyKind::dynamic || holds(r.supporters, lower)) return;
+                if (r.supporters.empty()) r.support_body = lower;
+                r.supporters.push_back(lower);
             };
             if (pair.normal.y > supporting_normal_y) add(pair.b, pair.a);
             if (pair.normal.y < -supporting_normal_y) add(pair.a, pair.b);
         }
+        note_support_shear(w, pair);
         if (holds(responses_[pair.a].supporters, pair.b)) touching_supporter_now_[pair.a] = 1;
         if (holds(responses_[pair.b].supporters, pair.a)) touching_supporter_now_[pair.b] = 1;
     }
@@ -108,6 +133,28 @@ void ResponseMonitor::observe_support(const Bodies& b, std::size_t i, double t_s
                              b.bounding_radius_m[i] * std::abs(b.angular_velocity_at_t_rad_s[i]);
     r.at_rest = speed_m_s < thresholds_.rest_speed_m_s;
 }
+
+namespace {
+
+// Where the material point of body s that was at start_m when the monitor started is now
+// (s = -1: the ground, which does not move).
+Vec2 carried_by(const Bodies& b, std::int64_t s, double start_rotation_rad, Vec2 start_m) {
+    if (s < 0) return start_m;
+    const auto i = static_cast<std::size_t>(s);
+    // A table or a fixed body only translates: no rotation to evaluate (the common case).
+    if (b.kind[i] != BodyKind::dynamic) return start_m + (b.position_m[i] - b.initial_position_m[i]);
+    // Its rotation now from its first edge's normal (rest orientation to now), which spares a
+    // cosine and a sine per body and step; the start's rotation is 0 unless settling turned it.
+    const std::uint32_t k = b.vertex_begin[i];
+    const Vec2 rest = b.local_normals[k];
+    const Vec2 now = b.world_normals[k];
+    const Rotation turned{dot(rest, now), cross(rest, now)};
+    const Vec2 arm = start_m - b.initial_position_m[i];
+    if (start_rotation_rad == 0.0) return b.position_m[i] + turned.apply(arm);
+    return b.position_m[i] + turned.apply(Rotation::from_angle(-start_rotation_rad).apply(arm));
+}
+
+}  // namespace
 
 void ResponseMonitor::observe(const World& w) {
     const Bodies& b = w.bodies;
@@ -129,10 +176,15 @@ void ResponseMonitor::observe(const World& w) {
         if (beyond && !r.beyond_alpha) r.last_crossing_s = w.time_s;
         r.beyond_alpha = beyond;
         r.relative_displacement_m = (b.position_m[i] - b.initial_position_m[i]) - table_moved;
-        // The corner it tips about stays put unless the base slides: follow that one.
-        const Vec2 pivot = tilt >= 0.0 ? r.base_left_offset_m : r.base_right_offset_m;
-        const Vec2 pivot_now = b.position_m[i] + Rotation::from_angle(theta).apply(pivot);
-        r.base_slip_m = pivot_now.x - (b.initial_position_m[i].x + pivot.x) - table_moved.x;
+        // On the body below: its rotation taken out, the corner it tips about followed (it
+        // stays put on the body below unless the base slides).
+        const double support_start_rad = r.support_body >= 0 ? responses_[static_cast<std::size_t>(r.support_body)].start_rotation_rad : 0.0;
+        const double support_turn_rad = r.support_body >= 0 ? b.rotation_rad[static_cast<std::size_t>(r.support_body)] - support_start_rad : 0.0;
+        const double rotation_on_support = theta - r.start_rotation_rad - support_turn_rad;
+        r.peak_abs_rotation_on_support_rad = std::max(r.peak_abs_rotation_on_support_rad, std::abs(rotation_on_support));
+        const Vec2 pivot = r.base_tilt_rad + rotation_on_support >= 0.0 ? r.base_left_offset_m : r.base_right_offset_m;
+        const Vec2 pivot_now = b.position_m[i] + Rotation::from_angle(theta - r.start_rotation_rad).apply(pivot);
+        r.base_slip_m = pivot_now.x - carried_by(b, r.support_body, support_start_rad, b.initial_position_m[i] + pivot).x;
         r.peak_abs_base_slip_m = std::max(r.peak_abs_base_slip_m, std::abs(r.base_slip_m));
         r.peak_abs_relative_displacement_m = std::max(r.peak_abs_relative_displacement_m, length(r.relative_displacement_m));
         if (sliding_now_[i]) r.sliding_time_s += w.dt_s;

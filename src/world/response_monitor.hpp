@@ -10,14 +10,22 @@
 // base's angle from level (start tilt + rotation). A body has overturned when it ends the run
 // tilted beyond alpha; the overturning time is the last time it crossed alpha outwards.
 //
-// Sliding is measured at the base corner the body is tipping about (either, when level),
-// horizontally and relative to the table: rocking moves the centroid by about h theta but
-// leaves that corner in place, so a block that rocks without sliding shows no base slip.
+// Sliding and rocking are judged on the interface with the body below (its first supporter,
+// see below; the table, or the ground, until one is found): a drum in a stack slides or rocks on
+// the drum below it, not on the table. Sliding is measured at the base corner the body is
+// tipping about (either, when level), horizontally, relative to the point of the supporter that
+// was under that corner at the start (the supporter's own rigid motion taken out): rocking moves
+// the centroid by about h theta but leaves that corner in place, so a block that rocks without
+// sliding shows no base slip. Rocking is the rotation relative to the supporter's. The slip
+// threshold lies above the elastic shear displacement of the contacts: it is the larger of
+// slip_ratio x the base length and elastic_slip_factor x the largest elastic shear displacement
+// (shear spring force / ks) seen at the body's support contacts.
 //
 // For the outcome of each body (world/outcome.hpp) it also keeps the bodies that held it up at
 // the start (its supporters), whether it still touches one and when it last let go of them, how
 // far it has dropped relative to the table, and whether it is at rest; records() hands these to
 // classify_outcomes.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -25,6 +33,10 @@
 #include "world/world.hpp"
 
 namespace blockdem {
+
+/// The slip threshold is at least this many times the largest elastic shear displacement seen
+/// at a body's support contacts: base slip below it can be the springs' deformation alone.
+inline constexpr double elastic_slip_factor = 2.0;
 
 struct BodyResponse {
     double alpha_ccw_rad = 0.0;          ///< [rad] critical angle tipping counter-clockwise (towards -x)
@@ -43,7 +55,11 @@ struct BodyResponse {
     double peak_abs_base_slip_m = 0.0;   ///< [m]
     double sliding_time_s = 0.0;         ///< [s] time with at least one of its contact points sliding
     double rocking_threshold_rad = 0.0;  ///< [rad] rotation above which it counts as rocking (rocking_ratio alpha)
-    double slip_threshold_m = 0.0;       ///< [m] base slip above which it counts as sliding (slip_ratio x base length)
+    double slip_threshold_m = 0.0;       ///< [m] slip_ratio x base length (see slip_threshold())
+    double start_rotation_rad = 0.0;     ///< [rad] rotation when the monitor started (any body: a supporter's reference)
+    std::int64_t support_body = -1;      ///< body whose interface judges sliding and rocking (-1: the ground)
+    double peak_abs_rotation_on_support_rad = 0.0;  ///< [rad] peak |rotation relative to the support body|
+    double peak_elastic_shear_m = 0.0;   ///< [m] largest |shear spring force| / ks at its support contacts
     double rocking_onset_s = -1.0;       ///< [s] first time |rotation| reached the rocking threshold
     double slip_onset_s = -1.0;          ///< [s] first time it slid beyond the slip threshold
 
@@ -55,10 +71,13 @@ struct BodyResponse {
     bool at_rest = true;                 ///< now
 
     bool overturned() const { return beyond_alpha; }
-    bool rocked() const { return peak_abs_rotation_rad >= rocking_threshold_rad; }
-    /// Slid: some contact point slid and the base moved on the table by more than slip_ratio
-    /// (default 0.1%) of its length (well above the elastic shear deformation of the contacts).
-    bool slid() const { return sliding_time_s > 0.0 && peak_abs_base_slip_m > slip_threshold_m; }
+    /// Rocked: it rotated on the body below it by the rocking threshold.
+    bool rocked() const { return peak_abs_rotation_on_support_rad >= rocking_threshold_rad; }
+    /// [m] base slip above which it counts as sliding: above the contacts' elastic shear.
+    double slip_threshold() const { return std::max(slip_threshold_m, elastic_slip_factor * peak_elastic_shear_m); }
+    /// Slid: a contact point with the body below slid, and the base moved on it by more than
+    /// slip_threshold().
+    bool slid() const { return sliding_time_s > 0.0 && peak_abs_base_slip_m > slip_threshold(); }
 };
 
 class ResponseMonitor {
@@ -79,6 +98,7 @@ public:
 private:
     void note_contacts(const World& w);
     void observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s);
+    void note_support_shear(const World& w, const PairContact& pair);
 
     OutcomeThresholds thresholds_;
     std::vector<BodyResponse> responses_;

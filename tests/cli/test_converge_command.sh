@@ -39,9 +39,13 @@ rows=$(grep -c '^block,converged,' "$study/converge.csv")
 # five quantities, and the outcome word now that summary.json carries one
 [ "$rows" -eq 6 ] || fail "converge.csv: $rows rows for the block, expected 5 quantities and the outcome"
 
-# 2. A stack of six drums (0.3 m x 0.5 m) under a synthetic 0.5 g motion: the upper drums' final
-#    slip changes by tens of % from dt/2 to dt/4 (measured 45% to 98%): not converged (longer
-#    runs of it are chaotic: docs/convergence.md).
+# 2. A stack of six drums (0.3 m x 0.5 m) under a synthetic 0.5 g motion: not converged (longer
+#    runs of it are chaotic: docs/convergence.md). Each drum's slip is judged on the drum below
+#    it (docs/outputs.md): the upper drums slip on each other by tenths of a millimetre, near the
+#    slip threshold, so their outcome flips between rocked and rocked_and_slid with dt, and the
+#    top drum's slip changes by 6% to 11% from dt/2 to dt/4 (measured: drum3 and drum5 flagged).
+#    (Measured against the table, as before, every upper drum carried the slip and rocking of the
+#    drums below it, and five were flagged.)
 cat > "$tmp/column.toml" <<'TOML'
 [simulation]
 duration = 4.0
@@ -91,8 +95,8 @@ verdict=$(json "$tmp/column/converge.json" "d['verdict']")
 [ "$verdict" = "not converged" ] || [ "$verdict" = chaotic ] || fail "column verdict '$verdict', expected not converged: $out"
 expect_in "$out" "NOT CONVERGED"
 expect_in "$out" "--ensemble N tells a chaotic response from a too-long time step"
-[ "$(json "$tmp/column/converge.json" "sum(b['verdict'] != 'converged' for b in d['bodies'])")" -ge 3 ] \
-  || fail "fewer than 3 drums flagged: $out"
+[ "$(json "$tmp/column/converge.json" "sum(b['verdict'] != 'converged' for b in d['bodies'])")" -ge 2 ] \
+  || fail "fewer than 2 drums flagged: $out"
 
 # 3. Bad input: exit 2, a message naming the problem, nothing run.
 msg=$("$bin" converge "$src/examples/paper/sliding.toml" --out "$tmp/bad1" --ensemble 2 --set simulation.gravity=0 2>&1); rc=$?

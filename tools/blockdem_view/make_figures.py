@@ -3,6 +3,7 @@ from pathlib import Path
 
 from . import figures
 from .animation import write_animation
+from .sensors_figure import sensors_figure
 
 
 def make_run_figures(run, formats=("png", "svg"), bodies=None, times=None, animation=True, out=None):
@@ -17,6 +18,9 @@ def make_run_figures(run, formats=("png", "svg"), bodies=None, times=None, anima
     }
     if chosen:
         written["response"] = figures.response_figure(run, chosen, folder, formats)
+    sensors = sensors_figure(run, folder, formats)  # sensors.csv beside the table motion, when written
+    if sensors:
+        written["sensors"] = sensors
     if animation and run.drawable():
         written["animation"] = [write_animation(run, folder)]
     return written

@@ -188,7 +188,7 @@ Click a plot below to jump to that time.</p></div>"""
 
 def figures_section(run, written):
     parts = ["<h2 id='figures'>Figures</h2>"]
-    for stem in ("acceleration", "response", "energy", "snapshots"):
+    for stem in ("acceleration", "response", "sensors", "energy", "snapshots"):
         paths = written.get(stem) or []
         png = next((p for p in paths if p.suffix == ".png"), None)
         if png is None:
@@ -204,7 +204,7 @@ def figures_section(run, written):
 
 
 def files_section(run):
-    names = ["scenario.toml", "history.csv", "energy.csv", "summary.json", "bodies.json", "vtk/bodies.pvd", "vtk/contacts.pvd"]
+    names = ["scenario.toml", "history.csv", "energy.csv", "summary.json", "bodies.json", "sensors.csv", "interfaces.csv", "vtk/bodies.pvd", "vtk/contacts.pvd"]
     items = "".join(f"<li><a href='{n}'>{n}</a></li>" for n in names if (run.path / n).is_file())
     return f"<h2 id='files'>Files of this run</h2><ul>{items}</ul><p class='note'>Open vtk/*.pvd in ParaView.</p>"
 

@@ -1,0 +1,110 @@
+#include "world/interface_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "world/sensor.hpp"
+
+namespace blockdem {
+namespace {
+
+std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+struct Edge {
+    Vec2 from_m, to_m;   ///< [m]
+    Vec2 outward;
+};
+
+// The body's edge whose outward normal is most nearly along direction.
+Edge facing_edge(const Bodies& b, std::uint32_t i, Vec2 direction) {
+    const std::uint32_t first = b.vertex_begin[i];
+    const std::uint32_t count = b.vertex_count[i];
+    std::uint32_t best = 0;
+    for (std::uint32_t k = 1; k < count; ++k)
+        if (dot(b.world_normals[first + k], direction) > dot(b.world_normals[first + best], direction)) best = k;
+    return {b.world_vertices_m[first + best], b.world_vertices_m[first + (best + 1) % count], b.world_normals[first + best]};
+}
+
+}  // namespace
+
+double interface_opening_m(const Bodies& bodies, std::uint32_t a, std::uint32_t b, Vec2 n) {
+    const Edge on_a = facing_edge(bodies, a, n);
+    const Edge on_b = facing_edge(bodies, b, -n);
+    const bool b_shorter = length(on_b.to_m - on_b.from_m) <= length(on_a.to_m - on_a.from_m) * (1.0 + 1e-9);
+    const Edge& line = b_shorter ? on_a : on_b;
+    const Edge& corners = b_shorter ? on_b : on_a;
+    const double gap = std::max(dot(corners.from_m - line.from_m, line.outward), dot(corners.to_m - line.from_m, line.outward));
+    return std::max(0.0, gap);
+}
+
+InterfaceMonitor::InterfaceMonitor(const InterfaceSelection& selection) : all_(selection.all) {
+    if (all_) return;
+    for (const auto& [a, b] : selection.named) {
+        index_.emplace(pair_key(a, b), states_.size());
+        InterfaceState s;
+        s.body_a = a;
+        s.body_b = b;
+        states_.push_back(s);
+    }
+}
+
+std::size_t InterfaceMonitor::find_or_add(const World& w, const PairContact& pair) {
+    const auto found = index_.find(pair_key(pair.a, pair.b));
+    if (found != index_.end()) return found->second;
+    if (!all_) return states_.size();
+    // Discovered now: body_a is the lower body (the normal leaves it upwards), or for a
+    // vertical interface the one on the left. Fixed from here on, so signs stay consistent.
+    InterfaceState s;
+    const bool flip = pair.normal.y < -1e-9 || (std::abs(pair.normal.y) <= 1e-9 && pair.normal.x < 0.0);
+    s.body_a = flip ? pair.b : pair.a;
+    s.body_b = flip ? pair.a : pair.b;
+    s.first_touch_time_s = w.time_s;
+    index_.emplace(pair_key(pair.a, pair.b), states_.size());
+    states_.push_back(s);
+    return states_.size() - 1;
+}
+
+void InterfaceMonitor::observe(const World& w) {
+    const Bodies& b = w.bodies;
+    for (InterfaceState& s : states_) {
+        s.touching = false;
+        s.points = 0;
+        s.normal_force_n = s.shear_force_n = s.opening_m = 0.0;
+    }
+    for (const PairContact& pair : w.contacts) {
+        if (pair.count == 0) continue;
+        const std::size_t k = find_or_add(w, pair);
+        if (k == states_.size()) continue;
+        InterfaceState& s = states_[k];
+        const bool flipped = s.body_a != pair.a;
+        const Vec2 n = flipped ? -pair.normal : pair.normal;
+        const Vec2 tangent{n.y, -n.x};   // n turned clockwise
+        Vec2 centre_m;
+        double normal_n = 0.0, shear_ccw_n = 0.0;
+        for (std::uint32_t p = 0; p < pair.count; ++p) {
+            normal_n += pair.points[p].normal_force_n;
+            shear_ccw_n += pair.points[p].shear_force_n;
+            centre_m += pair.points[p].point_m;
+        }
+        centre_m = (1.0 / pair.count) * centre_m;
+        // Both N and the shear along s = -(the contact tangent) come out the same whichever
+        // body of the pair is body_a (interface_monitor.hpp).
+        s.touching = true;
+        s.points = pair.count;
+        s.normal_force_n = normal_n;
+        s.shear_force_n = -shear_ccw_n;
+        if (s.first_touch_time_s < 0.0) s.first_touch_time_s = w.time_s;
+        auto velocity_at = [&](std::uint32_t i) {
+            const Vec2 r = centre_m - b.position_m[i];
+            return b.velocity_at_t_m_s[i] + cross(b.angular_velocity_at_t_rad_s[i], r);
+        };
+        s.slip_m += dot(velocity_at(s.body_b) - velocity_at(s.body_a), tangent) * w.dt_s;
+        s.peak_abs_slip_m = std::max(s.peak_abs_slip_m, std::abs(s.slip_m));
+        s.opening_m = interface_opening_m(b, s.body_a, s.body_b, n);
+        s.peak_opening_m = std::max(s.peak_opening_m, s.opening_m);
+    }
+}
+
+}  // namespace blockdem
