@@ -7,11 +7,14 @@
 // alpha (the angle at that corner between the normal to the base and the line to the centroid,
 // atan(b/h) for a b x h half-size rectangle) gravity no longer brings it back. The base is the
 // edge facing most nearly down at the start, so a body that starts tilted is judged by its
-// base's angle from level (start tilt + rotation). A body has overturned when it ends the run
+// base's angle from level (start tilt + rotation). Down and level are gravity's: on a table
+// tilted by [simulation] tilt_deg (or a gravity vector) a base along x is tilted by the tilt,
+// and a tilting table (tilt_rate_deg_s) adds its change in tilt to every body's. A body has overturned when it ends the run
 // tilted beyond alpha; the overturning time is the last time it crossed alpha outwards.
 //
 // Sliding is measured at the base corner the body is tipping about (either, when level),
-// horizontally and relative to the table: rocking moves the centroid by about h theta but
+// along the model's x axis (the table's surface, also when the table is tilted by gravity's
+// direction) and relative to the table: rocking moves the centroid by about h theta but
 // leaves that corner in place, so a block that rocks without sliding shows no base slip.
 //
 // For the outcome of each body (world/outcome.hpp) it also keeps the bodies that held it up at
@@ -75,13 +78,17 @@ public:
 
 private:
     void note_contacts(const World& w);
-    void observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s);
+    void observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s, Vec2 down);
 
     OutcomeThresholds thresholds_;
     std::vector<BodyResponse> responses_;
     std::vector<std::uint8_t> sliding_now_;
     std::vector<std::uint8_t> touching_supporter_now_;
     std::int64_t reference_ = -1;
+    double start_level_rad_ = 0.0;   ///< [rad] gravity's tilt when the monitor started
 };
+
+/// The angle level makes with the model's x axis at t [rad]: the table's tilt (0 without gravity).
+double level_rad(const World& w, double t_s);
 
 }  // namespace blockdem
