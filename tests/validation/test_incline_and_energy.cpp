@@ -153,17 +153,8 @@ TEST(Incline, SettledBlockAboveFrictionAngleSlidesFromTheFirstStep) {
     EXPECT_THROW(build_world(incline_model(slope, mu, 0.5, actual)), SimulationError);
 }
 
-// A settled block on a table tilted by 20 deg (gravity turned, geometry level), shaken along the
-// table's surface by a = A sin(2 pi t / T), against Newmark's rigid-plastic block on an incline
-// (rigid_plastic_sliding with incline_surface): it yields down the slope when the table
-// accelerates up it by more than g (mu cos a - sin a) = 1.25 m/s^2 and up the slope beyond
-// g (mu cos a + sin a) = 7.96 m/s^2, so at A = 3 m/s^2 it ratchets down the slope. Tolerance on
-// the final slip: 0.5% (the contact springs, 1e6 N/m on a 1 kg block, smear each stick-slip
-// transition over the shear spring's period, about 4 ms, twice a cycle; measured 0.02%).
-TEST(Incline, SettledBlockOnTiltedTableFollowsNewmark) {
-    const double slope = 20.0 * deg;
-    const double mu = 0.5;
-    const SineMotion shaking{3.0, 0.5, 0.0, 0.0, 4.0};
+// The final slip of the settled block on the tilted, shaken table against Newmark's; returns Newmark's.
+double compare_with_newmark(double slope, double mu, const SineMotion& shaking) {
     double slip_m[2] = {0.0, 0.0};
     const std::vector<SlidingPoint> reference =
         rigid_plastic_sliding(ComponentMotion{shaking}, incline_surface(mu, slope, g), 2.5, 1e-5);
@@ -180,13 +171,44 @@ TEST(Incline, SettledBlockOnTiltedTableFollowsNewmark) {
         while (w.time_s < 2.5) step(w);
         slip_m[settle_first] = (w.bodies.position_m[1].x - w.bodies.initial_position_m[1].x) -
                                (w.bodies.position_m[0].x - w.bodies.initial_position_m[0].x);
-        std::printf("20 deg tilted table, A = 3 m/s^2, T = 0.5 s, 4 cycles, %s: final slip %.6g m, Newmark %.6g m "
+        std::printf("20 deg tilted table, A = %g m/s^2, T = 0.5 s, 4 cycles, %s: final slip %.6g m, Newmark %.6g m "
                     "(%+.3f%%)\n",
-                    settle_first ? "settled" : "unsettled", slip_m[settle_first], newmark_m,
+                    shaking.amplitude_m_s2, settle_first ? "settled" : "unsettled", slip_m[settle_first], newmark_m,
                     100.0 * (slip_m[settle_first] - newmark_m) / std::abs(newmark_m));
     }
-    EXPECT_LT(newmark_m, -0.01);  // down the slope (-x), by centimetres
-    EXPECT_NEAR(slip_m[1], newmark_m, 0.005 * std::abs(newmark_m));
+    EXPECT_NEAR(slip_m[1], newmark_m, 0.005 * std::abs(newmark_m)) << "A = " << shaking.amplitude_m_s2;
+    return newmark_m;
+}
+
+// A settled block on a table tilted by 20 deg (gravity turned, geometry level), shaken along the
+// table's surface by a = A sin(2 pi t / T), against Newmark's rigid-plastic block on an incline
+// (rigid_plastic_sliding with incline_surface): it yields down the slope when the table
+// accelerates up it by more than g (mu cos a - sin a) = 1.25 m/s^2 and up the slope beyond
+// g (mu cos a + sin a) = 7.96 m/s^2: at A = 3 m/s^2 it ratchets down the slope only, at
+// A = 9 m/s^2 it slips both ways, more down than up. Tolerance on
+// the final slip: 0.5% (the contact springs, 1e6 N/m on a 1 kg block, smear each stick-slip
+// transition over the shear spring's period, about 4 ms, twice a cycle; measured 0.02%).
+TEST(Incline, SettledBlockOnTiltedTableFollowsNewmark) {
+    const double slope = 20.0 * deg;
+    const double mu = 0.5;
+    for (const double amplitude : {3.0, 9.0}) {
+        const double newmark_m = compare_with_newmark(slope, mu, SineMotion{amplitude, 0.5, 0.0, 0.0, 4.0});
+        EXPECT_LT(newmark_m, -0.01);  // down the slope (-x), by centimetres
+    }
+}
+
+// The reference itself on a steep incline with the table at rest: it slides from t = 0 with
+// g (sin a - mu cos a) down the slope (-s), to the trapezoid's round-off.
+TEST(Incline, NewmarkReferenceSlidesDownASteepIncline) {
+    const std::vector<SlidingPoint> r = rigid_plastic_sliding(ComponentMotion{RestMotion{}}, incline_surface(0.5, 30.0 * deg, g), 1.0, 1e-3);
+    const double a = g * (std::sin(30.0 * deg) - 0.5 * std::cos(30.0 * deg));
+    EXPECT_NEAR(r.back().relative_displacement_m, -0.5 * a, 1e-9);
+    EXPECT_NEAR(r.back().block_acceleration_m_s2, -a, 1e-12);
+    // Below the friction angle it stays.
+    EXPECT_EQ(rigid_plastic_sliding(ComponentMotion{RestMotion{}}, incline_surface(0.5, 20.0 * deg, g), 1.0, 1e-3)
+                  .back()
+                  .relative_displacement_m,
+              0.0);
 }
 
 TEST(Energy, ConservedWithoutDampingOrSliding) {
