@@ -1,8 +1,9 @@
 #pragma once
-// The settling stage: a generated assembly (bricks laid exactly touching, blocks cut from a
-// rock mass) is not yet in equilibrium: its contacts carry no load. Before the shaking starts it
-// is stepped under gravity with the table at rest until it is still, and then the clock is set
-// back to zero, keeping the contacts and their shear history.
+// The settling stage: bodies laid exactly touching (hand-written [[bodies]], bricks of a
+// generated wall, blocks cut from a rock mass) are not yet in equilibrium: their contacts carry
+// no load. Before the shaking starts the model is stepped under gravity with the table at rest
+// until it is still, and then the clock is set back to zero, keeping the contacts and their
+// shear history.
 //
 // Criterion, body by body: every dynamic body's kinetic energy stays below kinetic_ratio times
 // m g L, with m its mass and L its size (its largest centroid-to-corner distance), over a whole
