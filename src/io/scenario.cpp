@@ -29,6 +29,7 @@ void read_gravity(TableReader& t, SimulationSettings& s) {
     if (t.has("gravity") && t.raw()["gravity"].is_array()) {
         const Vec2 g = *t.optional_vec2("gravity");
         s.gravity_m_s2 = length(g);
+        if (!std::isfinite(s.gravity_m_s2)) t.fail("gravity", "the vector's magnitude overflows; give it in m/s^2");
         if (s.gravity_m_s2 > 0.0) vector_tilt_rad = std::atan2(-g.x, -g.y);
     } else {
         s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
