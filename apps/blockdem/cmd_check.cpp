@@ -152,6 +152,12 @@ void add_check_command(CLI::App& app) {
         fmt::print("scenario {}: valid\n", *scenario);
         fmt::print("duration {:g} s, gravity {:g} m/s^2, output every {:g} s\n", w.settings.duration_s,
                    w.settings.gravity_m_s2, w.settings.output_interval_s);
+        if (w.settings.tilt_rad != 0.0 || w.settings.tilt_rate_rad_s != 0.0)
+            fmt::print("table tilted by {:.4g} deg (+x end up), gravity ({:.4g}, {:.4g}) m/s^2; tilt rising {:g} deg/s to "
+                       "{:.4g} deg at the end\n",
+                       w.settings.tilt_rad * 180.0 / std::numbers::pi, w.gravity_now_m_s2.x, w.gravity_now_m_s2.y,
+                       w.settings.tilt_rate_rad_s * 180.0 / std::numbers::pi,
+                       tilt_at_rad(w.settings, w.settings.duration_s) * 180.0 / std::numbers::pi);
         print_bodies(w);
         print_contact(w);
         print_stiffness_effects(w);
@@ -160,9 +166,12 @@ void add_check_command(CLI::App& app) {
         fmt::print("  (the limit of the highest contact mode at the start, mostly body '{}'; every dt <= {:.4g} s is "
                    "proven stable for those contacts; docs/physics.md)\n",
                    w.stability.least_limit_body, w.proven_stable_dt_s);
-        if (s.model.settling)
-            fmt::print("settling: at rest after {:.4g} s (every body's kinetic energy < {:.3g} x m g L over {:g} s)\n",
-                       w.settling_time_s, s.model.settling->kinetic_ratio, s.model.settling->window_s);
+        if (w.settling)
+            fmt::print("settling: at rest after {:.4g} s, {} steps (every body's kinetic energy < {:.3g} x m g L over {:g} s; "
+                       "friction {}); the bodies moved by up to {:.3g} m ('{}') and turned by up to {:.3g} rad ('{}')\n",
+                       w.settling->time_s, w.settling->steps, s.model.settling->kinetic_ratio, s.model.settling->window_s,
+                       w.settling->friction_held ? "held" : "actual", w.settling->largest_move_m,
+                       w.settling->largest_move_body, w.settling->largest_turn_rad, w.settling->largest_turn_body);
         print_motion(w);
     });
 }

@@ -92,7 +92,8 @@ ContactEnergy apply_pair_law(World& w, std::size_t p) {
 void sum_body_force(World& w, std::size_t i) {
     Bodies& b = w.bodies;
     // Summed in locals (the slots could alias the body arrays as far as the compiler knows).
-    Vec2 force_n{0.0, -w.settings.gravity_m_s2 * b.mass_kg[i] * (b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0)};
+    const double gravity_share = b.kind[i] == BodyKind::dynamic ? 1.0 : 0.0;
+    Vec2 force_n{w.gravity_now_m_s2.x * b.mass_kg[i] * gravity_share, w.gravity_now_m_s2.y * b.mass_kg[i] * gravity_share};
     double torque_n_m = 0.0;
     for (std::uint32_t e = w.body_pair_start[i]; e < w.body_pair_start[i + 1]; ++e) {
         const std::uint32_t p = w.body_pair_entries[e] >> 1;

@@ -162,6 +162,7 @@ SettlingSettings read_settling(TableReader t) {
     s.kinetic_ratio = t.optional_positive("kinetic_ratio").value_or(s.kinetic_ratio);
     s.window_s = t.optional_positive("window").value_or(s.window_s);
     s.max_time_s = t.optional_positive("max_time").value_or(s.max_time_s);
+    s.friction = t.choice("friction", {"held", "actual"}, "held") == "held" ? SettlingFriction::held : SettlingFriction::actual;
     t.reject_unknown_keys();
     return s;
 }

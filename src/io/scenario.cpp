@@ -22,14 +22,39 @@ namespace {
 
 constexpr double pi = std::numbers::pi;
 
+// gravity = g (a magnitude [m/s^2], acting in -y) or [gx, gy] [m/s^2]; tilt_deg turns it as a
+// table tilted counter-clockwise (+x end raised) would, tilt_rate_deg_s from t = 0 on.
+void read_gravity(TableReader& t, SimulationSettings& s) {
+    double vector_tilt_rad = 0.0;
+    if (t.has("gravity") && t.raw()["gravity"].is_array()) {
+        const Vec2 g = *t.optional_vec2("gravity");
+        s.gravity_m_s2 = length(g);
+        if (!std::isfinite(s.gravity_m_s2)) t.fail("gravity", "the vector's magnitude overflows; give it in m/s^2");
+        if (s.gravity_m_s2 > 0.0) vector_tilt_rad = std::atan2(-g.x, -g.y);
+    } else {
+        s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
+        if (s.gravity_m_s2 < 0.0)
+            t.fail("gravity", "is a magnitude [m/s^2] acting in -y and must be >= 0 (or give a vector [gx, gy])");
+    }
+    const double tilt_deg = t.number_or("tilt_deg", 0.0);
+    if (std::abs(tilt_deg) > 90.0) t.fail("tilt_deg", fmt::format("must lie in [-90, 90] degrees, got {}", tilt_deg));
+    const double rate_deg_s = t.number_or("tilt_rate_deg_s", 0.0);
+    const double end_deg = tilt_deg + rate_deg_s * s.duration_s;
+    if (std::abs(end_deg) > 90.0)
+        t.fail("tilt_rate_deg_s", fmt::format("takes the tilt from {} to {:.4g} degrees by the end of the run (duration {} s); "
+                                              "it must stay within [-90, 90]",
+                                              tilt_deg, end_deg, s.duration_s));
+    s.tilt_rad = vector_tilt_rad + tilt_deg * pi / 180.0;
+    s.tilt_rate_rad_s = rate_deg_s * pi / 180.0;
+}
+
 SimulationSettings read_settings(TableReader t) {
     SimulationSettings s;
     s.duration_s = t.positive("duration");
     s.dt_s = t.optional_positive("dt");
     s.dt_safety = t.optional_positive("dt_safety").value_or(s.dt_safety);
     if (s.dt_safety > 1.0) t.fail("dt_safety", fmt::format("must be <= 1 (a fraction of the stable limit), got {}", s.dt_safety));
-    s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
-    if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -y and must be >= 0");
+    read_gravity(t, s);
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
     s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
     s.max_overlap_ratio = t.optional_positive("max_overlap").value_or(s.max_overlap_ratio);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
@@ -96,6 +97,43 @@ nlohmann::json thresholds_summary(const OutcomeThresholds& t) {
                           "the critical angle"}};
 }
 
+// What settling did before t = 0 (null: no settling).
+nlohmann::json settling_summary(const World& w) {
+    if (!w.settling) return nullptr;
+    const SettlingRecord& s = *w.settling;
+    return {{"time_s", s.time_s},
+            {"steps", s.steps},
+            {"friction", s.friction_held ? "held" : "actual"},
+            {"kinetic_ratio", s.kinetic_ratio},
+            {"largest_displacement_m", s.largest_move_m},
+            {"largest_displacement_body", s.largest_move_body},
+            {"largest_rotation_rad", s.largest_turn_rad},
+            {"largest_rotation_body", s.largest_turn_body}};
+}
+
+// Gravity in the model's frame: its magnitude, the table's tilt at t = 0 and at the end.
+nlohmann::json gravity_summary(const World& w) {
+    constexpr double deg_per_rad = 180.0 / std::numbers::pi;
+    const Vec2 start = gravity_at(w.settings, 0.0);
+    return {{"magnitude_m_s2", w.settings.gravity_m_s2},
+            {"vector_at_start_m_s2", point(start)},
+            {"tilt_deg", w.settings.tilt_rad * deg_per_rad},
+            {"tilt_rate_deg_s", w.settings.tilt_rate_rad_s * deg_per_rad},
+            {"tilt_at_end_deg", tilt_at_rad(w.settings, w.time_s) * deg_per_rad}};
+}
+
+// On a tilting table (tilt_rate_deg_s): the table's tilt when the body first slid, first
+// rocked (tipped) and overturned (null: it did not).
+nlohmann::json tilt_at_events(const World& w, const BodyResponse& r) {
+    constexpr double deg_per_rad = 180.0 / std::numbers::pi;
+    auto tilt_deg = [&](double t_s) {
+        return t_s >= 0.0 ? nlohmann::json(tilt_at_rad(w.settings, t_s) * deg_per_rad) : nlohmann::json(nullptr);
+    };
+    return {{"slip_onset", tilt_deg(r.slip_onset_s)},
+            {"rocking_onset", tilt_deg(r.rocking_onset_s)},
+            {"overturning", tilt_deg(r.overturned() ? r.last_crossing_s : -1.0)}};
+}
+
 nlohmann::json body_summary(const World& w, const BodyResponse& r, std::size_t i) {
     const Bodies& b = w.bodies;
     nlohmann::json j;
@@ -125,6 +163,7 @@ nlohmann::json body_summary(const World& w, const BodyResponse& r, std::size_t i
     j["peak_abs_relative_displacement_m"] = r.peak_abs_relative_displacement_m;
     j["final_relative_displacement_m"] = {r.relative_displacement_m.x, r.relative_displacement_m.y};
     j["final_position_m"] = point(b.position_m[i]);
+    if (w.settings.tilt_rate_rad_s != 0.0) j["table_tilt_deg_at"] = tilt_at_events(w, r);
     return j;
 }
 
@@ -151,6 +190,7 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
                      {"friction_dissipated", e.friction_j},
                      {"table_work", e.table_work_j},
                      {"removed_with_bodies_leaving", e.removed_j},
+                     {"tilt_work", e.tilt_work_j},
                      {"initial_stored", e.initial_j},
                      {"residual", e.residual_j()},
                      {"balance_error_relative", e.balance_error()}};
@@ -167,6 +207,8 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
     s["collapse"] = collapse_summaries(w, records, outcomes, monitor.thresholds());
     s["domain"] = domain_summary(w);
     s["outcome_thresholds"] = thresholds_summary(monitor.thresholds());
+    s["gravity"] = gravity_summary(w);
+    s["settling"] = settling_summary(w);
     nlohmann::json units;
     for (const auto& [suffix, unit] : history_column_units()) units[std::string("<body>.") + suffix] = unit;
     units["t"] = "s";

@@ -81,7 +81,12 @@ std::vector<PlannedRun> plan_follow_up_runs(const toml::table& scenario, double 
     }
     if (options.ensemble < 0) throw InputError({"", "--ensemble", 0, 0}, fmt::format("must be >= 0, got {}", options.ensemble));
     if (options.ensemble > 0) {
-        const double g = scenario["simulation"]["gravity"].value<double>().value_or(SimulationSettings{}.gravity_m_s2);
+        // gravity = [gx, gy] is scaled as a whole: its magnitude is perturbed, its direction kept.
+        const toml::array* vector = scenario["simulation"]["gravity"].as_array();
+        const double gx = vector && vector->size() == 2 ? (*vector)[0].value<double>().value_or(0.0) : 0.0;
+        const double gy = vector && vector->size() == 2 ? (*vector)[1].value<double>().value_or(0.0) : 0.0;
+        const double g = vector ? std::hypot(gx, gy)
+                                : scenario["simulation"]["gravity"].value<double>().value_or(SimulationSettings{}.gravity_m_s2);
         if (g == 0.0)
             throw InputError({"", "simulation.gravity", 0, 0},
                              "--ensemble perturbs gravity, which is 0 in this scenario: there is nothing to perturb");
@@ -91,7 +96,9 @@ std::vector<PlannedRun> plan_follow_up_runs(const toml::table& scenario, double 
         for (std::size_t k = 0; k < d.size(); ++k) {
             PlannedRun r{fmt::format("ensemble_{}", k + 1), RunRole::ensemble, common_overrides(base_dt_s),
                          fmt::format("gravity x (1 {:+.3g}) at dt", d[k])};
-            r.overrides.push_back("simulation.gravity=" + toml_float(g * (1.0 + d[k])));
+            r.overrides.push_back(vector ? fmt::format("simulation.gravity=[{}, {}]", toml_float(gx * (1.0 + d[k])),
+                                                       toml_float(gy * (1.0 + d[k])))
+                                         : fmt::format("simulation.gravity={}", toml_float(g * (1.0 + d[k]))));
             plan.push_back(std::move(r));
         }
     }

@@ -161,6 +161,9 @@ HousnerBlock housner_block_of(const World& w, std::size_t& body, const CaseOptio
         }
     if (found != 1) throw std::invalid_argument("--solver housner needs exactly one dynamic body");
     if (w.bodies.vertex_count[body] != 4) throw std::invalid_argument("--solver housner needs a rectangular block");
+    if (w.settings.tilt_rad != 0.0 || w.settings.tilt_rate_rad_s != 0.0)
+        throw std::invalid_argument("--solver housner models a level table; this scenario tilts gravity (simulation.tilt_deg, "
+                                    "tilt_rate_deg_s or a gravity vector)");
     HousnerBlock b;
     b.half_width_m = 0.0;
     b.half_height_m = 0.0;

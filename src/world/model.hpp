@@ -2,6 +2,7 @@
 // What a simulation is built from: plain definitions with defaults, filled by the scenario
 // parser (io/) or by the scene builders (scenes/). No parsing and no printing here.
 #include <cstdint>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -70,7 +71,14 @@ struct SimulationSettings {
     double duration_s = 1.0;                 ///< [s]
     std::optional<double> dt_s;              ///< [s]; nullopt: dt_safety * critical time step
     double dt_safety = default_dt_safety;    ///< [-] fraction of the critical step used when dt is derived
-    double gravity_m_s2 = 9.81;              ///< [m/s^2], acting in -y
+    /// [m/s^2] gravity's magnitude; it acts in -y turned by the tilt (gravity_at below)
+    double gravity_m_s2 = 9.81;
+    /// [rad] the table's tilt at t = 0, counter-clockwise positive (its +x end raised): gravity
+    /// in the model's frame is g (-sin tilt, -cos tilt). [simulation] gravity = [gx, gy] sets it
+    /// to atan2(-gx, -gy), plus tilt_deg.
+    double tilt_rad = 0.0;
+    /// [rad/s] the tilt grows at this rate from t = 0 (a tilting-table test; 0 during settling)
+    double tilt_rate_rad_s = 0.0;
     double output_interval_s = 1e-3;         ///< [s] between rows of history.csv
     double max_energy_error = 0.5;           ///< [-] stop when the balance error exceeds this fraction
     /// [-] stop when an overlap exceeds this fraction of the least width of the thinner body of
@@ -81,13 +89,32 @@ struct SimulationSettings {
     OutcomeThresholds outcomes;              ///< [outcomes]: thresholds of world/outcome.hpp
 };
 
-/// A settling stage before the run (world/settling.hpp): the assembly is stepped under gravity,
+/// The table's tilt at t [rad] (tilt_rad + tilt_rate_rad_s t).
+inline double tilt_at_rad(const SimulationSettings& s, double t_s) { return s.tilt_rad + s.tilt_rate_rad_s * t_s; }
+
+/// Gravity at t in the model's frame [m/s^2]: g (-sin tilt, -cos tilt).
+inline Vec2 gravity_at(const SimulationSettings& s, double t_s) {
+    const double tilt = tilt_at_rad(s, t_s);
+    return {-s.gravity_m_s2 * std::sin(tilt), -s.gravity_m_s2 * std::cos(tilt)};
+}
+
+/// How friction acts while settling: "held" (every contact sticks, whatever its shear: the
+/// contacts are loaded in place, and the real mu applies from t = 0) or "actual" (the
+/// scenario's mu, so that bodies may slide into place while settling).
+enum class SettlingFriction { held, actual };
+
+/// The friction coefficient that stands for "held": far above any shear / normal force ratio a
+/// contact reaches, yet finite, so that a contact with no normal force still carries no shear.
+inline constexpr double held_friction_mu = 1e6;
+
+/// A settling stage before the run (world/settling.hpp): the bodies are stepped under gravity,
 /// table at rest, until every dynamic body's kinetic energy / (m g L) stays below kinetic_ratio
 /// for window_s (L: its size).
 struct SettlingSettings {
     double kinetic_ratio = 1e-8;   ///< [-]
     double window_s = 0.05;        ///< [s]
     double max_time_s = 5.0;       ///< [s] give up (and report) after this much simulated time
+    SettlingFriction friction = SettlingFriction::held;
 };
 
 struct Model {

@@ -82,14 +82,14 @@ bool is_taken_out(const Bodies& b, std::size_t i) {
 std::size_t take_out_bodies_outside_domain(World& w) {
     if (!w.domain.active) return 0;
     Bodies& b = w.bodies;
-    const double g = w.settings.gravity_m_s2;
+    const Vec2 g = w.gravity_now_m_s2;
     std::size_t now = 0;
     for (std::size_t i = 0; i < b.size(); ++i) {
         if (b.kind[i] != BodyKind::dynamic || b.is_static[i] || overlaps(b.box_m[i], w.domain.box_m)) continue;
         const Vec2 v = b.velocity_m_s[i];
         const double omega = b.angular_velocity_rad_s[i];
         w.energy.removed_j += 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega +
-                              b.mass_kg[i] * g * b.position_m[i].y;
+                              -b.mass_kg[i] * dot(g, b.position_m[i]);
         w.domain.left.push_back({static_cast<std::uint32_t>(i), w.time_s, b.position_m[i], v});
         // Frozen: no velocity, and no acceleration from any force (gravity included).
         b.velocity_m_s[i] = b.velocity_at_t_m_s[i] = {};

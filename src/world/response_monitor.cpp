@@ -10,13 +10,16 @@ namespace {
 // The base is the edge whose outward normal points most nearly down at the start; the body tips
 // about one of its two ends. Working in the edge's own frame makes the critical angles right
 // for a body that starts tilted (on a slope, or settled a little off level): alpha is measured
-// from the base lying flat, and the start's tilt is kept apart in base_tilt_rad.
-BodyResponse base_of(const Bodies& b, std::size_t i, const OutcomeThresholds& t) {
+// from the base lying flat, and the start's tilt is kept apart in base_tilt_rad. "Down" and
+// "level" are gravity's, which a tilted table turns (down = (-sin tilt, -cos tilt), level angle =
+// tilt: a base along x is tilted from level by the table's tilt).
+BodyResponse base_of(const Bodies& b, std::size_t i, const OutcomeThresholds& t, double level_angle_rad) {
+    const Vec2 down{-std::sin(level_angle_rad), -std::cos(level_angle_rad)};
     const std::uint32_t first = b.vertex_begin[i];
     const std::uint32_t count = b.vertex_count[i];
     std::uint32_t base = 0;
     for (std::uint32_t k = 1; k < count; ++k)
-        if (b.world_normals[first + k].y < b.world_normals[first + base].y) base = k;
+        if (dot(b.world_normals[first + k], down) > dot(b.world_normals[first + base], down)) base = k;
     const Vec2 left = b.world_vertices_m[first + base];
     const Vec2 right = b.world_vertices_m[first + (base + 1) % count];
     const Vec2 along = normalized(right - left);   // +x when the base is level
@@ -26,7 +29,7 @@ BodyResponse base_of(const Bodies& b, std::size_t i, const OutcomeThresholds& t)
     BodyResponse r;
     r.alpha_ccw_rad = std::atan2(dot(c - left, along), height);
     r.alpha_cw_rad = std::atan2(dot(right - c, along), height);
-    r.base_tilt_rad = std::atan2(along.y, along.x);
+    r.base_tilt_rad = std::atan2(along.y, along.x) + level_angle_rad;
     r.base_left_offset_m = left - c;
     r.base_right_offset_m = right - c;
     r.base_length_m = length(right - left);
@@ -34,8 +37,8 @@ BodyResponse base_of(const Bodies& b, std::size_t i, const OutcomeThresholds& t)
     r.slip_threshold_m = t.slip_ratio * r.base_length_m;
     double low = INFINITY, high = -INFINITY;
     for (std::uint32_t k = first; k < first + count; ++k) {
-        low = std::min(low, b.world_vertices_m[k].y);
-        high = std::max(high, b.world_vertices_m[k].y);
+        low = std::min(low, -dot(b.world_vertices_m[k], down));
+        high = std::max(high, -dot(b.world_vertices_m[k], down));
     }
     r.height_m = high - low;
     return r;
@@ -45,11 +48,15 @@ bool holds(const std::vector<std::uint32_t>& list, std::uint32_t body) {
     return std::find(list.begin(), list.end(), body) != list.end();
 }
 
-// A contact normal within about 84 deg of vertical (|n_y| > 0.1) holds the upper body up;
-// one nearer horizontal is a neighbour beside it.
+// A contact normal within about 84 deg of gravity's vertical (|n . up| > 0.1) holds the upper
+// body up; one nearer level is a neighbour beside it.
 constexpr double supporting_normal_y = 0.1;
 
 }  // namespace
+
+double level_rad(const World& w, double t_s) {
+    return w.settings.gravity_m_s2 > 0.0 ? tilt_at_rad(w.settings, t_s) : 0.0;
+}
 
 ResponseMonitor::ResponseMonitor(const World& w)
     : thresholds_(w.settings.outcomes),
@@ -62,8 +69,9 @@ ResponseMonitor::ResponseMonitor(const World& w)
             reference_ = static_cast<std::int64_t>(i);
             break;
         }
+    start_level_rad_ = level_rad(w, w.time_s);
     for (std::size_t i = 0; i < b.size(); ++i) {
-        responses_[i] = base_of(b, i, thresholds_);
+        responses_[i] = base_of(b, i, thresholds_, start_level_rad_);
         responses_[i].start_rotation_rad = b.rotation_rad[i];
         responses_[i].support_body = reference_;
     }
@@ -101,6 +109,8 @@ void ResponseMonitor::note_contacts(const World& w) {
     // Bodies laid exactly touching come into contact over the first steps, as the weight
     // reaches them: the supporters are gathered over a short window, not at one step.
     const bool gathering = w.time_s <= thresholds_.support_window_s;
+    const double level = level_rad(w, w.time_s);
+    const Vec2 up{std::sin(level), std::cos(level)};
     for (const PairContact& pair : w.contacts) {
         if (pair.count == 0) continue;
         if (gathering) {
@@ -112,8 +122,8 @@ void ResponseMonitor::note_contacts(const World& w) {
                 if (r.supporters.empty()) r.support_body = lower;
                 r.supporters.push_back(lower);
             };
-            if (pair.normal.y > supporting_normal_y) add(pair.b, pair.a);
-            if (pair.normal.y < -supporting_normal_y) add(pair.a, pair.b);
+            if (dot(pair.normal, up) > supporting_normal_y) add(pair.b, pair.a);
+            if (dot(pair.normal, up) < -supporting_normal_y) add(pair.a, pair.b);
         }
         note_support_shear(w, pair);
         if (holds(responses_[pair.a].supporters, pair.b)) touching_supporter_now_[pair.a] = 1;
@@ -121,14 +131,15 @@ void ResponseMonitor::note_contacts(const World& w) {
     }
 }
 
-void ResponseMonitor::observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s) {
+void ResponseMonitor::observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s,
+                                      Vec2 down) {
     const bool touching = touching_supporter_now_[i] != 0;
     if (!r.supporters.empty()) {
         if (r.touches_a_supporter && !touching) r.support_lost_time_s = t_s;
         if (touching) r.support_lost_time_s = -1.0;
         r.touches_a_supporter = touching;
     }
-    if (r.drop_time_s < 0.0 && -r.relative_displacement_m.y > thresholds_.fall_drop_ratio * r.height_m) r.drop_time_s = t_s;
+    if (r.drop_time_s < 0.0 && dot(r.relative_displacement_m, down) > thresholds_.fall_drop_ratio * r.height_m) r.drop_time_s = t_s;
     const double speed_m_s = length(b.velocity_at_t_m_s[i] - table_velocity_m_s) +
                              b.bounding_radius_m[i] * std::abs(b.angular_velocity_at_t_rad_s[i]);
     r.at_rest = speed_m_s < thresholds_.rest_speed_m_s;
@@ -163,6 +174,10 @@ void ResponseMonitor::observe(const World& w) {
                                                    b.initial_position_m[static_cast<std::size_t>(reference_)]
                                              : Vec2{};
     const Vec2 table_velocity = reference_ >= 0 ? b.velocity_at_t_m_s[static_cast<std::size_t>(reference_)] : Vec2{};
+    // The tilt from level follows a tilting table: its change since the start adds to every body's.
+    const double level = level_rad(w, w.time_s);
+    const double level_change_rad = level - start_level_rad_;
+    const Vec2 down{-std::sin(level), -std::cos(level)};
     for (std::size_t i = 0; i < b.size(); ++i) {
         if (b.kind[i] != BodyKind::dynamic || is_taken_out(b, i)) continue;
         BodyResponse& r = responses_[i];
@@ -171,7 +186,7 @@ void ResponseMonitor::observe(const World& w) {
             r.peak_abs_rotation_rad = std::abs(theta);
             r.time_of_peak_rotation_s = w.time_s;
         }
-        const double tilt = r.base_tilt_rad + theta;  // the base's angle from level
+        const double tilt = r.base_tilt_rad + theta + level_change_rad;  // the base's angle from level
         const bool beyond = tilt > r.alpha_ccw_rad || tilt < -r.alpha_cw_rad;
         if (beyond && !r.beyond_alpha) r.last_crossing_s = w.time_s;
         r.beyond_alpha = beyond;
@@ -190,7 +205,7 @@ void ResponseMonitor::observe(const World& w) {
         if (sliding_now_[i]) r.sliding_time_s += w.dt_s;
         if (r.rocking_onset_s < 0.0 && r.rocked()) r.rocking_onset_s = w.time_s;
         if (r.slip_onset_s < 0.0 && r.slid()) r.slip_onset_s = w.time_s;
-        observe_support(b, i, w.time_s, r, table_velocity);
+        observe_support(b, i, w.time_s, r, table_velocity, down);
     }
 }
 
@@ -212,7 +227,8 @@ std::vector<BodyRecord> ResponseMonitor::records(const World& w) const {
         o.supporters = r.supporters;
         o.touches_a_supporter = r.touches_a_supporter;
         o.support_lost_time_s = r.support_lost_time_s;
-        o.drop_m = -r.relative_displacement_m.y;
+        const double level = level_rad(w, w.time_s);
+        o.drop_m = dot(r.relative_displacement_m, Vec2{-std::sin(level), -std::cos(level)});
         o.drop_time_s = r.drop_time_s;
         o.final_displacement_m = length(r.relative_displacement_m);
         o.final_position_m = b.position_m[i];

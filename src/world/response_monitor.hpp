@@ -7,13 +7,16 @@
 // alpha (the angle at that corner between the normal to the base and the line to the centroid,
 // atan(b/h) for a b x h half-size rectangle) gravity no longer brings it back. The base is the
 // edge facing most nearly down at the start, so a body that starts tilted is judged by its
-// base's angle from level (start tilt + rotation). A body has overturned when it ends the run
+// base's angle from level (start tilt + rotation). Down and level are gravity's: on a table
+// tilted by [simulation] tilt_deg (or a gravity vector) a base along x is tilted by the tilt,
+// and a tilting table (tilt_rate_deg_s) adds its change in tilt to every body's. A body has overturned when it ends the run
 // tilted beyond alpha; the overturning time is the last time it crossed alpha outwards.
 //
 // Sliding and rocking are judged on the interface with the body below (its first supporter,
 // see below; the table, or the ground, until one is found): a drum in a stack slides or rocks on
 // the drum below it, not on the table. Sliding is measured at the base corner the body is
-// tipping about (either, when level), horizontally, relative to the point of the supporter that
+// tipping about (either, when level), along the model's x axis (the table's
+// surface, also when the table is tilted by gravity's direction), relative to the point of the supporter that
 // was under that corner at the start (the supporter's own rigid motion taken out): rocking moves
 // the centroid by about h theta but leaves that corner in place, so a block that rocks without
 // sliding shows no base slip. Rocking is the rotation relative to the supporter's. The slip
@@ -97,7 +100,7 @@ public:
 
 private:
     void note_contacts(const World& w);
-    void observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s);
+    void observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s, Vec2 down);
     void note_support_shear(const World& w, const PairContact& pair);
 
     OutcomeThresholds thresholds_;
@@ -105,6 +108,10 @@ private:
     std::vector<std::uint8_t> sliding_now_;
     std::vector<std::uint8_t> touching_supporter_now_;
     std::int64_t reference_ = -1;
+    double start_level_rad_ = 0.0;   ///< [rad] gravity's tilt when the monitor started
 };
+
+/// The angle level makes with the model's x axis at t [rad]: the table's tilt (0 without gravity).
+double level_rad(const World& w, double t_s);
 
 }  // namespace blockdem

@@ -33,6 +33,7 @@ LeastSettled least_settled(const World& w) {
         if (b.kind[i] != BodyKind::dynamic) continue;
         const double kinetic_j = kinetic_energy_j(b, i);
         // Without gravity the scale is 0: any motion is then "not settled", rest is settled.
+        // (The magnitude: the tilt does not change the work of lifting a body by its size.)
         const double scale_j = b.mass_kg[i] * w.settings.gravity_m_s2 * b.bounding_radius_m[i];
         const double ratio = kinetic_j > 0.0 ? kinetic_j / scale_j : 0.0;
         if (ratio > worst.ratio) worst = {ratio, i, kinetic_j};
@@ -50,11 +51,52 @@ void restart_clock(World& w) {
     initialise_energy(w);
 }
 
+// While settling: the table at rest, the tilt held at its start, and (friction = "held")
+// every contact sticking. The scenario's values come back when settling ends.
+struct HeldWhileSettling {
+    TableMotion shaking;
+    double tilt_rate_rad_s;
+    std::vector<double> mu;
+};
+
+HeldWhileSettling hold(World& w, const SettlingSettings& settings) {
+    HeldWhileSettling held{w.table_motion, w.settings.tilt_rate_rad_s, {}};
+    w.table_motion = TableMotion{};
+    w.settings.tilt_rate_rad_s = 0.0;
+    for (const ContactParameters& p : w.contact.parameters) held.mu.push_back(p.mu);
+    if (settings.friction == SettlingFriction::held)
+        for (ContactParameters& p : w.contact.parameters) p.mu = held_friction_mu;
+    return held;
+}
+
+void release(World& w, const HeldWhileSettling& held) {
+    w.table_motion = held.shaking;
+    w.settings.tilt_rate_rad_s = held.tilt_rate_rad_s;
+    for (std::size_t k = 0; k < held.mu.size(); ++k) w.contact.parameters[k].mu = held.mu[k];
+}
+
+// The largest displacement and rotation of any dynamic body since settling started.
+void note_largest_motion(const Bodies& b, const std::vector<Vec2>& start_m, const std::vector<double>& start_rad,
+                         SettlingReport& report) {
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (b.kind[i] != BodyKind::dynamic) continue;
+        const double moved_m = length(b.position_m[i] - start_m[i]);
+        const double turned_rad = std::abs(b.rotation_rad[i] - start_rad[i]);
+        if (moved_m > report.largest_move_m || report.largest_move_body.empty()) {
+            report.largest_move_m = moved_m;
+            report.largest_move_body = b.name[i];
+        }
+        if (turned_rad > report.largest_turn_rad || report.largest_turn_body.empty()) {
+            report.largest_turn_rad = turned_rad;
+            report.largest_turn_body = b.name[i];
+        }
+    }
+}
+
 }  // namespace
 
 SettlingReport settle(World& w, const SettlingSettings& settings) {
-    const TableMotion shaking = w.table_motion;
-    w.table_motion = TableMotion{};
+    const HeldWhileSettling held = hold(w, settings);
     update_body_geometry(w);
     const std::vector<Vec2> start_m = w.bodies.position_m;
     const std::vector<double> start_rad = w.bodies.rotation_rad;
@@ -101,9 +143,16 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
         report.body_moved_m = length(b.position_m[reported_body] - start_m[reported_body]);
         report.body_turned_rad = std::abs(b.rotation_rad[reported_body] - start_rad[reported_body]);
     }
-    w.table_motion = shaking;
+    note_largest_motion(b, start_m, start_rad, report);
+    release(w, held);
     restart_clock(w);
     return report;
+}
+
+SettlingRecord settling_record(const SettlingReport& r, const SettlingSettings& settings) {
+    return {r.time_s,           r.steps,           settings.friction == SettlingFriction::held,
+            r.kinetic_ratio,    r.largest_move_m,  r.largest_move_body,
+            r.largest_turn_rad, r.largest_turn_body};
 }
 
 std::string settling_failure(const SettlingReport& r, const SettlingSettings& settings) {

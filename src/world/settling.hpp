@@ -1,8 +1,9 @@
 #pragma once
-// The settling stage: a generated assembly (bricks laid exactly touching, blocks cut from a
-// rock mass) is not yet in equilibrium: its contacts carry no load. Before the shaking starts it
-// is stepped under gravity with the table at rest until it is still, and then the clock is set
-// back to zero, keeping the contacts and their shear history.
+// The settling stage: bodies laid exactly touching (hand-written [[bodies]], bricks of a
+// generated wall, blocks cut from a rock mass) are not yet in equilibrium: their contacts carry
+// no load. Before the shaking starts the model is stepped under gravity with the table at rest
+// until it is still, and then the clock is set back to zero, keeping the contacts and their
+// shear history.
 //
 // Criterion, body by body: every dynamic body's kinetic energy stays below kinetic_ratio times
 // m g L, with m its mass and L its size (its largest centroid-to-corner distance), over a whole
@@ -11,6 +12,16 @@
 // falling below the datum made the old ratio meaningless), and one body still moving in a large,
 // quiet assembly is not averaged away. A window, not one sample: an oscillating contact passes
 // through zero kinetic energy twice a period.
+//
+// Friction while settling (SettlingSettings::friction): "held" (the default) raises every
+// contact's mu to held_friction_mu, so that no contact slides: each is loaded in place, its shear
+// spring taking whatever the weight asks. At t = 0 the scenario's mu applies again, so that a
+// contact whose shear exceeds mu N slides from the first step: a block on a slope steeper than
+// its friction angle starts with its contacts loaded, not by falling onto the slope, and a block
+// on a gentler slope starts in equilibrium, with no release transient that the rigid-plastic
+// reference lacks. "actual" keeps mu, so bodies may slide into place while settling (and a body
+// that cannot stand does not settle). The tilt does not grow while settling (tilt_rate applies
+// from t = 0).
 #include <cstdint>
 #include <string>
 
@@ -29,6 +40,11 @@ struct SettlingReport {
     double body_size_m = 0.0;        ///< [m] its L
     double body_moved_m = 0.0;       ///< [m] how far its centroid moved from where settling started, at the end
     double body_turned_rad = 0.0;    ///< [rad] how far it turned, at the end
+    // Over every dynamic body, at the end: how much the settling moved the model.
+    double largest_move_m = 0.0;     ///< [m] the largest centroid displacement
+    std::string largest_move_body;   ///< which body
+    double largest_turn_rad = 0.0;   ///< [rad] the largest |rotation|
+    std::string largest_turn_body;   ///< which body
     /// A body that fell out of the model's extent while settling (world/model_domain.hpp): the
     /// set-up lost it before any shaking, so settling failed; body names it.
     bool left_model = false;
@@ -39,6 +55,9 @@ struct SettlingReport {
 /// Settles the world in place (table at rest), then restarts the clock at t = 0: time, step
 /// count and energy ledger are reset and the settled positions become the initial positions.
 SettlingReport settle(World& w, const SettlingSettings& settings);
+
+/// What the summary and check report of a settling stage.
+SettlingRecord settling_record(const SettlingReport& report, const SettlingSettings& settings);
 
 /// The message for a settling that failed: the criterion, and which body did not settle.
 std::string settling_failure(const SettlingReport& report, const SettlingSettings& settings);

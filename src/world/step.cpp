@@ -128,10 +128,14 @@ struct BodyEnergy {
     double kinetic_j = 0.0;        ///< [J]
     double gravitational_j = 0.0;  ///< [J]
     double non_finite = 0.0;       ///< bodies whose position, rotation or velocity is not finite
+    Vec2 mass_moment_kg_m;         ///< [kg m] sum of m x: what a turning gravity works on
+    Vec2 momentum_kg_m_s;          ///< [kg m/s] sum of m v at t
     BodyEnergy& operator+=(const BodyEnergy& o) {
         kinetic_j += o.kinetic_j;
         gravitational_j += o.gravitational_j;
         non_finite += o.non_finite;
+        mass_moment_kg_m += o.mass_moment_kg_m;
+        momentum_kg_m_s += o.momentum_kg_m_s;
         return *this;
     }
 };
@@ -142,22 +146,36 @@ bool state_is_finite(const Bodies& b, std::size_t i) {
 }
 
 // Body i's terms of the ledger at t (its velocity at t must be up to date).
-BodyEnergy body_energy_terms(const Bodies& b, std::size_t i, double g) {
+// Gravitational energy is -m g . x (m g y for gravity in -y, written so that it is the same
+// number to the last bit).
+BodyEnergy body_energy_terms(const Bodies& b, std::size_t i, Vec2 g) {
     BodyEnergy e;
     e.non_finite = state_is_finite(b, i) ? 0.0 : 1.0;
     if (b.kind[i] != BodyKind::dynamic || b.is_static[i]) return e;  // (taken out: its energy is in removed_j)
     const Vec2 v = b.velocity_at_t_m_s[i];
     const double omega = b.angular_velocity_at_t_rad_s[i];
     e.kinetic_j = 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
-    e.gravitational_j = b.mass_kg[i] * g * b.position_m[i].y;
+    e.gravitational_j = -(b.mass_kg[i] * g.x) * b.position_m[i].x - (b.mass_kg[i] * g.y) * b.position_m[i].y;
+    e.mass_moment_kg_m = b.mass_kg[i] * b.position_m[i];
+    e.momentum_kg_m_s = b.mass_kg[i] * v;
     return e;
 }
 
 BodyEnergy body_energy(const World& w) {
-    const double g = w.settings.gravity_m_s2;
+    const Vec2 g = w.gravity_now_m_s2;
     return deterministic_sum(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
         return body_energy_terms(w.bodies, static_cast<std::size_t>(i), g);
     });
+}
+
+// A gravity that turns (a tilting table) changes the potential -m g . x without moving a body:
+// over the step that ends at t the field does the work -(g(t) - g(t - dt)) . sum(m x) on the
+// bodies, with sum(m x) taken mid-step, sum(m x)(t) - dt/2 sum(m v)(t) (second order, as the
+// scheme). Nothing before t = 0 counts: the ledger starts there.
+void add_tilt_work(World& w, const BodyEnergy& bodies) {
+    if (w.settings.tilt_rate_rad_s == 0.0 || w.step_index == 0) return;
+    const Vec2 gravity_change = w.gravity_now_m_s2 - gravity_at(w.settings, w.time_s - w.dt_s);
+    w.energy.tilt_work_j -= dot(gravity_change, bodies.mass_moment_kg_m - 0.5 * w.dt_s * bodies.momentum_kg_m_s);
 }
 
 void store_body_energy(World& w, const BodyEnergy& bodies) {
@@ -170,7 +188,8 @@ void store_body_energy(World& w, const BodyEnergy& bodies) {
 
 bool update_bodies(World& w) {
     set_driven_velocities(w);
-    const double g = w.settings.gravity_m_s2;
+    w.gravity_now_m_s2 = gravity_at(w.settings, w.time_s);
+    const Vec2 g = w.gravity_now_m_s2;
     const bool starting = !w.velocities_staggered;
     // Body by body: its force sum, its velocity, its energy terms, while its data is at hand
     // (parallel.hpp, rules 1 to 3; the same arithmetic as the three separate passes).
@@ -181,11 +200,13 @@ bool update_bodies(World& w) {
         return body_energy_terms(w.bodies, i, g);
     });
     w.velocities_staggered = true;
+    add_tilt_work(w, bodies);
     store_body_energy(w, bodies);
     return bodies.non_finite == 0.0;
 }
 
 void initialise_energy(World& w) {
+    w.gravity_now_m_s2 = gravity_at(w.settings, w.time_s);
     w.energy.elastic_j = contact_elastic_energy(w);
     store_body_energy(w, body_energy(w));
     w.energy.initial_j = w.energy.stored_j();

@@ -175,6 +175,7 @@ World build_world(const Model& model) {
         // A run that started and could not settle failed (exit 3), it is not bad input.
         if (!settled.settled) throw SimulationError(settling_failure(settled, *model.settling));
         w.settling_time_s = settled.time_s;
+        w.settling = settling_record(settled, *model.settling);
     }
     return w;
 }

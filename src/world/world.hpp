@@ -4,6 +4,7 @@
 // time step; writers only read it.
 #include <cstdint>
 #include <stdexcept>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,18 @@ struct StabilityWatch {
     double max_overlap_kn_N_m = 0.0;     ///< [N/m] the pair's normal stiffness then
 };
 
+/// What the settling stage did before t = 0 (world/settling.hpp), for the summary and check.
+struct SettlingRecord {
+    double time_s = 0.0;                 ///< [s] simulated settling
+    std::int64_t steps = 0;
+    bool friction_held = true;           ///< friction was held (every contact stuck) while settling
+    double kinetic_ratio = 0.0;          ///< [-] the largest E_k / (m g L) of the last window
+    double largest_move_m = 0.0;         ///< [m] the largest centroid displacement of any body
+    std::string largest_move_body;       ///< the body that moved most
+    double largest_turn_rad = 0.0;       ///< [rad] the largest |rotation| of any body
+    std::string largest_turn_body;       ///< the body that turned most
+};
+
 struct World {
     SimulationSettings settings;
     MaterialPairs contact;
@@ -106,6 +119,10 @@ struct World {
     double time_s = 0.0;                  ///< [s] time of the current state
     std::int64_t step_index = 0;
     double settling_time_s = 0.0;         ///< [s] simulated before t = 0 by the settling stage (0: none)
+    std::optional<SettlingRecord> settling;  ///< what the settling stage did (none: no settling)
+    /// [m/s^2] gravity at time_s in the model's frame (gravity_at(settings, time_s)), set once a
+    /// step before the forces (the tilt may change with time)
+    Vec2 gravity_now_m_s2{0.0, -9.81};
     /// false until the first step: the bodies' velocities are then those of the initial state at
     /// t, and the first step starts the leapfrog with a half step (central_difference.hpp).
     bool velocities_staggered = false;

@@ -6,6 +6,10 @@
 #include <numbers>
 #include <string>
 
+#include <toml++/toml.h>
+
+#include "io/input_error.hpp"
+#include "io/scenario.hpp"
 #include "support/world_helpers.hpp"
 #include "world/settling.hpp"
 
@@ -98,6 +102,98 @@ TEST(Settling, BlockAtRestSettlesInOneWindow) {
     const SettlingReport r = settle(w, SettlingSettings{1e-3, 0.05, 2.0});
     EXPECT_TRUE(r.settled) << r.kinetic_ratio;
     EXPECT_LT(r.time_s, 0.5);
+}
+
+// The toppled block's settling is reported as the summary and check give it: the body that
+// moved and turned most, and by how much.
+TEST(Settling, RecordNamesTheBodyThatMovedAndTurnedMost) {
+    World w = build_world(tilted_block_on_table(2.0));
+    const SettlingSettings settings{1e-8, 0.05, 5.0};
+    const SettlingRecord record = settling_record(settle(w, settings), settings);
+    EXPECT_EQ(record.largest_turn_body, "block");
+    EXPECT_EQ(record.largest_move_body, "block");
+    EXPECT_NEAR(record.largest_turn_rad, 65.0 * std::numbers::pi / 180.0, 0.02);
+    EXPECT_GT(record.largest_move_m, 0.1);
+    EXPECT_GT(record.steps, 0);
+    EXPECT_TRUE(record.friction_held);
+}
+
+// A block on a table tilted by 35 deg with mu = 0.5 (friction angle 26.6 deg): with friction
+// held it settles in place, its shear springs loaded; with the actual friction it slides off
+// the table and cannot settle.
+TEST(Settling, HeldFrictionLoadsASteepContactInPlace) {
+    for (const SettlingFriction friction : {SettlingFriction::held, SettlingFriction::actual}) {
+        Model m = model_with({rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0.0, -0.1}),
+                              rectangle_body("block", BodyKind::dynamic, 0.4, 0.2, {0.0, 0.1}, 0.0, 100.0)},
+                             contact(1e7, 0.5, 0.28, 1.0), 0.0, 9.81);
+        m.settings.dt_s.reset();
+        m.settings.tilt_rad = 35.0 * std::numbers::pi / 180.0;
+        m.settings.domain = DomainBox{{-1e3, -1e3}, {1e3, 1e3}};
+        World w = build_world(m);
+        const SettlingReport r = settle(w, SettlingSettings{1e-8, 0.05, 1.0, friction});
+        if (friction == SettlingFriction::held) {
+            EXPECT_TRUE(r.settled) << r.kinetic_ratio;
+            EXPECT_LT(r.largest_move_m, 1e-3);
+            // The real friction is back for t = 0.
+            EXPECT_DOUBLE_EQ(w.contact.parameters[0].mu, 0.5);
+        } else {
+            EXPECT_FALSE(r.settled);
+            EXPECT_GT(r.largest_move_m, 0.5);
+        }
+    }
+}
+
+const char* hand_written_scenario = R"(
+[simulation]
+duration = 0.1
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.6
+e = 0.3
+[[bodies]]
+name = "table"
+kind = "fixed"
+shape = "rectangle"
+width = 2.0
+height = 0.2
+center = [0.0, -0.1]
+density = 1000.0
+[[bodies]]
+name = "block"
+shape = "rectangle"
+width = 0.4
+height = 0.2
+center = [0.0, 0.1]
+density = 2500.0
+)";
+
+// [settling] applies to hand-written [[bodies]] as to assemblies: the world is settled at t = 0
+// and the record says how long it took and how far the block moved (it sinks into its contacts
+// by about m g / (2 kn) = 5e-5 m).
+TEST(Settling, HandWrittenBodiesSettleFromTheScenario) {
+    const toml::table root = toml::parse(std::string(hand_written_scenario) + "[settling]\nfriction = \"actual\"\nmax_time = 2.0\n");
+    const Model m = read_model(root, "test.toml", ".");
+    ASSERT_TRUE(m.settling);
+    EXPECT_EQ(m.settling->friction, SettlingFriction::actual);
+    const World w = build_world(m);
+    ASSERT_TRUE(w.settling);
+    EXPECT_FALSE(w.settling->friction_held);
+    EXPECT_GT(w.settling->time_s, 0.0);
+    EXPECT_EQ(w.settling->largest_move_body, "block");
+    EXPECT_GT(w.settling->largest_move_m, 1e-5);
+    EXPECT_LT(w.settling->largest_move_m, 2e-4);
+    EXPECT_EQ(w.time_s, 0.0);
+}
+
+TEST(Settling, UnknownFrictionIsRejectedAtItsKey) {
+    const toml::table root = toml::parse(std::string(hand_written_scenario) + "[settling]\nfriction = \"sticky\"\n");
+    try {
+        read_model(root, "test.toml", ".");
+        FAIL() << "expected an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("settling.friction"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
