@@ -54,9 +54,20 @@ struct PairContact {
 void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<BodyPair>& pairs,
                            std::vector<PairContact>& scratch);
 
+/// Last step's points that did not close again this step, with what the energy ledger needs to
+/// finish their account: their dashpots acted over the half of the last interval that the
+/// trapezoid of the law books only at the next step (contact/contact_forces.cpp).
+struct OpenedPoints {
+    std::uint32_t count = 0;
+    Vec2 normal;                      ///< unit, the pair's normal when they were last closed
+    Vec2 point_m[2];                  ///< [m] where they were
+    double normal_dashpot_n[2] = {};  ///< [N] their last normal dashpot force on b
+    double shear_dashpot_n[2] = {};   ///< [N] their last shear dashpot force on b
+};
+
 /// Updates a pair with this step's geometry: matched points keep their shear history. A point
 /// matches last step's point with the same feature id, or else an unmatched old point closer
-/// than match_distance_m (see the .cpp for why).
-void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m);
+/// than match_distance_m (see the .cpp for why). Returns the old points that opened.
+OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m);
 
 }  // namespace blockdem
