@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "laws/restitution.hpp"
 #include "study/rocking_calibration.hpp"
 
 namespace blockdem {
@@ -62,6 +63,19 @@ TEST(RockingCalibration, InelasticContactLosesHousnersShare) {
         std::printf("aspect %g, h_n = 0.9 no_tension: DEM r = %.4f, Housner %.4f (%lld steps, dt %.3g s)\n", aspect,
                     run.restitution, housner, run.steps, run.dt_s);
     }
+}
+
+TEST(RockingCalibration, HousnersRFoundAtAnInelasticHeel) {
+    // Asked for Housner's r itself, the fit lands where the heel no longer bounces: h_n of 0.3
+    // or more, a head-on restitution (paper's meaning) of 0.37 or less.
+    const RockingBlock b = concrete_block(5.0, ContactTermination::no_tension);
+    const double housner = housner_restitution(b.alpha_rad());
+    const RockingFit fit = calibrate_rocking(b, CalibratedParameter::h_n, housner, 1e-3);
+    ASSERT_TRUE(fit.found);
+    EXPECT_GE(fit.contact.h_n, 0.3);
+    std::printf("Housner's r = %.4f: h_n = %.4f (paper e = %.3f), r = %.4f, %d runs\n", housner, fit.contact.h_n,
+                restitution_paper(fit.contact.h_n),
+                fit.achieved_restitution, fit.dem_runs);
 }
 
 TEST(RockingCalibration, FitRecoversTheDampingThatMadeTheTarget) {
