@@ -70,15 +70,16 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
 ContactEnergy opened_points_work(const World& w, const PairContact& pair, const OpenedPoints& opened) {
     ContactEnergy energy;
     const Bodies& b = w.bodies;
-    const Vec2 n = opened.normal;
+    const Vec2 n{opened.normal_x, opened.normal_y};
     const Vec2 t = perp(n);
     for (std::uint32_t k = 0; k < opened.count; ++k) {
-        const Vec2 ra = opened.point_m[k] - b.position_m[pair.a];
-        const Vec2 rb = opened.point_m[k] - b.position_m[pair.b];
+        const OpenedPoint& point = opened.points[k];
+        const Vec2 ra = Vec2{point.x_m, point.y_m} - b.position_m[pair.a];
+        const Vec2 rb = Vec2{point.x_m, point.y_m} - b.position_m[pair.b];
         const Vec2 relative = (b.velocity_m_s[pair.b] + cross(b.angular_velocity_rad_s[pair.b], rb)) -
                               (b.velocity_m_s[pair.a] + cross(b.angular_velocity_rad_s[pair.a], ra));
-        energy.normal_dashpot_j -= 0.5 * opened.normal_dashpot_n[k] * dot(relative, n) * w.dt_s;
-        energy.shear_dashpot_j -= 0.5 * opened.shear_dashpot_n[k] * dot(relative, t) * w.dt_s;
+        energy.normal_dashpot_j -= 0.5 * point.normal_dashpot_n * dot(relative, n) * w.dt_s;
+        energy.shear_dashpot_j -= 0.5 * point.shear_dashpot_n * dot(relative, t) * w.dt_s;
     }
     return energy;
 }

@@ -51,7 +51,7 @@ void prepare_pair_forces(World& w);
 /// pair's force slot. Touches nothing but pair p's entry and slot, so pairs may run in
 /// parallel. Returns the pair's energy terms, with the last share of the dashpots' work of the
 /// points that opened this step (the narrow phase's OpenedPoints; see the .cpp).
-ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened = {});
+ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened = OpenedPoints());
 
 /// Sets body i's force and torque: gravity plus its pairs' slots, in table order. Touches only
 /// body i.

@@ -48,7 +48,8 @@ OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& mani
         pair.stiffness_scale = manifold.count > 0 ? manifold.stiffness_scale : 1.0;
         pair.normal = manifold.normal;
         pair.reference = manifold.count > 0 ? manifold.reference : no_reference;
-        return {};
+        OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
+        return none;
     }
     ContactPoint updated[2];
     bool taken[2] = {false, false};
@@ -82,13 +83,12 @@ OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& mani
         for (std::uint32_t i = 0; i < manifold.count; ++i)
             updated[i].shear_spring_n *= manifold.stiffness_scale / pair.stiffness_scale;
     OpenedPoints opened;
-    opened.normal = pair.normal;
+    opened.normal_x = pair.normal.x;
+    opened.normal_y = pair.normal.y;
     for (std::uint32_t j = 0; j < pair.count; ++j) {
         if (taken[j]) continue;
-        opened.point_m[opened.count] = pair.points[j].point_m;
-        opened.normal_dashpot_n[opened.count] = pair.points[j].normal_dashpot_n;
-        opened.shear_dashpot_n[opened.count] = pair.points[j].shear_dashpot_n;
-        ++opened.count;
+        const ContactPoint& old = pair.points[j];
+        opened.points[opened.count++] = {old.point_m.x, old.point_m.y, old.normal_dashpot_n, old.shear_dashpot_n};
     }
     pair.stiffness_scale = manifold.count > 0 ? manifold.stiffness_scale : 1.0;
     pair.count = manifold.count;

@@ -17,12 +17,12 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Aabb& box_a = b.box_m[pair.a];
     const Aabb& box_b = b.box_m[pair.b];
     if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
-        OpenedPoints opened;
-        if (pair.count > 0 || pair.reference != no_reference) opened = update_pair_geometry(pair, ContactManifold{}, 0.0);
         // (Reset only if set: a pair apart stays clean and its cache line is not written.)
         if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
             pair.axis_cache = AxisCache{};
-        return opened;
+        if (pair.count > 0 || pair.reference != no_reference) return update_pair_geometry(pair, ContactManifold{}, 0.0);
+        OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
+        return none;
     }
     const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
                         b.vertex_count[pair.a]};
@@ -31,7 +31,10 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     // Still apart along the edge that separated the pair last step: the pair (no points, no
     // reference) is already what collide_polygons would make it. (Bricks laid side by side
     // stay exactly touching, separation 0, until the load reaches them.)
-    if (pair.count == 0 && separated_by_cached_edge(a, c, pair.axis_cache)) return {};
+    if (pair.count == 0 && separated_by_cached_edge(a, c, pair.axis_cache)) {
+        OpenedPoints none;
+        return none;
+    }
     // How far any edge's separation can have moved since the last step: both bodies'
     // translations plus their rotations times a lever covering every corner of either
     // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
