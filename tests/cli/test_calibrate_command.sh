@@ -47,6 +47,7 @@ TOML
 out=$("$bin" check "$tmp/scenario.toml" 2>&1); rc=$?
 [ $rc -eq 0 ] || fail "check of the pasted keys exited $rc: $out"
 expect_in "$out" "h_n = $(printf '%.4g' "$h_from_r")"
+expect_in "$out" "termination = zero_overlap"
 
 # 3. From r^2: the same target gives the same fit.
 out=$("$bin" calibrate "${block[@]}" --energy-ratio "$(/usr/bin/python3 -c 'print(0.9046**2)')" 2>&1); rc=$?
