@@ -102,9 +102,9 @@ void print_contact(const World& w) {
         for (std::uint32_t j = i; j < m.size(); ++j) {
             const ContactParameters& p = w.contact.at(i, j);
             fmt::print("  {} / {}: kn = {:.4g} N/m, ks = {:.4g} N/m, mu = {:.4g}, h_n = {:.4g} (paper e = {:.4g}, "
-                       "rebound e = {:.4g}), h_s = {:.4g}\n",
+                       "rebound e = {:.4g}), h_s = {:.4g}, termination = {}\n",
                        m[i], m[j], p.kn_N_m, p.ks_N_m, p.mu, p.h_n, p.h_n < 1.0 ? restitution_paper(p.h_n) : 0.0,
-                       restitution_no_tension(p.h_n), p.h_s);
+                       restitution_of(p.h_n, p.termination), p.h_s, to_string(p.termination));
             if (!w.contact.origins.empty()) print_stiffness_origin(w.contact.origins[i * m.size() + j]);
         }
     }

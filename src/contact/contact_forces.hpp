@@ -49,8 +49,9 @@ void prepare_pair_forces(World& w);
 
 /// The law at every point of pair p: updates the points' forces and history and writes the
 /// pair's force slot. Touches nothing but pair p's entry and slot, so pairs may run in
-/// parallel. Returns the pair's energy terms.
-ContactEnergy apply_pair_law(World& w, std::size_t p);
+/// parallel. Returns the pair's energy terms, with the last share of the dashpots' work of the
+/// points that opened this step (the narrow phase's OpenedPoints; see the .cpp).
+ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened = OpenedPoints());
 
 /// Sets body i's force and torque: gravity plus its pairs' slots, in table order. Touches only
 /// body i.

@@ -33,7 +33,7 @@ bool same_features(const PairContact& pair, const ContactManifold& manifold) {
 
 }  // namespace
 
-void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m) {
+OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m) {
     if (same_features(pair, manifold)) {
         // Every point keeps its own history (what the general matching below gives here).
         const double rescale = manifold.count > 0 && manifold.stiffness_scale != pair.stiffness_scale &&
@@ -48,7 +48,8 @@ void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, do
         pair.stiffness_scale = manifold.count > 0 ? manifold.stiffness_scale : 1.0;
         pair.normal = manifold.normal;
         pair.reference = manifold.count > 0 ? manifold.reference : no_reference;
-        return;
+        OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
+        return none;
     }
     ContactPoint updated[2];
     bool taken[2] = {false, false};
@@ -81,11 +82,20 @@ void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, do
     if (manifold.stiffness_scale != pair.stiffness_scale && pair.stiffness_scale > 0.0)
         for (std::uint32_t i = 0; i < manifold.count; ++i)
             updated[i].shear_spring_n *= manifold.stiffness_scale / pair.stiffness_scale;
+    OpenedPoints opened;
+    opened.normal_x = pair.normal.x;
+    opened.normal_y = pair.normal.y;
+    for (std::uint32_t j = 0; j < pair.count; ++j) {
+        if (taken[j]) continue;
+        const ContactPoint& old = pair.points[j];
+        opened.points[opened.count++] = {old.point_m.x, old.point_m.y, old.normal_dashpot_n, old.shear_dashpot_n};
+    }
     pair.stiffness_scale = manifold.count > 0 ? manifold.stiffness_scale : 1.0;
     pair.count = manifold.count;
     pair.normal = manifold.normal;
     pair.reference = manifold.count > 0 ? manifold.reference : no_reference;
     for (std::uint32_t i = 0; i < manifold.count; ++i) pair.points[i] = updated[i];
+    return opened;
 }
 
 }  // namespace blockdem

@@ -54,9 +54,28 @@ struct PairContact {
 void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<BodyPair>& pairs,
                            std::vector<PairContact>& scratch);
 
+/// One point of last step that opened: where it was and its last dashpot forces.
+struct OpenedPoint {
+    // (No default values, here and below but for count: the narrow phase hands an OpenedPoints
+    // back for every pair at every step and almost never fills it; zeroing it showed in profiles.)
+    double x_m, y_m;           ///< [m] where it was
+    double normal_dashpot_n;   ///< [N] its last normal dashpot force on b
+    double shear_dashpot_n;    ///< [N] its last shear dashpot force on b
+};
+
+/// Last step's points that did not close again this step, with what the energy ledger needs to
+/// finish their account: their dashpots acted over the half of the last interval that the
+/// trapezoid of the law books only at the next step (contact/contact_forces.cpp). Only the
+/// first count points and, if count > 0, the normal are set.
+struct OpenedPoints {
+    std::uint32_t count = 0;
+    double normal_x, normal_y;  ///< the pair's unit normal when they were last closed
+    OpenedPoint points[2];
+};
+
 /// Updates a pair with this step's geometry: matched points keep their shear history. A point
 /// matches last step's point with the same feature id, or else an unmatched old point closer
-/// than match_distance_m (see the .cpp for why).
-void update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m);
+/// than match_distance_m (see the .cpp for why). Returns the old points that opened.
+OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m);
 
 }  // namespace blockdem

@@ -9,7 +9,7 @@
 
 namespace blockdem {
 
-void update_pair_contact(World& w, std::size_t p) {
+OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
     PairContact& pair = w.contacts[p];
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
@@ -17,11 +17,12 @@ void update_pair_contact(World& w, std::size_t p) {
     const Aabb& box_a = b.box_m[pair.a];
     const Aabb& box_b = b.box_m[pair.b];
     if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
-        if (pair.count > 0 || pair.reference != no_reference) update_pair_geometry(pair, ContactManifold{}, 0.0);
         // (Reset only if set: a pair apart stays clean and its cache line is not written.)
         if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
             pair.axis_cache = AxisCache{};
-        return;
+        if (pair.count > 0 || pair.reference != no_reference) return update_pair_geometry(pair, ContactManifold{}, 0.0);
+        OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
+        return none;
     }
     const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
                         b.vertex_count[pair.a]};
@@ -30,7 +31,10 @@ void update_pair_contact(World& w, std::size_t p) {
     // Still apart along the edge that separated the pair last step: the pair (no points, no
     // reference) is already what collide_polygons would make it. (Bricks laid side by side
     // stay exactly touching, separation 0, until the load reaches them.)
-    if (pair.count == 0 && separated_by_cached_edge(a, c, pair.axis_cache)) return;
+    if (pair.count == 0 && separated_by_cached_edge(a, c, pair.axis_cache)) {
+        OpenedPoints none;
+        return none;
+    }
     // How far any edge's separation can have moved since the last step: both bodies'
     // translations plus their rotations times a lever covering every corner of either
     // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
@@ -48,7 +52,7 @@ void update_pair_contact(World& w, std::size_t p) {
     collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
     // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
     const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
-    update_pair_geometry(pair, manifold, match_distance);
+    return update_pair_geometry(pair, manifold, match_distance);
 }
 
 void update_contact_geometry(World& w) {

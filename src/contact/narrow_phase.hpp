@@ -10,8 +10,8 @@
 namespace blockdem {
 
 /// The narrow phase for pair p (contact points, history matched); touches only that pair, so
-/// pairs may run in parallel.
-void update_pair_contact(World& w, std::size_t p);
+/// pairs may run in parallel. Returns last step's points that opened (for the energy ledger).
+OpenedPoints update_pair_contact(World& w, std::size_t p);
 
 /// The narrow phase for every pair, without forces (the start-up overlap check uses it).
 void update_contact_geometry(World& w);

@@ -69,7 +69,8 @@ SimulationSettings read_settings(TableReader t) {
 
 // Contact parameters from t, starting from base (the defaults of [contact] for a pair).
 // require: mu, and kn and ks when require_stiffness (the [contact] table without a material).
-// Damping: h_n directly, or e with e_meaning = "paper" (default) or "rebound".
+// Damping: h_n directly, or e with e_meaning = "paper" (default) or "rebound"; termination =
+// "no_tension" (default) or "zero_overlap" (laws/contact_parameters.hpp).
 // base_meaning: the e_meaning a pair inherits from [contact].
 ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_mu,
                                           bool require_stiffness, const std::string& base_meaning = "paper") {
@@ -85,13 +86,17 @@ ContactParameters read_contact_parameters(TableReader& t, const ContactParameter
     } else if (require_mu) {
         t.fail_missing("mu");
     }
+    // (Read before e: the rebound meaning of e depends on when the contact ends.)
+    const std::string termination = t.choice("termination", {"no_tension", "zero_overlap"}, to_string(base.termination));
+    p.termination = termination == "zero_overlap" ? ContactTermination::zero_overlap : ContactTermination::no_tension;
     const auto e = t.optional_number("e");
     const auto h_n = t.optional_number("h_n");
     const std::string meaning = t.choice("e_meaning", {"paper", "rebound"}, base_meaning);
     if (e && h_n) t.fail("h_n", "give either e (coefficient of restitution) or h_n (damping ratio), not both");
     if (e) {
         if (!(*e > 0.0 && *e <= 1.0)) t.fail("e", fmt::format("must be in (0, 1], got {}", *e));
-        p.h_n = damping_ratio_for(*e, meaning == "paper" ? RestitutionMeaning::paper : RestitutionMeaning::rebound);
+        p.h_n = damping_ratio_for(*e, meaning == "paper" ? RestitutionMeaning::paper : RestitutionMeaning::rebound,
+                                  p.termination);
     } else if (h_n) {
         if (*h_n < 0.0 || (meaning == "paper" && *h_n >= 1.0)) t.fail("h_n", fmt::format("must be in [0, 1), got {}", *h_n));
         p.h_n = *h_n;

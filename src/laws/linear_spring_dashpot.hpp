@@ -1,12 +1,16 @@
 #pragma once
 // The contact law of the source paper (Ohmachi and Arai, after Cundall 1971), for one contact
 // point:
-//   normal:  F_n = kn * overlap + C_n * (approach speed), and F_n >= 0 (no tension);
+//   normal:  F_n = kn * overlap + C_n * (approach speed), and F_n >= 0 (no tension, the
+//            default); with termination = zero_overlap (the paper's own rule) F_n may pull while
+//            the dashpot acts, and the point ends when its overlap returns to zero (the narrow
+//            phase drops it then);
 //   shear:   the spring force is built incrementally, F_s,spring -= ks * (tangential slip
 //            increment), carried across steps in the contact frame; the dashpot adds
 //            -C_s * (tangential speed) while the contact sticks; |F_s| <= mu * F_n (Coulomb
 //            slider), and while the spring force is at that cap the contact slides, the
 //            dashpot is off and the excess spring displacement is dissipated by friction.
+//            A pulling contact (F_n < 0) carries no shear: the cap is mu * max(0, F_n).
 //   damping: C = 2 h sqrt(M k), with M the mass the pair shares among its contact points
 //            (docs/physics.md, "Which mass the damping uses").
 // Signs: n points from body a to body b; t is n turned counter-clockwise; forces are those on b.
@@ -34,7 +38,7 @@ struct ContactHistory {
 
 /// This step's forces, the history to carry, and this step's dissipation.
 struct ContactForce {
-    double normal_n = 0.0;          ///< [N] on b along n (>= 0)
+    double normal_n = 0.0;          ///< [N] on b along n (>= 0 unless termination = zero_overlap)
     double shear_spring_n = 0.0;    ///< [N] shear spring force on b along t: the history
     double shear_n = 0.0;           ///< [N] total shear force on b along t
     double normal_dashpot_n = 0.0;  ///< [N] the normal dashpot's part of normal_n
@@ -77,14 +81,18 @@ inline ContactForce linear_spring_dashpot(const ContactParameters& p, const Dash
                                           const ContactKinematics& k, const ContactHistory& previous, double dt_s) {
     ContactForce f;
     const double spring_n = p.kn_N_m * k.overlap_m;
-    // No tension: the dashpot may only reduce the compressive force to zero.
-    f.normal_n = std::max(0.0, spring_n - c.cn_N_s_m * k.normal_speed_m_s);
+    const double spring_and_dashpot_n = spring_n - c.cn_N_s_m * k.normal_speed_m_s;
+    // No tension: the dashpot may only reduce the compressive force to zero. Zero overlap: the
+    // dashpot acts in full while the overlap lasts, as in the paper's derivation of h_n.
+    f.normal_n = p.termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
+                                                                    : std::max(0.0, spring_and_dashpot_n);
     f.normal_dashpot_n = f.normal_n - spring_n;
     f.normal_dashpot_work_j = -0.5 * (previous.normal_dashpot_n + f.normal_dashpot_n) * k.normal_speed_m_s * dt_s;
 
     // Coulomb slider: if the cap fell below last step's spring force (the normal force
     // dropped), the spring first relaxes to the cap, then takes this step's slip increment.
-    const double limit_n = p.mu * f.normal_n;
+    // (A pulling point holds nothing in shear: its spring relaxes to zero, the excess to friction.)
+    const double limit_n = p.mu * std::max(0.0, f.normal_n);
     const double last_n = previous.shear_spring_n;
     const double capped_last_n = std::clamp(last_n, -limit_n, limit_n);
     const double increment_m = k.tangential_speed_m_s * dt_s;

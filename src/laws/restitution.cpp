@@ -74,4 +74,14 @@ double damping_ratio_for(double e, RestitutionMeaning meaning) {
     return meaning == RestitutionMeaning::paper ? damping_ratio_paper(e) : damping_ratio_rebound(e);
 }
 
+double damping_ratio_for(double e, RestitutionMeaning meaning, ContactTermination termination) {
+    if (termination == ContactTermination::zero_overlap) return damping_ratio_paper(e);
+    return damping_ratio_for(e, meaning);
+}
+
+double restitution_of(double h_n, ContactTermination termination) {
+    if (termination == ContactTermination::no_tension) return restitution_no_tension(h_n);
+    return h_n < 1.0 ? restitution_paper(h_n) : 0.0;
+}
+
 }  // namespace blockdem

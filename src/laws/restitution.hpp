@@ -9,6 +9,12 @@
 // * rebound: the h_n for which a no-tension linear spring-dashpot really rebounds with e
 //   (Schwager and Poeschel 2007, Granular Matter 9:465, eqs. for the linear dashpot model with
 //   the force criterion for separation). Asking for e = 0.4 then gives a measured rebound of 0.4.
+//
+// With termination = zero_overlap (the paper's own rule: the contact lasts until the overlap is
+// zero, pulling while the dashpot acts) the paper's formula is the exact rebound, so there the
+// two meanings give the same h_n.
+
+#include "laws/contact_parameters.hpp"
 
 namespace blockdem {
 
@@ -24,7 +30,15 @@ double restitution_no_tension(double h_n);
 /// The damping ratio for which a no-tension contact rebounds with e (0 < e <= 1), by bisection.
 double damping_ratio_rebound(double e);
 
-/// The damping ratio for e in the chosen meaning.
+/// The damping ratio for e in the chosen meaning (for a no-tension contact).
 double damping_ratio_for(double e, RestitutionMeaning meaning);
+/// The damping ratio for e in the chosen meaning, for a contact that ends by the given rule.
+double damping_ratio_for(double e, RestitutionMeaning meaning, ContactTermination termination);
+
+/// The rebound ratio of a head-on impact on a linear spring-dashpot with damping ratio h_n >= 0
+/// that ends by the given rule: restitution_no_tension(h_n), or for zero_overlap the paper's
+/// exp(-pi h / sqrt(1 - h^2)) (0 for h_n >= 1: an overdamped overlap never returns to zero, it
+/// creeps back with a speed that tends to zero).
+double restitution_of(double h_n, ContactTermination termination);
 
 }  // namespace blockdem

@@ -111,8 +111,8 @@ void update_contacts_and_forces(World& w) {
     // (the table is larger than the caches from about 1e5 blocks). Each pair writes only its
     // own entry and slot, and the ledger is summed in fixed chunks (parallel.hpp, rules 1, 3).
     const ContactEnergy contacts = deterministic_sum(static_cast<std::ptrdiff_t>(w.contacts.size()), [&](std::ptrdiff_t p) {
-        update_pair_contact(w, static_cast<std::size_t>(p));
-        return apply_pair_law(w, static_cast<std::size_t>(p));
+        const OpenedPoints opened = update_pair_contact(w, static_cast<std::size_t>(p));
+        return apply_pair_law(w, static_cast<std::size_t>(p), opened);
     });
     w.energy.normal_dashpot_j += contacts.normal_dashpot_j;
     w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
