@@ -20,6 +20,7 @@
 //      a > 0), else "anti_phase".
 // For a table motion that is not a sine the harmonic sub-modes have no meaning; rocking is then
 // reported as "rocking".
+#include <array>
 #include <string>
 #include <vector>
 
@@ -62,11 +63,18 @@ struct RockingSignal {
     bool rocked = false;  ///< rocked during the run (used when there is no window)
 };
 
+/// The longest orbit the rule looks for, in table periods.
+inline constexpr int max_period_ratio = 3;
+
 struct RockingClassification {
     RockingMode mode = RockingMode::none;
-    int period_ratio = 0;           ///< n*: rocking period / table period (0 when not rocking)
+    int period_ratio = 0;           ///< n*: orbit period / table period (0 when not rocking or irregular)
     double phase_lag_rad = 0.0;     ///< [rad] lag of theta behind the table acceleration (n* = 1)
-    double periodicity_error = 0.0; ///< [-] the relative RMS of theta(t) - theta(t - n* T)
+    double periodicity_error = 0.0; ///< [-] e(n*); irregular: the smallest e(n)
+    /// [-] e(n) for n = 1, 2, 3: the relative RMS of theta(t) - theta(t - n T); -1 where n
+    /// does not fit the window twice.
+    std::array<double, max_period_ratio> repeat_error{-1.0, -1.0, -1.0};
+    double impacts_per_period = 0.0;  ///< [-] sign changes of theta in the window / W
 };
 
 /// Applies the rule above. Without a valid window the result is none / sliding / rocking /
