@@ -110,7 +110,7 @@ RockingClassification classify_rocking_mode(const RockingSignal& s) {
     // orbit also repeats after 2 and 3 periods, so the smallest one is the orbit's period.
     int smallest_error_n = 0;
     for (int n = 1; n <= max_period_ratio; ++n) {
-        if (w.cycles % n != 0 || 2 * n > w.cycles) continue;  // whole orbits, two of them
+        if (2 * n > w.cycles) continue;  // two whole orbits in the window
         const double e = periodicity_error(s.theta_rad, mean, static_cast<std::size_t>(n * w.samples_per_cycle));
         c.repeat_error[static_cast<std::size_t>(n - 1)] = e;
         if (c.period_ratio == 0 && e <= periodicity_limit) c.period_ratio = n;
