@@ -16,7 +16,8 @@ failed (overturned, fell or left the model: the sweep's block.failed column, doc
 
     /usr/bin/python3 studies/rocking_mode_map.py [--out out/studies/modes] [--big] [--mpi N]
 
-Default: 266 + 1517 cases per solver (about 15 min of CPU for the DEM, 3 min for Housner).
+Default: 266 + 1517 cases per solver (the fine DEM grid took 27 min of wall time on a 2-core machine
+shared with other jobs; the rest a few minutes).
 --big: the fine grid at half the steps (4 times the cases).
 Writes rocking_mode_map.csv (one row per grid, solver and cell) and rocking_mode_map.png in --out.
 """
