@@ -38,6 +38,14 @@ namespace {
 
 constexpr double periodicity_limit = 0.3;  // relative RMS; a steady rocking repeats far better
 
+// Rotations that change sign: one impact each (the block passes through upright).
+std::size_t sign_changes(const std::vector<double>& theta) {
+    std::size_t n = 0;
+    for (std::size_t k = 1; k < theta.size(); ++k)
+        if ((theta[k - 1] < 0.0) != (theta[k] < 0.0)) ++n;
+    return n;
+}
+
 double mean_of(const std::vector<double>& x) {
     double s = 0.0;
     for (double v : x) s += v;
@@ -97,27 +105,29 @@ RockingClassification classify_rocking_mode(const RockingSignal& s) {
     if (peak < s.rocking_threshold_rad) return without_rocking(s);
 
     const double mean = mean_of(s.theta_rad);
-    int best = 0;
-    double best_amplitude = -1.0;
-    for (int n = 1; n <= 3; ++n) {
-        if (w.cycles % n != 0 || 2 * n > w.cycles) continue;  // whole rocking periods, two of them
-        const double amplitude = std::abs(component(s.theta_rad, mean, n * w.samples_per_cycle));
-        if (amplitude > best_amplitude) {
-            best_amplitude = amplitude;
-            best = n;
-        }
+    c.impacts_per_period = static_cast<double>(sign_changes(s.theta_rad)) / w.cycles;
+    // The period: the smallest n whose Poincare sections repeat after n points. A period-1
+    // orbit also repeats after 2 and 3 periods, so the smallest one is the orbit's period.
+    int smallest_error_n = 0;
+    for (int n = 1; n <= max_period_ratio; ++n) {
+        if (2 * n > w.cycles) continue;  // two whole orbits in the window
+        const double e = periodicity_error(s.theta_rad, mean, static_cast<std::size_t>(n * w.samples_per_cycle));
+        c.repeat_error[static_cast<std::size_t>(n - 1)] = e;
+        if (c.period_ratio == 0 && e <= periodicity_limit) c.period_ratio = n;
+        if (smallest_error_n == 0 || e < c.repeat_error[static_cast<std::size_t>(smallest_error_n - 1)]) smallest_error_n = n;
     }
-    if (best == 0) {
+    if (smallest_error_n == 0) {
         c.mode = RockingMode::rocking;  // window too short to tell
         return c;
     }
-    c.period_ratio = best;
-    c.periodicity_error = periodicity_error(s.theta_rad, mean, static_cast<std::size_t>(best * w.samples_per_cycle));
-    if (c.periodicity_error > periodicity_limit) {
+    if (c.period_ratio == 0) {
+        // No period up to 3 repeats: report the closest, for the record.
         c.mode = RockingMode::irregular;
+        c.periodicity_error = c.repeat_error[static_cast<std::size_t>(smallest_error_n - 1)];
         return c;
     }
-    if (best >= 2) {
+    c.periodicity_error = c.repeat_error[static_cast<std::size_t>(c.period_ratio - 1)];
+    if (c.period_ratio >= 2) {
         c.mode = RockingMode::subharmonic;
         return c;
     }

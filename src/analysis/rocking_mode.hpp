@@ -3,23 +3,27 @@
 // source paper's finding (Ishiyama 1982; Ohmachi and Arai 1985): a block rocks in phase,
 // anti-phase or subharmonically, and only in-phase rocking overturns at the static a/g = b/h.
 //
-// The rule (docs/sweeps.md, "Rocking modes") reads the rotation theta(t) over a window of W
-// whole table periods T at the end of the forcing (the steady state, after the start-up):
+// The rule (docs/rocking_modes.md) reads the rotation theta(t) over a window of W whole table
+// periods T at the end of the forcing (the steady state, after the start-up), sampled M = 64
+// times per period:
 //   1. overturned: the run's monitor says so (rotated beyond the critical angle at the end);
 //   2. no rocking in the window (peak |theta| below the rocking threshold): "sliding" when the
 //      block slid during the run, else "none";
-//   3. the rocking period: n* = the n in {1, 2, 3} (n dividing W) whose Fourier amplitude of
-//      theta - mean at the frequency 1/(n T) is largest;
-//   4. periodicity: the RMS of theta(t) - theta(t - n* T) over the second half of the window,
-//      relative to the RMS of theta - mean there, must be below 0.3, else "irregular" (no
-//      stable period yet);
-//   5. n* >= 2: "subharmonic" (rocking period n* T);
-//   6. n* = 1: the phase lag of theta's component at 1/T behind the table acceleration's:
-//      |lag| < 90 deg "in_phase" (the block leans the way the inertia force -m a pushes it when
-//      the acceleration peaks; theta counter-clockwise, i.e. leaning to -x, is in phase with
-//      a > 0), else "anti_phase".
+//   3. the orbit's period: the repeat error e(n) is the RMS of theta(t) - theta(t - n T) over
+//      the second half of the window, relative to the RMS of theta - mean there. Taken at one
+//      phase, theta(t0 + k T), k = 0, 1, ... is a Poincare section of the motion (sampled once
+//      per table period); e(n) measures how far all M sections are from repeating every n
+//      points. n* = the smallest n in {1, 2, 3} (2n <= W) with e(n) <= 0.3: a period-1 orbit
+//      also repeats after 2 and 3 periods, so the smallest is the orbit's period;
+//   4. no such n: "irregular" (chaotic rocking, a longer period, or a start-up not yet over);
+//   5. n* >= 2: "subharmonic" (the orbit repeats every n* table periods);
+//   6. n* = 1: the phase lag of theta's Fourier component at 1/T behind the table
+//      acceleration's: |lag| < 90 deg "in_phase" (the block leans the way the inertia force
+//      -m a pushes it when the acceleration peaks; theta counter-clockwise, i.e. leaning to -x,
+//      is in phase with a > 0), else "anti_phase".
 // For a table motion that is not a sine the harmonic sub-modes have no meaning; rocking is then
 // reported as "rocking".
+#include <array>
 #include <string>
 #include <vector>
 
@@ -62,11 +66,18 @@ struct RockingSignal {
     bool rocked = false;  ///< rocked during the run (used when there is no window)
 };
 
+/// The longest orbit the rule looks for, in table periods.
+inline constexpr int max_period_ratio = 3;
+
 struct RockingClassification {
     RockingMode mode = RockingMode::none;
-    int period_ratio = 0;           ///< n*: rocking period / table period (0 when not rocking)
+    int period_ratio = 0;           ///< n*: orbit period / table period (0 when not rocking or irregular)
     double phase_lag_rad = 0.0;     ///< [rad] lag of theta behind the table acceleration (n* = 1)
-    double periodicity_error = 0.0; ///< [-] the relative RMS of theta(t) - theta(t - n* T)
+    double periodicity_error = 0.0; ///< [-] e(n*); irregular: the smallest e(n)
+    /// [-] e(n) for n = 1, 2, 3: the relative RMS of theta(t) - theta(t - n T); -1 where n
+    /// does not fit the window twice.
+    std::array<double, max_period_ratio> repeat_error{-1.0, -1.0, -1.0};
+    double impacts_per_period = 0.0;  ///< [-] sign changes of theta in the window / W
 };
 
 /// Applies the rule above. Without a valid window the result is none / sliding / rocking /

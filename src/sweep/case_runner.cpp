@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "analysis/housner_rocking.hpp"
+#include "analysis/housner_sine_response.hpp"
 #include "analysis/rocking_mode.hpp"
 #include "io/history_writer.hpp"
 #include "io/output_file.hpp"
@@ -177,22 +178,6 @@ HousnerBlock housner_block_of(const World& w, std::size_t& body, const CaseOptio
     return b;
 }
 
-// theta at the window's sample times from the RK4 history (nearest point at or after).
-RockingSignal housner_signal(const RockingResult& r, const World& w, const RockingWindow& window) {
-    RockingSignal s;
-    s.window = window;
-    if (!window.valid() || r.overturned) return s;
-    std::size_t j = 0;
-    const auto total = static_cast<std::size_t>(window.cycles * window.samples_per_cycle);
-    for (std::size_t k = 0; k < total; ++k) {
-        const double t = window.start_s + static_cast<double>(k) * window.sample_interval_s();
-        while (j + 1 < r.history.size() && r.history[j].time_s < t) ++j;
-        s.theta_rad.push_back(r.history[j].theta_rad);
-        s.table_acceleration_m_s2.push_back(sample(w.table_motion.horizontal, t).acceleration_m_s2);
-    }
-    return s;
-}
-
 void run_housner(const World& w, const SweepScenario& scenario, const CaseOptions& options, CaseResult& result) {
     std::size_t body = 0;
     const HousnerBlock block = housner_block_of(w, body, options);
@@ -205,7 +190,7 @@ void run_housner(const World& w, const SweepScenario& scenario, const CaseOption
         for (std::size_t k = 1; k < r.history.size(); ++k)
             if (std::abs(r.history[k].theta_rad) >= alpha && std::abs(r.history[k - 1].theta_rad) < alpha)
                 o.overturning_time_s = r.history[k].time_s;
-    RockingSignal signal = housner_signal(r, w, window_for(w));
+    RockingSignal signal = housner_rocking_signal(r, w.table_motion.horizontal, window_for(w));
     signal.rocking_threshold_rad = 0.01 * alpha;  // as the DEM's monitor
     signal.overturned = r.overturned;
     signal.rocked = r.peak_abs_theta_rad >= signal.rocking_threshold_rad;
