@@ -13,6 +13,7 @@
 #include "io/run_budget.hpp"
 #include "io/scenario.hpp"
 #include "io/summary_writer.hpp"
+#include "io/toml_format.hpp"
 #include "io/vtk_writer.hpp"
 #include "world/response_monitor.hpp"
 #include "world/simulation_error.hpp"
@@ -35,7 +36,7 @@ void make_file_keys_absolute(toml::table& root, const std::filesystem::path& sce
 void write_scenario_copy(toml::table root, const std::filesystem::path& scenario, const std::filesystem::path& out_dir) {
     make_file_keys_absolute(root, scenario.parent_path());
     std::ostringstream text;
-    text << scenario_copy_marker << " (" << scenario.string() << ", after --set)\n" << root << '\n';
+    text << scenario_copy_marker << " (" << scenario.string() << ", after --set)\n" << toml_text(root);
     write_output_file(out_dir / "scenario.toml", text.str());
 }
 
