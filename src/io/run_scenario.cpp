@@ -11,6 +11,7 @@
 #include "io/output_file.hpp"
 #include "io/output_folder.hpp"
 #include "io/run_budget.hpp"
+#include "io/run_checks.hpp"
 #include "io/scenario.hpp"
 #include "io/summary_writer.hpp"
 #include "io/toml_format.hpp"
@@ -91,6 +92,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
         info.error = error;
         info.wall_s = wall();
         nlohmann::json summary = make_summary(world, monitor, info);
+        for (const std::string& warning : input_warnings(loaded.root, world)) summary["warnings"].push_back(warning);
         summary["end_time_s"] = world.settings.duration_s;  // time_s below it: failed or interrupted
         summary["outputs"] = outputs();
         return summary;

@@ -69,8 +69,14 @@ std::string inline_value_text(const toml::node& node) {
 
 void write_table(std::string& out, const toml::table& table, const std::string& path);
 
+// A table that holds only tables needs no header of its own ([table_motion] above
+// [table_motion.horizontal]); an empty one keeps it, or it would be lost.
 void write_section(std::string& out, const toml::table& table, const std::string& path, bool array_element) {
-    out += fmt::format("\n{}{}{}\n", array_element ? "[[" : "[", path, array_element ? "]]" : "]");
+    const bool only_tables = !table.empty() && std::all_of(table.begin(), table.end(), [](const auto& entry) {
+        return entry.second.is_table() || is_array_of_tables(entry.second);
+    });
+    if (array_element || !only_tables)
+        out += fmt::format("\n{}{}{}\n", array_element ? "[[" : "[", path, array_element ? "]]" : "]");
     write_table(out, table, path);
 }
 
