@@ -156,5 +156,15 @@ out=$("$bin" check "$tmp/record.toml" --set table_motion.horizontal.accept_verti
 sed 's/table_motion.horizontal/table_motion.vertical/' "$tmp/record.toml" > "$tmp/vertical.toml"
 out=$("$bin" check "$tmp/vertical.toml" 2>&1) || fail "a vertical record under [table_motion.vertical]: $out"
 
+# 11. docs/scenario.md lists every [[assemblies]] key that src/io/assembly_keys.cpp reads
+# ([settling]'s keys have their own section).
+section=$(sed -n '/^## \[\[assemblies\]\]/,/^## \[table_motion\]/p' "$src/docs/scenario.md")
+[ -n "$section" ] || fail "docs/scenario.md has no [[assemblies]] section"
+for key in $(grep -oP '(?:\.|->)(?:string|optional_string|positive|optional_positive|number|number_or|boolean_or|whole_number|whole_number_or|optional_vec2|vec2_list|table_array|optional_table|has|choice)\("\K[a-z_]+' \
+             "$src/src/io/assembly_keys.cpp" | sort -u); do
+  case $key in assemblies | settling | kinetic_ratio | window | max_time) continue ;; esac
+  grep -qF "\`$key\`" <<<"$section" || grep -qF "assemblies.$key" <<<"$section" || fail "docs/scenario.md [[assemblies]] lacks \`$key\`"
+done
+
 [ $failures -eq 0 ] && echo "loose ends: all checks passed"
 [ $failures -eq 0 ]
