@@ -1,8 +1,7 @@
 // `blockdem check SCENARIO [--set key=value]...`: validates the scenario and prints the derived
 // quantities: mass and inertia of each body, kn and ks (and how the rule derived them from the
-// material), h_n per material pair, C_n and C_s of the pairs in contact at the start, the contact
-// period and the static overlap, the
-// critical and the chosen time step, and the table motion.
+// material), h_n per material pair, C_n and C_s of the pairs touching at the start, the contact
+// period and the static overlap, the critical and the chosen time step, and the table motion.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
