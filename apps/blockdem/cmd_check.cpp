@@ -1,7 +1,8 @@
 // `blockdem check SCENARIO [--set key=value]...`: validates the scenario and prints the derived
 // quantities: mass and inertia of each body, kn and ks (and how the rule derived them from the
-// material), h_n, C_n, C_s per material pair, the contact period and the static overlap, the
-// critical and the chosen time step, and the table motion.
+// material), h_n per material pair, C_n and C_s of the pairs touching at the start, the contact
+// period and the static overlap, the critical and the chosen time step, and the table motion.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <span>
@@ -9,8 +10,11 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "dynamics/critical_time_step.hpp"
+#include "io/run_checks.hpp"
 #include "io/scenario.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 #include "laws/material_stiffness.hpp"
@@ -95,7 +99,6 @@ void print_stiffness_effects(const World& w) {
 }
 
 void print_contact(const World& w) {
-    const Bodies& b = w.bodies;
     fmt::print("contact parameters per material pair:\n");
     const auto& m = w.contact.materials;
     for (std::uint32_t i = 0; i < m.size(); ++i) {
@@ -108,21 +111,42 @@ void print_contact(const World& w) {
             if (!w.contact.origins.empty()) print_stiffness_origin(w.contact.origins[i * m.size() + j]);
         }
     }
-    // Dashpot coefficients for each dynamic body against a static one (M = its mass, one point)
-    // and lying flat on two points (M = m / 2 per point).
-    fmt::print("dashpots of each dynamic body on a fixed or driven body (C = 2 h sqrt(M k)):\n");
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] != BodyKind::dynamic) continue;
-        for (std::size_t s = 0; s < b.size(); ++s) {
-            if (b.kind[s] == BodyKind::dynamic) continue;
-            const ContactParameters& p = w.contact.at(b.material[i], b.material[s]);
-            const DashpotCoefficients one = dashpot_coefficients(p, b.mass_kg[i]);
-            const DashpotCoefficients two = dashpot_coefficients(p, 0.5 * b.mass_kg[i]);
-            fmt::print("  {} on {}: one point C_n = {:.4g}, C_s = {:.4g} N s/m; two points C_n = {:.4g}, C_s = {:.4g} "
-                       "N s/m each\n",
-                       b.name[i], b.name[s], one.cn_N_s_m, one.cs_N_s_m, two.cn_N_s_m, two.cs_N_s_m);
+}
+
+// The dashpots as the contact law uses them (C = 2 h sqrt(M k), M the pair's reduced mass shared
+// by its points) for the pairs that touch at the start, after any settling: the contacts the
+// stable time step is computed from (dynamics/critical_time_step.hpp: touching within a
+// millionth of a body's size). A pair that never touches has no dashpot to report, and in an
+// assembly the list would otherwise be every brick against every table. The first `shown`
+// pairs, then a count; then the dynamic bodies that touch nothing.
+void print_start_contacts(const World& w, std::size_t shown = 20) {
+    const Bodies& b = w.bodies;
+    const std::vector<StiffnessPoint> points = start_stiffness_points(w);
+    std::vector<std::string> free;
+    std::size_t pairs = 0;
+    fmt::print("dashpots of the pairs touching at the start (C = 2 h sqrt(M k), M = the pair's reduced mass / its "
+               "points):\n");
+    for (std::size_t k = 0; k < points.size();) {
+        const StiffnessPoint& p = points[k];
+        std::size_t count = 1;  // a pair's points are consecutive
+        while (k + count < points.size() && points[k + count].a == p.a && points[k + count].b == p.b) ++count;
+        k += count;
+        if (p.a >= b.size()) {  // a landing: the stable step's stand-in for a body that touches nothing
+            free.push_back(b.name[p.b]);
+            continue;
         }
+        if (b.kind[p.a] != BodyKind::dynamic && b.kind[p.b] != BodyKind::dynamic) continue;
+        if (++pairs > shown) continue;
+        const double reduced_mass_kg = 1.0 / (b.inv_mass_1_kg[p.a] + b.inv_mass_1_kg[p.b]);
+        fmt::print("  {} / {}: {} point{}, M = {:.4g} kg; C_n = {:.4g}, C_s = {:.4g} N s/m per point\n", b.name[p.a],
+                   b.name[p.b], count, count == 1 ? "" : "s", reduced_mass_kg, p.cn_N_s_m, p.cs_N_s_m);
     }
+    if (pairs == 0) fmt::print("  none\n");
+    if (pairs > shown) fmt::print("  ... and {} more pairs\n", pairs - shown);
+    if (!free.empty())
+        fmt::print("  touching nothing at the start (falls or flies until it meets a body): {}{}\n",
+                   fmt::join(free.begin(), free.begin() + static_cast<std::ptrdiff_t>(std::min(free.size(), shown)), ", "),
+                   free.size() > shown ? fmt::format(" and {} more", free.size() - shown) : "");
 }
 
 void print_motion(const World& w) {
@@ -150,6 +174,7 @@ void add_check_command(CLI::App& app) {
         const LoadedScenario s = load_scenario(*scenario, *sets);
         const World& w = s.world;
         fmt::print("scenario {}: valid\n", *scenario);
+        for (const std::string& warning : input_warnings(s.root, w)) fmt::print(stderr, "WARNING: {}\n", warning);
         fmt::print("duration {:g} s, gravity {:g} m/s^2, output every {:g} s\n", w.settings.duration_s,
                    w.settings.gravity_m_s2, w.settings.output_interval_s);
         if (w.settings.tilt_rad != 0.0 || w.settings.tilt_rate_rad_s != 0.0)
@@ -160,6 +185,7 @@ void add_check_command(CLI::App& app) {
                        tilt_at_rad(w.settings, w.settings.duration_s) * 180.0 / std::numbers::pi);
         print_bodies(w);
         print_contact(w);
+        print_start_contacts(w);
         print_stiffness_effects(w);
         fmt::print("time step: dt = {:.4g} s; stable limit {:.4g} s (dt / limit = {:.3f}); {} steps\n", w.dt_s,
                    w.critical_dt_s, w.dt_s / w.critical_dt_s, std::llround(w.settings.duration_s / w.dt_s));

@@ -26,7 +26,7 @@ struct SweepArguments {
     std::string records;
     std::string scale;
     std::string target_pga;
-    std::string target_pga_unit = "g";
+    std::string target_pga_unit;   // no default: sweep::check_target_pga_unit
     std::vector<std::string> record_keys;
     std::string out;
     int threads = 0;
@@ -71,7 +71,8 @@ sweep::SweepPlan make_plan(const SweepArguments& a) {
         } else if (!a.scale.empty()) {
             plan.suite.levels = sweep::parse_value_list(a.scale);
         }
-        plan.suite.pga_unit = a.target_pga_unit;
+        sweep::check_target_pga_unit(a.target_pga, a.target_pga_unit);
+        if (!a.target_pga_unit.empty()) plan.suite.pga_unit = a.target_pga_unit;
         for (const auto& k : a.record_keys) {
             const auto eq = k.find('=');
             if (eq == std::string::npos) throw CLI::ValidationError("--record-key expects key=value, got " + k);
@@ -134,7 +135,7 @@ void add_sweep_command(CLI::App& app) {
     cmd->add_option("--records", a->records, "record suite: a folder of record files, or a list file (path [key=value ...] per line)");
     cmd->add_option("--scale", a->scale, "scale factors for every record: f1,f2,... or start:stop:step");
     cmd->add_option("--target-pga", a->target_pga, "target PGA levels for every record: v1,v2,... or start:stop:step");
-    cmd->add_option("--target-pga-unit", a->target_pga_unit, "unit of --target-pga")->check(CLI::IsMember({"m/s^2", "gal", "g"}))->capture_default_str();
+    cmd->add_option("--target-pga-unit", a->target_pga_unit, "unit of --target-pga, required with it: m/s^2, gal or g")->check(CLI::IsMember({"m/s^2", "gal", "g"}));
     cmd->add_option("--record-key", a->record_keys, "a record key for every record, e.g. duration=20 (repeatable)");
     cmd->add_option("--out,-o", a->out, "output folder (a rerun with the same folder resumes)")->required();
     cmd->add_option("--threads,-j", a->threads, "threads per process (default: all cores; 1 per rank under mpirun)");

@@ -9,6 +9,7 @@
 #include <exception>
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -17,8 +18,20 @@
 #include "io/output_file.hpp"
 #include "world/simulation_error.hpp"
 
+namespace {
+
+// "blockdem 0.1.0 (commit 6792f38fa5e0)": the version of CMake's project(), and the commit the
+// build was configured at (CMakeLists.txt; absent outside a git checkout).
+std::string version_text() {
+    const std::string commit = BLOCKDEM_GIT_COMMIT;
+    return std::string("blockdem ") + BLOCKDEM_VERSION + (commit.empty() ? "" : " (commit " + commit + ")");
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
     CLI::App app{"blockdem: distinct element method for rigid blocks under earthquake shaking"};
+    app.set_version_flag("--version", version_text(), "print the version and the commit, then exit");
     app.require_subcommand(1);
     blockdem::cli::add_run_command(app);
     blockdem::cli::add_check_command(app);

@@ -36,16 +36,24 @@ PolygonProperties polygon_properties(const std::vector<Vec2>& v) {
     return p;
 }
 
-std::optional<std::string> convexity_problem(const std::vector<Vec2>& v) {
+namespace {
+
+// convexity_problem, naming vertex i of v as number(i) (the position in the user's list).
+template <class Number>
+std::optional<std::string> convexity_problem_numbered(const std::vector<Vec2>& v, Number number) {
     const std::size_t n = v.size();
     if (n < 3) return fmt::format("a polygon needs at least 3 vertices, got {}", n);
     double size = 0.0;
     for (const Vec2& p : v) size = std::max({size, std::abs(p.x - v[0].x), std::abs(p.y - v[0].y)});
     const double tiny = 1e-12 * std::max(size, 1e-300);
     for (std::size_t i = 0; i < n; ++i)
-        if (length(v[(i + 1) % n] - v[i]) <= tiny) return fmt::format("vertices {} and {} coincide", i, (i + 1) % n);
-    if (signed_area(v) <= 0.0)
-        return "vertices run clockwise (or the area is zero); list them counter-clockwise";
+        if (length(v[(i + 1) % n] - v[i]) <= tiny)
+            return fmt::format("vertices {} and {} coincide at ({}, {}) m", std::min(number(i), number((i + 1) % n)),
+                               std::max(number(i), number((i + 1) % n)), v[i].x, v[i].y);
+    const double area = signed_area(v);
+    if (area == 0.0)
+        return "the vertices enclose no area (they lie on one line)";
+    if (area < 0.0) return "vertices run clockwise; list them counter-clockwise";
     double turning = 0.0;  // total turning angle: exactly 2 pi for a simple convex polygon
     for (std::size_t i = 0; i < n; ++i) {
         const Vec2 e0 = v[(i + 1) % n] - v[i];
@@ -53,11 +61,31 @@ std::optional<std::string> convexity_problem(const std::vector<Vec2>& v) {
         const double turn = cross(e0, e1);
         if (turn <= 1e-12 * length(e0) * length(e1))
             return fmt::format("not strictly convex at vertex {} ({}, {}) m: the corner turns the wrong way or is straight",
-                               (i + 1) % n, v[(i + 1) % n].x, v[(i + 1) % n].y);
+                               number((i + 1) % n), v[(i + 1) % n].x, v[(i + 1) % n].y);
         turning += std::atan2(turn, dot(e0, e1));
     }
     if (turning > 2.0 * std::numbers::pi + 1e-6) return "the polygon crosses itself (it winds more than once)";
     return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> convexity_problem(const std::vector<Vec2>& v) {
+    return convexity_problem_numbered(v, [](std::size_t i) { return i; });
+}
+
+std::optional<std::string> listed_vertices_problem(const std::vector<Vec2>& listed) {
+    if (!(signed_area(listed) < 0.0)) return convexity_problem(listed);
+    const std::size_t n = listed.size();
+    const auto problem = convexity_problem_numbered(counter_clockwise(listed), [n](std::size_t i) { return n - 1 - i; });
+    if (!problem) return std::nullopt;
+    return *problem + " (the vertices are listed clockwise, which is accepted: they are checked in reverse order, and "
+                      "vertex numbers are positions in the list as written, from 0)";
+}
+
+std::vector<Vec2> counter_clockwise(std::vector<Vec2> vertices) {
+    if (signed_area(vertices) < 0.0) std::reverse(vertices.begin(), vertices.end());
+    return vertices;
 }
 
 std::vector<Vec2> rectangle_vertices(double width_m, double height_m, Vec2 center_m, double rotation_rad) {

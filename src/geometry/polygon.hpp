@@ -27,9 +27,17 @@ double least_width(const std::vector<Vec2>& vertices);
 double signed_area(const std::vector<Vec2>& vertices);
 
 /// Why the polygon is not a valid strictly convex counter-clockwise polygon, or nullopt if it is.
-/// Detects: fewer than 3 vertices, repeated vertices, clockwise order, reflex or straight
-/// corners (non-convex), and self-intersection (which shows up as a winding above one turn).
+/// Detects: fewer than 3 vertices, repeated vertices, no area (all on one line), clockwise order,
+/// reflex or straight corners (non-convex), and self-intersection (a winding above one turn).
 std::optional<std::string> convexity_problem(const std::vector<Vec2>& vertices);
+
+/// The same check for vertices as a user lists them, in either orientation: a clockwise list is
+/// checked in reverse order, and the message says that it ran clockwise and numbers the vertices
+/// by their position in the list as written (from 0), not in the reversed order.
+std::optional<std::string> listed_vertices_problem(const std::vector<Vec2>& listed);
+
+/// The vertices counter-clockwise: reversed when they run clockwise.
+std::vector<Vec2> counter_clockwise(std::vector<Vec2> vertices);
 
 /// The four corners of a width x height rectangle centred at center, rotated by rotation_rad.
 std::vector<Vec2> rectangle_vertices(double width_m, double height_m, Vec2 center_m, double rotation_rad);

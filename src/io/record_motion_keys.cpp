@@ -95,6 +95,17 @@ void check_delay(TableReader& keys, double delay_s, double dt_s) {
                                        delay_s, max_delay_samples, dt_s));
 }
 
+// A vertical component (UP, UD, HNZ, ...) under [table_motion.horizontal] is almost always the
+// wrong file of a record's three: refused unless accept_vertical says it is meant.
+void check_direction(TableReader& keys, const GroundMotionRecord& record, bool accept_vertical) {
+    const bool horizontal = keys.path().ends_with("horizontal");
+    if (!horizontal || accept_vertical || !is_vertical_component(record.component)) return;
+    keys.fail("file", fmt::format("the record's component is '{}', a vertical one, but it would drive the table "
+                                  "horizontally: give a horizontal component's file (or its column with `component`), move "
+                                  "it to [table_motion.vertical], or set accept_vertical = true if this is meant",
+                                  record.component));
+}
+
 AccelerationSeries to_series(const std::vector<double>& a, double dt, double delay, std::string source) {
     std::vector<double> t(a.size());
     for (std::size_t k = 0; k < a.size(); ++k) t[k] = delay + static_cast<double>(k) * dt;
@@ -108,9 +119,13 @@ AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::
     const RecordReadOptions options = read_options(keys);
     const RecordProcessing steps = processing(keys);
     const double delay = non_negative(keys, "delay", 0.0);
+    const bool accept_vertical = keys.boolean_or("accept_vertical", false);
     keys.reject_unknown_keys();
+    if (std::filesystem::is_directory(file))
+        keys.fail("file", fmt::format("'{}' is a folder, not a record file", file.string()));
     if (!std::filesystem::is_regular_file(file)) keys.fail("file", fmt::format("no record file '{}'", file.string()));
     const GroundMotionRecord record = read_ground_motion_record(file, options);
+    check_direction(keys, record, accept_vertical);
     try {
         padding_samples(record.npts(), record.dt_s, steps.pad_s);
     } catch (const std::invalid_argument& e) {

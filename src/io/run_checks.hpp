@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
+#include <toml++/toml.h>
 
 #include "world/world.hpp"
 
@@ -21,5 +22,10 @@ nlohmann::json run_checks(const World& w);
 
 /// One sentence per problem found (empty: nothing to warn about).
 std::vector<std::string> run_warnings(const World& w);
+
+/// What the scenario (root, after --set) leaves to a default the user may not expect: a pair of
+/// materials that can touch a dynamic body with neither `e` nor `h_n` ([contact] or its
+/// [[contact.pairs]] entry) runs with h_n = 0, an undamped contact. One sentence per problem.
+std::vector<std::string> input_warnings(const toml::table& root, const World& w);
 
 }  // namespace blockdem

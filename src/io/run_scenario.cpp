@@ -16,10 +16,12 @@
 #include "io/run_budget.hpp"
 #include "io/run_restart.hpp"
 #include "io/run_state_parts.hpp"
+#include "io/run_checks.hpp"
 #include "io/scenario.hpp"
 #include "io/state_file.hpp"
 #include "io/sensors_writer.hpp"
 #include "io/summary_writer.hpp"
+#include "io/toml_format.hpp"
 #include "io/vtk_writer.hpp"
 #include "world/response_monitor.hpp"
 #include "world/simulation_error.hpp"
@@ -45,13 +47,11 @@ void make_file_keys_absolute(toml::table& root, const fs::path& scenario_dir) {
 // The scenario as run (after --set, file names absolute), as the copy in the folder holds it.
 std::string scenario_as_run(toml::table root, const fs::path& scenario) {
     make_file_keys_absolute(root, scenario.parent_path());
-    std::ostringstream text;
-    text << root;
-    return text.str();
+    return toml_text(root);
 }
 
 void write_scenario_copy(const toml::table& root, const fs::path& scenario, const fs::path& out_dir) {
-    write_output_file(out_dir / "scenario.toml", fmt::format("{} ({}, after --set)\n{}\n", scenario_copy_marker,
+    write_output_file(out_dir / "scenario.toml", fmt::format("{} ({}, after --set)\n{}", scenario_copy_marker,
                                                              scenario.string(), scenario_as_run(root, scenario)));
 }
 
@@ -271,6 +271,7 @@ nlohmann::json run_scenario(const RunRequest& request) {
         info.status = status;
         info.error = error;
         nlohmann::json summary = make_summary(world, monitor, info);
+        for (const std::string& warning : input_warnings(loaded.root, world)) summary["warnings"].push_back(warning);
         summary["end_time_s"] = world.settings.duration_s;  // time_s below it: failed or interrupted
         summary["outputs"] = outputs();
         if (interfaces) summary["interfaces"] = interfaces_summary(world, interfaces->monitor());

@@ -13,6 +13,7 @@
 #include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
+#include "io/scenario_folder.hpp"
 #include "io/time_series_csv.hpp"
 #include "laws/material_stiffness.hpp"
 #include "laws/restitution.hpp"
@@ -301,9 +302,9 @@ BodyDef read_body(TableReader t) {
         if (!center) t.fail_missing("center", " ([x, y] in m)");
         b.vertices_m = rectangle_vertices(width, height, *center, rotation);
     } else {
-        b.vertices_m = t.vec2_list("vertices");
-        if (signed_area(b.vertices_m) < 0.0) std::reverse(b.vertices_m.begin(), b.vertices_m.end());
-        if (auto problem = convexity_problem(b.vertices_m)) t.fail("vertices", *problem);
+        const std::vector<Vec2> listed = t.vec2_list("vertices");
+        if (auto problem = listed_vertices_problem(listed)) t.fail("vertices", *problem);
+        b.vertices_m = counter_clockwise(listed);
         if (rotation != 0.0) {
             const Vec2 c = polygon_properties(b.vertices_m).centroid_m;
             const Rotation r = Rotation::from_angle(rotation);
@@ -386,6 +387,7 @@ double acceleration_unit_factor(TableReader& keys, const std::string& key) {
 }
 
 toml::table load_toml_file(const std::filesystem::path& file) {
+    if (std::filesystem::is_directory(file)) throw InputError({file.string(), "", 0, 0}, folder_not_scenario_message(file));
     std::ifstream in(file);
     if (!in) throw InputError({file.string(), "", 0, 0}, "cannot open the file (does it exist?)");
     std::stringstream text;

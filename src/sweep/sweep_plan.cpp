@@ -219,6 +219,14 @@ std::vector<std::string> SweepPlan::value_columns() const {
     return columns;
 }
 
+void check_target_pga_unit(const std::string& levels, const std::string& unit) {
+    if (!levels.empty() && unit.empty())
+        throw std::invalid_argument(
+            "--target-pga needs --target-pga-unit (m/s^2, gal or g), e.g. --target-pga 0.1:0.8:0.1 --target-pga-unit g: "
+            "a target PGA is read in the unit given with it (blockdem sweep used to take g without saying so, "
+            "while a scenario's target_pga is in m/s^2 unless target_pga_unit says otherwise)");
+}
+
 SweepCase make_case(const SweepPlan& plan, std::int64_t id) {
     SweepCase c;
     c.id = id;

@@ -39,7 +39,10 @@ struct RecordSuite {
     std::vector<RecordEntry> records;          ///< empty: no record axis
     RecordScaling scaling = RecordScaling::factor;
     std::vector<std::string> levels{"1"};      ///< factors [-], or target PGAs in pga_unit
-    std::string pga_unit = "g";                ///< m/s^2, gal or g
+    /// m/s^2, gal or g. `blockdem sweep` refuses target PGA levels without their unit
+    /// (check_target_pga_unit), so this default never reaches them; it stays because every
+    /// sweep's fingerprint hashes it, and a changed fingerprint would stop old sweeps resuming.
+    std::string pga_unit = "g";
     std::vector<Assignment> common_keys;       ///< --record-key, for every record
 };
 
@@ -80,6 +83,13 @@ SweepAxis read_case_list(const std::filesystem::path& file);
 /// list file (one record a line: `path [key=value ...]`, '#' starts a comment, paths relative
 /// to the list file). Throws std::invalid_argument.
 std::vector<RecordEntry> read_record_suite(const std::filesystem::path& path);
+
+/// Refuses (std::invalid_argument, naming the option and the fix) target PGA levels (the text
+/// of --target-pga) given without their unit (--target-pga-unit, empty when not given). A target
+/// PGA is read in the unit given with it, m/s^2 when none is, as every acceleration in a
+/// scenario; `blockdem sweep` used to take g without saying so, so rather than change the
+/// meaning of an old command silently, a sweep's levels must name their unit.
+void check_target_pga_unit(const std::string& levels, const std::string& unit);
 
 /// Case `id` of the plan (0 <= id < case_count()).
 SweepCase make_case(const SweepPlan& plan, std::int64_t id);

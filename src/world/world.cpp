@@ -109,7 +109,11 @@ void set_time_step(World& w, const SimulationSettings& settings) {
     } else {
         if (!std::isfinite(limit.dt_s))
             throw ModelError("cannot derive the time step: no dynamic body; give simulation.dt");
-        w.dt_s = settings.dt_safety * limit.dt_s;
+        // Rounded down to a whole number of steps per output interval, so that the rows of
+        // history.csv fall at t = n x output_interval (0.001, 0.002, ... not 0.0010017, ...).
+        const double largest_s = settings.dt_safety * limit.dt_s;
+        const double steps = std::ceil(settings.output_interval_s / largest_s);
+        w.dt_s = steps <= 1e9 ? std::min(largest_s, settings.output_interval_s / steps) : largest_s;
     }
 }
 

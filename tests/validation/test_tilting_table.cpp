@@ -61,7 +61,7 @@ TiltRun tilt_until_it_goes(double width_m, double height_m, double mu, double st
         if (w.time_s >= duration_s) break;
         step_end(w);
     }
-    const nlohmann::json summary = make_summary(w, monitor, RunInfo{"tilting", "completed", "", 0.0});
+    const nlohmann::json summary = make_summary(w, monitor, RunInfo{"tilting", "completed", ""});
     const nlohmann::json& at = summary["bodies"][1]["table_tilt_deg_at"];
     run.slip_tilt_deg = number_or_nan(at["slip_onset"]);
     run.rocking_tilt_deg = number_or_nan(at["rocking_onset"]);

@@ -7,7 +7,8 @@ from matplotlib import animation
 
 from .figures import STYLE, draw_bodies, plt
 
-DPI = 100  # [pixels per inch] of the animation frames (600 pixels wide)
+WIDTH_IN = 6.4  # [in] frame width: at DPI, 1280 pixels (HD), with the figures' 9-point text
+DPI = 200  # [pixels per inch] of the animation frames
 
 
 def frame_rows(run, fps, max_frames):
@@ -24,18 +25,19 @@ def write_animation(run, folder, fps=25, max_frames=750, fmt=None):
     fmt = fmt or ("mp4" if shutil.which("ffmpeg") else "gif")
     rows = frame_rows(run, fps, max_frames)
     box = run.view_box()
-    with plt.rc_context(STYLE):
-        width = 6.0
-        height = min(6.0, max(2.5, width * (box[3] - box[2]) / (box[1] - box[0]) + 0.6))
-        fig, ax = plt.subplots(figsize=(width, height))
-        ax.set_xlabel("x [m]")
-        ax.set_ylabel("y [m]")
-        collection = draw_bodies(ax, run, rows[0], box)
+    # Every frame the same size (a video cannot change it), so no tight bounding box here.
+    with plt.rc_context({**STYLE, "savefig.bbox": None}):
+        # The height follows the scene's shape (a tall tombstone, a wide wall), within 0.3 to
+        # 0.75 of the width, rounded to an even number of pixels for H.264.
+        ratio = min(0.75, max(0.3, (box[3] - box[2]) / (box[1] - box[0]) + 0.1))
+        height = round(WIDTH_IN * ratio * DPI / 2) * 2 / DPI
+        fig, ax = plt.subplots(figsize=(WIDTH_IN, height))
+        collection, origin = draw_bodies(ax, run, rows[0], box)
         bodies = run.drawable()
         label = ax.set_title("")
 
         def update(row):
-            collection.set_verts([run.outline_at(b, row) for b in bodies])
+            collection.set_verts([run.outline_at(b, row) - origin for b in bodies])
             label.set_text(f"{run.title()}   t = {run.t_s[row]:.2f} s")
             return collection, label
 

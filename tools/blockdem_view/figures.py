@@ -7,7 +7,9 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.ticker import MaxNLocator  # noqa: E402
 
 KIND_COLOURS = {"dynamic": "#c0504d", "fixed": "#7f7f7f", "driven": "#4f81bd"}
 STYLE = {
@@ -19,6 +21,8 @@ STYLE = {
     "grid.alpha": 0.3,
     "savefig.dpi": 200,
     "savefig.bbox": "tight",
+    # Constrained layout keeps tick labels, axis labels, titles and legends of every panel apart.
+    "figure.constrained_layout.use": True,
 }
 WIDTH_IN = 6.7  # [in] a two-column journal page
 
@@ -60,7 +64,8 @@ def acceleration_figure(run, bodies, folder, formats):
             ax.plot(run.t_s, run.series(name, "ax"), lw=0.7, color=colour)
             ax.set_ylabel(f"{name}\n$a_x$ [m/s$^2$]")
         axes[-1, 0].set_xlabel("time [s]")
-        axes[0, 0].set_title(f"{run.title()}: horizontal acceleration")
+        # (a figure title, not the top panel's: it then never meets that panel's tick offset)
+        fig.suptitle(f"{run.title()}: horizontal acceleration")
         fig.align_ylabels(axes[:, 0])
         return save(fig, folder, "acceleration", formats)
 
@@ -76,9 +81,10 @@ def response_figure(run, bodies, folder, formats):
         ref = run.recorded_table() or "ground"
         disp.set_ylabel(f"$u_x$ relative to\n{ref} [m]")
         disp.set_xlabel("time [s]")
-        rot.set_title(f"{run.title()}: rotation and relative displacement")
-        if len(bodies) > 1:
-            rot.legend(loc="best")
+        fig.suptitle(f"{run.title()}: rotation and relative displacement")
+        if len(bodies) > 1:  # below the panels, where it covers no curve
+            fig.legend(*rot.get_legend_handles_labels(), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                       ncol=min(len(bodies), 6), frameon=False)
         fig.align_ylabels([rot, disp])
         return save(fig, folder, "response", formats)
 
@@ -111,8 +117,10 @@ def energy_figure(run, folder, formats):
         accounted = held - (held - e["table_work_J"] - e["residual_J"])[0]
         terms.plot(e["t_s"], accounted, lw=1.0, ls="--", color="0.5", label="stored + dissipated - initial")
         terms.set_ylabel("energy [J]")
-        terms.legend(loc="upper left", ncol=2)
-        terms.set_title(f"{run.title()}: energy balance")
+        # Below the panels: inside, eight entries cover the curves whatever corner they take.
+        fig.legend(*terms.get_legend_handles_labels(), loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=3,
+                   frameon=False)
+        fig.suptitle(f"{run.title()}: energy balance")
         residual.plot(e["t_s"], e["residual_J"], lw=0.8, color="#9467bd")
         residual.set_ylabel("residual [J]")
         residual.set_xlabel("time [s]")
@@ -120,17 +128,33 @@ def energy_figure(run, folder, formats):
         return save(fig, folder, "energy", formats)
 
 
+def view_origin(box):
+    """A round point (x0, y0) [m] to draw a scene relative to when it lies far from the origin
+    compared with its size (a block at x = 1000 m): its tick labels then stay short ("-0.2",
+    not "999.8", or an offset "+1e3" that meets the axis label). (0, 0) otherwise."""
+    origin = []
+    for low, high in ((box[0], box[1]), (box[2], box[3])):
+        middle, size = 0.5 * (low + high), high - low
+        step = 10.0 ** np.floor(np.log10(size)) if size > 0 else 1.0
+        origin.append(float(np.round(middle / step) * step) if abs(middle) > 5 * size else 0.0)
+    return tuple(origin)
+
+
 def draw_bodies(ax, run, row, box):
-    """The drawable bodies at one history row as filled polygons, clipped to box."""
+    """The drawable bodies at one history row as filled polygons, clipped to box, drawn relative
+    to view_origin(box) (the axis labels say so). Returns the collection and the origin."""
+    origin = np.array(view_origin(box))
     bodies = run.drawable()
-    polygons = [run.outline_at(b, row) for b in bodies]
+    polygons = [run.outline_at(b, row) - origin for b in bodies]
     colours = [KIND_COLOURS[b["kind"]] for b in bodies]
     collection = PolyCollection(polygons, facecolors=colours, edgecolors="k", linewidths=0.6, alpha=0.9)
     ax.add_collection(collection)
-    ax.set_xlim(box[0], box[1])
-    ax.set_ylim(box[2], box[3])
+    ax.set_xlim(box[0] - origin[0], box[1] - origin[0])
+    ax.set_ylim(box[2] - origin[1], box[3] - origin[1])
     ax.set_aspect("equal")
-    return collection
+    ax.set_xlabel("x [m]" if origin[0] == 0 else f"x - {origin[0]:g} [m]")
+    ax.set_ylabel("y [m]" if origin[1] == 0 else f"y - {origin[1]:g} [m]")
+    return collection, origin
 
 
 def snapshot_figure(run, times, folder, formats):
@@ -155,10 +179,15 @@ def snapshot_figure(run, times, folder, formats):
             draw_bodies(ax, run, row, box)
             ax.set_title(f"t = {run.t_s[row]:.2f} s")
             ax.grid(False)
-        for ax in panels if side_by_side else panels[-1:]:
-            ax.set_xlabel("x [m]")
-        for ax in panels[:1] if side_by_side else panels:
-            ax.set_ylabel("y [m]")
+        for ax in panels[1:] if side_by_side else panels[:-1]:
+            (ax.set_ylabel if side_by_side else ax.set_xlabel)("")
+        # An equal-aspect panel is narrower than its share of the page: once laid out, at most
+        # one x tick label per half inch of its real width (matplotlib's own count assumes
+        # three-character labels, and "-0.25" beside "0.00" then touch).
+        fig.canvas.draw()
+        for ax in panels:
+            width_in = ax.get_window_extent().width / fig.dpi
+            ax.xaxis.set_major_locator(MaxNLocator(nbins=max(1, int(width_in / 0.5)), min_n_ticks=2))
         return save(fig, folder, "snapshots", formats)
 
 
@@ -186,8 +215,9 @@ def comparison_figure(runs, labels, body, folder, formats, overlay=False):
                 ax.set_ylabel(f"{label}\n$a_x$ [m/s$^2$]")
         if overlay:
             axes[0].set_ylabel(f"{body} $a_x$ [m/s$^2$]")
-            axes[0].legend(loc="upper right")
+            fig.legend(*axes[0].get_legend_handles_labels(), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+                       ncol=min(len(runs), 4), frameon=False)
         fig.axes[-1].set_xlabel("time [s]")
-        fig.axes[0].set_title(f"{body}: horizontal acceleration, {len(runs)} runs")
+        fig.suptitle(f"{body}: horizontal acceleration, {len(runs)} runs")
         fig.align_ylabels(fig.axes)
         return save(fig, folder, "acceleration_comparison", formats)

@@ -60,6 +60,19 @@ std::string component_key(const std::string& name) {
 
 bool same_component(const std::string& a, const std::string& b) { return component_key(a) == component_key(b); }
 
+}  // namespace records
+
+bool is_vertical_component(const std::string& component) {
+    const std::string key = records::component_key(component);
+    for (const char* vertical : {"up", "ud", "updown", "u", "dn", "dwn", "down", "v", "ver", "vert", "vertical", "z"})
+        if (key == vertical) return true;
+    // SEED channel codes: band, instrument, then the orientation (Z vertical; N, E, 1, 2 horizontal).
+    return key.size() == 3 && std::isalpha(static_cast<unsigned char>(key[0])) &&
+           std::isalpha(static_cast<unsigned char>(key[1])) && key[2] == 'z';
+}
+
+namespace records {
+
 void check_sample_interval(const RecordText& text, std::size_t line, double dt_s) {
     if (!(dt_s >= min_record_dt_s && dt_s <= max_record_dt_s))
         fail_at(text, line, fmt::format("a sample interval of {:g} s is outside the accepted {:g} s to {:g} s", dt_s,

@@ -50,6 +50,11 @@ struct RecordReadOptions {
 /// Reads a record file. Throws InputError naming the file and line for anything malformed.
 GroundMotionRecord read_ground_motion_record(const std::filesystem::path& file, const RecordReadOptions& options = {});
 
+/// True when a component name, as record headers write it, denotes the vertical direction: UP,
+/// UD (U-D), DN, DWN, DOWN, V, VER, VERT, VERTICAL, Z, or a SEED channel code ending in Z (HNZ,
+/// BNZ). Case, blanks and '-' are ignored; azimuths ("090") and N/S/E/W names are horizontal.
+bool is_vertical_component(const std::string& component);
+
 /// "auto", "peer-at2", "knet", "cosmos-v2", "jma-csv", "plain".
 std::string_view record_format_name(RecordFormat format);
 /// The inverse of record_format_name; also accepts "at2", "kiknet", "cosmos", "jma", "csv", "text".

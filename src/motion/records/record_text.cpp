@@ -14,11 +14,43 @@
 
 namespace blockdem::records {
 
+namespace {
+
+// What a binary file that arrived in place of a text record most likely is, for the fix.
+std::string binary_kind_hint(std::string_view content) {
+    if (content.starts_with("PK\x03\x04"))
+        return "; it is a ZIP archive (as records are downloaded): unzip it and give the record file inside";
+    if (content.starts_with("\x1f\x8b")) return "; it is gzip-compressed: gunzip it and give the record file inside";
+    if (content.starts_with("\xff\xfe") || content.starts_with("\xfe\xff"))
+        return "; it is UTF-16 text: save it as ASCII or UTF-8";
+    return "";
+}
+
+// Record formats are text: a NUL or a control character other than white space (and the DOS
+// end-of-file mark 0x1a some old files end with) means a binary file, which the readers would
+// otherwise report as a file with no numbers or a malformed header.
+void refuse_binary(const RecordText& text, std::string_view content) {
+    for (std::size_t at = 0; at < content.size(); ++at) {
+        const auto byte = static_cast<unsigned char>(content[at]);
+        if (byte >= 0x20 || byte == '\t' || byte == '\n' || byte == '\r' || byte == '\v' || byte == '\f' || byte == 0x1a)
+            continue;
+        const std::string name = to_lower(std::filesystem::path(text.file).extension().string());
+        const std::size_t line = static_cast<std::size_t>(std::count(content.begin(), content.begin() + at, '\n'));
+        fail_file(text, fmt::format("a binary file, not a {} (byte 0x{:02x} at offset {}, line {}){}",
+                                    name == ".at2" ? "PEER AT2 text record"
+                                                   : "text record (PEER AT2, K-NET, COSMOS V2, JMA CSV or plain text)",
+                                    byte, at, line + 1, binary_kind_hint(content)));
+    }
+}
+
+}  // namespace
+
 RecordText split_record_text(std::string file, std::string_view content) {
     RecordText text{std::move(file), {}};
     if (content.size() > max_record_file_bytes)
         fail_file(text, fmt::format("the file holds {} bytes; a record file may have at most {} bytes ({} MiB)", content.size(),
                                     max_record_file_bytes, max_record_file_bytes >> 20));
+    refuse_binary(text, content);
     std::size_t begin = 0;
     while (begin < content.size()) {
         std::size_t end = content.find('\n', begin);
