@@ -162,7 +162,7 @@ section=$(sed -n '/^## \[\[assemblies\]\]/,/^## \[table_motion\]/p' "$src/docs/s
 [ -n "$section" ] || fail "docs/scenario.md has no [[assemblies]] section"
 for key in $(grep -oP '(?:\.|->)(?:string|optional_string|positive|optional_positive|number|number_or|boolean_or|whole_number|whole_number_or|optional_vec2|vec2_list|table_array|optional_table|has|choice)\("\K[a-z_]+' \
              "$src/src/io/assembly_keys.cpp" | sort -u); do
-  case $key in assemblies | settling | kinetic_ratio | window | max_time) continue ;; esac
+  case $key in assemblies | settling | kinetic_ratio | window | max_time | friction) continue ;; esac
   grep -qF "\`$key\`" <<<"$section" || grep -qF "assemblies.$key" <<<"$section" || fail "docs/scenario.md [[assemblies]] lacks \`$key\`"
 done
 
