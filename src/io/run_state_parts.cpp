@@ -32,6 +32,9 @@ constexpr NumberField number_fields[] = {
     {"height_m", &BodyResponse::height_m},
     {"support_lost_time_s", &BodyResponse::support_lost_time_s},
     {"drop_time_s", &BodyResponse::drop_time_s},
+    {"start_rotation_rad", &BodyResponse::start_rotation_rad},
+    {"peak_abs_rotation_on_support_rad", &BodyResponse::peak_abs_rotation_on_support_rad},
+    {"peak_elastic_shear_m", &BodyResponse::peak_elastic_shear_m},
 };
 
 struct VectorField {
@@ -81,6 +84,10 @@ void MonitorStatePart::save_state(StateGroup& g) const {
     }
     g.write("supporters_start", start);
     g.write("supporters", supporters);
+    std::vector<std::int64_t> support_body;
+    for (const BodyResponse& body : r) support_body.push_back(body.support_body);
+    g.write("support_body", support_body);
+    g.set("start_level_rad", monitor_.start_level_rad());
 }
 
 void MonitorStatePart::restore_state(const StateGroup& g) {
@@ -106,7 +113,13 @@ void MonitorStatePart::restore_state(const StateGroup& g) {
                                                    "increasing");
         r[i].supporters.assign(supporters.begin() + start[i], supporters.begin() + start[i + 1]);
     }
-    monitor_.restore(std::move(r));
+    const std::vector<std::int64_t> support_body = g.integers("support_body", n);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+        if (support_body[i] < -1 || support_body[i] >= n)
+            throw InputError({g.file(), "", 0, 0}, "not a readable blockdem state file: /monitor/support_body names no body");
+        r[i].support_body = support_body[i];
+    }
+    monitor_.restore(std::move(r), g.number("start_level_rad"));
 }
 
 void VtkStatePart::save_state(StateGroup& g) const { g.write("frame_time_s", writer_.frame_times_s()); }

@@ -409,6 +409,7 @@ void write_energy(StateGroup g, const EnergyLedger& e) {
     g.set("initial_gravitational_j", e.initial_gravitational_j);
     g.set("peak_scale_j", e.peak_scale_j);
     g.set("removed_j", e.removed_j);
+    g.set("tilt_work_j", e.tilt_work_j);
 }
 
 EnergyLedger read_energy(const StateGroup& g) {
@@ -424,7 +425,33 @@ EnergyLedger read_energy(const StateGroup& g) {
     e.initial_gravitational_j = g.number("initial_gravitational_j");
     e.peak_scale_j = g.number("peak_scale_j");
     e.removed_j = g.number("removed_j");
+    e.tilt_work_j = g.number("tilt_work_j");
     return e;
+}
+
+// What settling did before t = 0: summary.json reports it, also for a restarted run.
+void write_settling(StateGroup g, const SettlingRecord& r) {
+    g.set("time_s", r.time_s);
+    g.set("steps", r.steps);
+    g.set("friction_held", std::int64_t{r.friction_held});
+    g.set("kinetic_ratio", r.kinetic_ratio);
+    g.set("largest_move_m", r.largest_move_m);
+    g.set("largest_move_body", r.largest_move_body);
+    g.set("largest_turn_rad", r.largest_turn_rad);
+    g.set("largest_turn_body", r.largest_turn_body);
+}
+
+SettlingRecord read_settling(const StateGroup& g) {
+    SettlingRecord r;
+    r.time_s = g.number("time_s");
+    r.steps = g.integer("steps");
+    r.friction_held = g.integer("friction_held") != 0;
+    r.kinetic_ratio = g.number("kinetic_ratio");
+    r.largest_move_m = g.number("largest_move_m");
+    r.largest_move_body = g.text("largest_move_body");
+    r.largest_turn_rad = g.number("largest_turn_rad");
+    r.largest_turn_body = g.text("largest_turn_body");
+    return r;
 }
 
 void write_stability(StateGroup g, const StabilityWatch& s) {
@@ -493,6 +520,7 @@ void write_world(StateGroup& root, const WorldState& s) {
     write_contacts(root.create_group("contacts"), s.contacts);
     write_energy(root.create_group("energy"), s.energy);
     write_stability(root.create_group("stability"), s.stability);
+    if (s.settling) write_settling(root.create_group("settling"), *s.settling);
 
     StateGroup d = root.create_group("domain");
     std::vector<std::uint32_t> body;
@@ -555,6 +583,7 @@ WorldState read_world(const StateGroup& root) {
     s.contacts = read_contacts(root.open_group("contacts"), s.name.size());
     s.energy = read_energy(root.open_group("energy"));
     s.stability = read_stability(root.open_group("stability"));
+    if (root.has("settling")) s.settling = read_settling(root.open_group("settling"));
 
     const StateGroup d = root.open_group("domain");
     const std::vector<std::uint32_t> body = d.indices("left_body");

@@ -96,7 +96,8 @@ void ResponseMonitor::note_support_shear(const World& w, const PairContact& pair
     note(pair.b, pair.a);
 }
 
-void ResponseMonitor::restore(std::vector<BodyResponse> responses) {
+void ResponseMonitor::restore(std::vector<BodyResponse> responses, double start_level_rad) {
+    start_level_rad_ = start_level_rad;
     if (responses.size() != responses_.size())
         throw std::invalid_argument("ResponseMonitor::restore: one response per body is needed");
     responses_ = std::move(responses);

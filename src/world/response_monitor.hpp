@@ -91,7 +91,8 @@ public:
     const std::vector<BodyResponse>& responses() const { return responses_; }
     /// Goes on from responses saved earlier in the same run (a restart, io/state_file.hpp): one
     /// per body. What else it holds is recomputed at every step.
-    void restore(std::vector<BodyResponse> responses);
+    void restore(std::vector<BodyResponse> responses, double start_level_rad);
+    double start_level_rad() const { return start_level_rad_; }  ///< [rad] gravity's tilt when it started
     /// What classify_outcomes needs, one record per body (taken-out bodies from w.domain).
     std::vector<BodyRecord> records(const World& w) const;
     const OutcomeThresholds& thresholds() const { return thresholds_; }

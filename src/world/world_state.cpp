@@ -17,6 +17,7 @@ WorldState capture_state(const World& w) {
     s.critical_dt_s = w.critical_dt_s;
     s.proven_stable_dt_s = w.proven_stable_dt_s;
     s.settling_time_s = w.settling_time_s;
+    s.settling = w.settling;
     s.velocities_staggered = w.velocities_staggered;
     s.broad_phase_rebuilds = w.broad_phase_rebuilds;
     s.name = b.name;
@@ -89,6 +90,7 @@ void restore_bodies_and_contacts(World& w, const WorldState& s, bool dynamic_onl
     w.velocities_staggered = s.velocities_staggered;
     w.broad_phase_rebuilds = s.broad_phase_rebuilds;
     w.settling_time_s = s.settling_time_s;
+    w.settling = s.settling;
     w.stability = s.stability;
     w.contacts = s.contacts;
     w.candidate_pairs.clear();

@@ -27,6 +27,7 @@ struct WorldState {
     double critical_dt_s = 0.0;           ///< [s]
     double proven_stable_dt_s = 0.0;      ///< [s]
     double settling_time_s = 0.0;         ///< [s]
+    std::optional<SettlingRecord> settling;  ///< what settling did before t = 0 (summary.json reports it)
     bool velocities_staggered = false;
     std::int64_t broad_phase_rebuilds = 0;
 

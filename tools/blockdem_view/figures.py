@@ -96,7 +96,12 @@ ENERGY_TERMS = [
     ("normal_dashpot_J", "normal dashpots (dissipated)"),
     ("shear_dashpot_J", "shear dashpots (dissipated)"),
     ("friction_J", "friction (dissipated)"),
+    ("removed_J", "taken out with bodies that left"),
+]
+# The work done on the bodies from outside: by the driven table, and by gravity as a table tilts.
+WORK_TERMS = [
     ("table_work_J", "work done by the table"),
+    ("tilt_work_J", "work done by the turning gravity"),
 ]
 
 
@@ -108,13 +113,18 @@ def energy_figure(run, folder, formats):
     with plt.rc_context(STYLE):
         fig, (terms, residual) = plt.subplots(2, 1, sharex=True, figsize=(WIDTH_IN, 4.6),
                                               gridspec_kw={"height_ratios": [3, 1]})
-        for column, label in ENERGY_TERMS:
+        # Files of older runs lack the removed and tilt columns; a term that stays 0 is not drawn.
+        present = [(c, label) for c, label in ENERGY_TERMS + WORK_TERMS if c in e]
+        for column, label in present:
+            if column in ("removed_J", "tilt_work_J") and not e[column].any():
+                continue
             style = {"lw": 1.4, "color": "k"} if column == "table_work_J" else {"lw": 0.9}
             terms.plot(e["t_s"], e[column], label=label, **style)
-        # stored + dissipated, less the initial kinetic and elastic energy: equals the table's work
-        # when the balance closes (residual_J is the difference).
-        held = sum(e[c] for c, _ in ENERGY_TERMS[:-1])
-        accounted = held - (held - e["table_work_J"] - e["residual_J"])[0]
+        # stored + dissipated + removed, less the initial kinetic and elastic energy: equals the
+        # work done from outside when the balance closes (residual_J is the difference).
+        held = sum(e[c] for c, _ in ENERGY_TERMS if c in e)
+        work = sum(e[c] for c, _ in WORK_TERMS if c in e)
+        accounted = held - (held - work - e["residual_J"])[0]
         terms.plot(e["t_s"], accounted, lw=1.0, ls="--", color="0.5", label="stored + dissipated - initial")
         terms.set_ylabel("energy [J]")
         # Below the panels: inside, eight entries cover the curves whatever corner they take.

@@ -68,8 +68,9 @@ def plot_data(run, bodies):
                            "u_x [m]", f"Horizontal displacement relative to {table or 'the ground'}"))
     if run.energy is not None:
         e = run.energy
-        names = ["kinetic_J", "gravitational_change_J", "elastic_J", "normal_dashpot_J", "shear_dashpot_J",
-                 "friction_J", "table_work_J", "residual_J"]
+        names = [c for c in ["kinetic_J", "gravitational_change_J", "elastic_J", "normal_dashpot_J",
+                             "shear_dashpot_J", "friction_J", "removed_J", "table_work_J", "tilt_work_J", "residual_J"]
+                 if c in e]
         step = _stride(len(e["t_s"]), MAX_PLOT_ROWS)
         rows = np.column_stack([e["t_s"][::step]] + [e[c][::step] for c in names])
         plots.append({"title": "Energy balance", "ylabel": "energy [J]", "labels": ["t"] + names,
