@@ -8,9 +8,17 @@
 #include "io/input_error.hpp"
 #include "io/scenario.hpp"
 #include "laws/restitution.hpp"
+#include "support/scenario_text.hpp"
 
 namespace blockdem {
 namespace {
+
+using testing::expect_contains;
+using testing::write_scenario;
+std::string replace(const std::string& text, const std::string& from, const std::string& to) {
+    return testing::replace_once(text, from, to);
+}
+std::filesystem::path write(const std::string& name, const std::string& text) { return write_scenario("test", name, text); }
 
 const char* valid = R"(
 [simulation]
@@ -46,30 +54,9 @@ unit = "gal"
 period = 1.0
 )";
 
-std::filesystem::path write(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("blockdem-test-" + name + ".toml");
-    std::ofstream(path) << text;
-    return path;
-}
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return text.replace(at, from.size(), to);
-}
-
 // The error message for loading text with overrides ("" if it loads).
-std::string error_of(const std::string& name, const std::string& text, std::vector<std::string> overrides = {}) {
-    try {
-        load_scenario(write(name, text), overrides);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-void expect_contains(const std::string& message, const std::string& part) {
-    EXPECT_NE(message.find(part), std::string::npos) << "message: " << message << "\nexpected to contain: " << part;
+std::string error_of(const std::string& name, const std::string& text, const std::vector<std::string>& overrides = {}) {
+    return testing::scenario_error("test", name, text, overrides);
 }
 
 TEST(ScenarioErrors, ValidScenarioLoads) {

@@ -9,9 +9,12 @@
 
 #include "io/input_error.hpp"
 #include "io/scenario.hpp"
+#include "support/scenario_text.hpp"
 
 namespace blockdem {
 namespace {
+
+using testing::expect_contains;
 
 // Two 0.6 x 0.9 m drums on a 0.2 m high driven table, all of stone.
 const char* column = R"(
@@ -52,29 +55,16 @@ density = 2600.0
 material = "stone"
 )";
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return text.replace(at, from.size(), to);
+std::string replace(const std::string& text, const std::string& from, const std::string& to) {
+    return testing::replace_once(text, from, to);
 }
 
 LoadedScenario load(const std::string& name, const std::string& text, const std::vector<std::string>& sets = {}) {
-    const auto path = std::filesystem::temp_directory_path() / ("blockdem-material-" + name + ".toml");
-    std::ofstream(path) << text;
-    return load_scenario(path, sets);
+    return load_scenario(testing::write_scenario("material", name, text), sets);
 }
 
 std::string error_of(const std::string& name, const std::string& text, const std::vector<std::string>& sets = {}) {
-    try {
-        load(name, text, sets);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-void expect_contains(const std::string& message, const std::string& part) {
-    EXPECT_NE(message.find(part), std::string::npos) << "message: " << message << "\nexpected to contain: " << part;
+    return testing::scenario_error("material", name, text, sets);
 }
 
 // stone / stone: two equal drums, kn = E t w / (2 h) = 30e9 x 0.6 / 1.8 = 1e10 N/m.

@@ -8,9 +8,13 @@
 
 #include "io/input_error.hpp"
 #include "io/scenario.hpp"
+#include "support/scenario_text.hpp"
 
 namespace blockdem {
 namespace {
+
+using testing::expect_contains;
+std::filesystem::path write(const std::string& name, const std::string& text) { return testing::write_scenario("sensor-keys", name, text); }
 
 const std::string base = R"(
 [simulation]
@@ -58,29 +62,10 @@ body2 = "table"
 point2 = [-0.25, 0.1]
 )";
 
-std::filesystem::path write(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("blockdem-sensor-keys-" + name + ".toml");
-    std::ofstream(path) << text;
-    return path;
-}
+std::string error_of(const std::string& name, const std::string& text) { return testing::scenario_error("sensor-keys", name, text); }
 
-std::string error_of(const std::string& name, const std::string& text) {
-    try {
-        load_scenario(write(name, text), {});
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
-}
-
-void expect_contains(const std::string& message, const std::string& part) {
-    EXPECT_NE(message.find(part), std::string::npos) << "message: " << message << "\nexpected to contain: " << part;
-}
-
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return text.replace(at, from.size(), to);
+std::string replace(const std::string& text, const std::string& from, const std::string& to) {
+    return testing::replace_once(text, from, to);
 }
 
 TEST(SensorKeys, ReadsPointAndRelativeSensors) {
