@@ -16,9 +16,12 @@ std::string joined(const std::vector<std::string>& names) {
     return text;
 }
 
+// A sensor as its state's layout and meaning depend on it: "top (filtered 50 Hz, order 4)".
 std::vector<std::string> sensor_names(const SensorBank& bank) {
     std::vector<std::string> names;
-    for (const SensorDef& d : bank.sensors()) names.push_back(d.name);
+    for (const SensorDef& d : bank.sensors())
+        names.push_back(d.lowpass_hz > 0.0 ? fmt::format("{} (low-pass {:.17g} Hz, order {})", d.name, d.lowpass_hz, d.order)
+                                           : fmt::format("{} (unfiltered)", d.name));
     return names;
 }
 
@@ -50,7 +53,7 @@ public:
 
 void SensorsStatePart::save_state(StateGroup& g) const {
     const SensorBankState s = writer_.bank().state();
-    g.write("name", sensor_names(writer_.bank()));
+    g.write("sensor", sensor_names(writer_.bank()));
     g.write("filter_state", s.filter_state);
     g.write("filter_started", s.filter_started);
     g.write("relative_start_m", s.relative_start_m);
@@ -60,7 +63,7 @@ void SensorsStatePart::save_state(StateGroup& g) const {
 void SensorsStatePart::restore_state(const StateGroup& g) {
     SensorBank& bank = writer_.bank();
     const std::vector<std::string> names = sensor_names(bank);
-    const std::vector<std::string> saved = g.strings("name");
+    const std::vector<std::string> saved = g.strings("sensor");
     if (saved != names)
         throw InputError({g.file(), "", 0, 0},
                          fmt::format("the state's sensors ({}) are not the scenario's ([[sensors]]: {}): a restart keeps "

@@ -78,9 +78,18 @@ scale = 4.0
 TOML
 
 same_results() {  # LABEL DIR1 DIR2
-  for f in sensors.csv interfaces.csv summary.json history.csv; do
+  for f in sensors.csv interfaces.csv history.csv; do
     cmp -s "$2/$f" "$3/$f" || fail "$1: $f differs between $2 and $3 ($(cmp "$2/$f" "$3/$f" 2>&1 | head -1))"
   done
+  # summary.json whole, and (so that a failure says whose state is missing) what differs in it.
+  cmp -s "$2/summary.json" "$3/summary.json" || fail "$1: summary.json differs between $2 and $3: $($py - "$2" "$3" <<'PY'
+import json, sys
+a, b = (json.load(open(f"{d}/summary.json")) for d in sys.argv[1:3])
+keys = [k for k in a if a.get(k) != b.get(k)]
+bodies = sorted({f for x, y in zip(a.get("bodies", []), b.get("bodies", [])) for f in x if x[f] != y.get(f)})
+print("keys", keys, "body fields", bodies)
+PY
+)"
 }
 
 # 0.3 s is an output time; 0.3024 s lies between two.
@@ -109,15 +118,16 @@ for state in t_0.300000s.h5 t_0.302400s.h5; do
     || fail "$label: restart into a new folder: $(tail -2 "$tmp/new-$label.log")"
   same_results "$label, restarted into a new folder" "$tmp/full" "$tmp/new-$label"
 done
-$py - "$tmp/full/state/t_0.300000s.h5" <<'PY' || fail "state file groups /sensors and /interfaces (h5py)"
+$py - "$tmp/full/state/t_0.300000s.h5" "$tmp/full/interfaces.csv" <<'PY' || fail "state file groups /sensors and /interfaces (h5py)"
 import sys, h5py
 f = h5py.File(sys.argv[1], "r")
+before = sum(1 for l in open(sys.argv[2]) if l[0].isdigit() and float(l.split(",")[0]) < 0.3 - 1e-7)
 s, i = f["sensors"], f["interfaces"]
-names = [n.decode() if isinstance(n, bytes) else n for n in s["name"][:]]
-assert names == ["top", "lvdt"], names
+names = [n.decode() if isinstance(n, bytes) else n for n in s["sensor"][:]]
+assert names == ["top (low-pass 40 Hz, order 4)", "lvdt (unfiltered)"], names
 assert s["filter_state"].shape == (6 * 2 * 2,) and s["filter_started"].shape == (6,), s["filter_state"].shape
 assert s["relative_start_m"].shape == (2, 2) and s.attrs["started"] == 1
-assert len(i["body_a"]) >= 3 and i.attrs["csv_rows"] >= 3 * 60, (len(i["body_a"]), i.attrs["csv_rows"])
+assert len(i["body_a"]) == 3 and i.attrs["csv_rows"] == before, (len(i["body_a"]), i.attrs["csv_rows"], before)
 assert "slip_m" in i and "peak_opening_m" in i and "first_touch_time_s" in i
 PY
 # (b) a run that ends at T/2, continued in its own folder to T (a longer duration).
@@ -131,7 +141,12 @@ same_results "first half then continued in place" "$tmp/full" "$tmp/half"
 sed 's/name = "top"/name = "head"/' "$tmp/drums.toml" > "$tmp/renamed.toml"
 out=$("$bin" run --restart "$tmp/full/state/t_0.300000s.h5" "$tmp/renamed.toml" --out "$tmp/x1" -q 2>&1); rc=$?
 [ $rc -eq 2 ] || fail "renamed sensor: exit $rc, expected 2 ($out)"
-echo "$out" | grep -q "state's sensors (top, lvdt) are not the scenario's.*head, lvdt" || fail "renamed sensor: $out"
+echo "$out" | grep -q "state's sensors (top (low-pass 40 Hz, order 4), lvdt (unfiltered)) are not the scenario's.*head (low-pass 40 Hz, order 4), lvdt" \
+  || fail "renamed sensor: $out"
+# ... and so is another filter on the same sensor (order 3 has as many sections as order 4).
+sed 's/order = 4/order = 3/' "$tmp/drums.toml" > "$tmp/refiltered.toml"
+out=$("$bin" run --restart "$tmp/full/state/t_0.300000s.h5" "$tmp/refiltered.toml" --out "$tmp/x2" -q 2>&1); rc=$?
+[ $rc -eq 2 ] && echo "$out" | grep -q "order 3" || fail "another filter order: exit $rc ($out)"
 
 [ $failures -eq 0 ] && echo "state files: sensors.csv, interfaces.csv and summary.json survive a restart byte for byte"
 exit $failures
