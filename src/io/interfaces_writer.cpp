@@ -6,8 +6,10 @@
 
 namespace blockdem {
 
-InterfacesWriter::InterfacesWriter(const std::filesystem::path& file, const InterfaceSelection& selection)
-    : monitor_(selection), out_(file) {
+InterfacesWriter::InterfacesWriter(const std::filesystem::path& file, const InterfaceSelection& selection,
+                                   OutputFile::Mode mode)
+    : monitor_(selection), out_(file, mode) {
+    if (mode == OutputFile::Mode::append) return;
     out_.append(
         "# interfaces.csv (docs/outputs.md): one row per (time, interface). normal n from body_a into body_b, tangent s = n "
         "turned clockwise (+x for body_b resting on body_a). normal_force_n [N] on body_b along n, compression > 0; "
@@ -19,13 +21,21 @@ InterfacesWriter::InterfacesWriter(const std::filesystem::path& file, const Inte
 
 void InterfacesWriter::record(const World& w) {
     std::string rows;
+    std::int64_t count = 0;
     for (const InterfaceState& s : monitor_.interfaces()) {
         if (monitor_.follows_all() && !s.touching) continue;
+        ++count;
         fmt::format_to(std::back_inserter(rows), "{:.9g},{},{},{:.9g},{:.9g},{},{:.9g},{:.9g}\n", w.time_s, w.bodies.name[s.body_a],
                        w.bodies.name[s.body_b], s.normal_force_n, s.shear_force_n, s.points, s.opening_m, s.slip_m);
     }
     out_.append(rows);
+    if (w.step_index % steps_per_output(w) == 0 || w.step_index == total_steps(w)) output_time_rows_ += count;
     if (++rows_ % 200 == 0) out_.flush();
+}
+
+void InterfacesWriter::restore(std::vector<InterfaceState> states, std::int64_t output_time_rows) {
+    monitor_.restore(std::move(states));
+    output_time_rows_ = output_time_rows;
 }
 
 void InterfacesWriter::finish(const World&) { out_.close(); }

@@ -1,6 +1,8 @@
 #include "io/run_restart.hpp"
 
+#include <algorithm>
 #include <fstream>
+#include <string>
 #include <system_error>
 #include <vector>
 
@@ -21,12 +23,26 @@ fs::path state_run_folder(const fs::path& state_file, const StateFileInfo& info)
 
 namespace {
 
-// Bytes of the header and the first `rows` rows, or -1 with *found rows when the file has fewer.
-std::int64_t bytes_of_rows(const fs::path& file, std::int64_t rows, std::int64_t* found) {
+std::ifstream open_to_continue(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw InputError({file.string(), "", 0, 0}, "cannot open it to continue the run (the state's run folder "
                                                          "must still hold it)");
-    const std::int64_t lines = rows + 1;
+    return in;
+}
+
+// The lines before the first row: the comment lines ('#') and the header.
+std::int64_t header_lines(const fs::path& file) {
+    std::ifstream in = open_to_continue(file);
+    std::int64_t lines = 1;
+    std::string line;
+    while (std::getline(in, line) && line.starts_with('#')) ++lines;
+    return lines;
+}
+
+// Bytes of the header and the first `rows` rows, or -1 with *found rows when the file has fewer.
+std::int64_t bytes_of_rows(const fs::path& file, std::int64_t header, std::int64_t rows, std::int64_t* found) {
+    std::ifstream in = open_to_continue(file);
+    const std::int64_t lines = header + rows;
     std::int64_t seen = 0, bytes = 0;
     std::vector<char> chunk(1 << 16);
     while (seen < lines && in) {
@@ -41,15 +57,13 @@ std::int64_t bytes_of_rows(const fs::path& file, std::int64_t rows, std::int64_t
         }
         bytes += got;
     }
-    *found = seen > 0 ? seen - 1 : 0;
+    *found = std::max<std::int64_t>(0, seen - header);
     return -1;
 }
 
-}  // namespace
-
-void keep_first_rows(const fs::path& from, const fs::path& to, std::int64_t rows) {
+void keep_bytes(const fs::path& from, const fs::path& to, std::int64_t header, std::int64_t rows) {
     std::int64_t found = 0;
-    const std::int64_t bytes = bytes_of_rows(from, rows, &found);
+    const std::int64_t bytes = bytes_of_rows(from, header, rows, &found);
     if (bytes < 0)
         throw InputError({from.string(), "", 0, 0},
                          fmt::format("has {} rows, the state file counts {} before its time: these are not the files "
@@ -70,6 +84,14 @@ void keep_first_rows(const fs::path& from, const fs::path& to, std::int64_t rows
         left -= in.gcount();
     }
     out.close();
+}
+
+}  // namespace
+
+void keep_first_rows(const fs::path& from, const fs::path& to, std::int64_t rows) { keep_bytes(from, to, 1, rows); }
+
+void keep_rows_after_comments(const fs::path& from, const fs::path& to, std::int64_t rows) {
+    keep_bytes(from, to, header_lines(from), rows);
 }
 
 }  // namespace blockdem

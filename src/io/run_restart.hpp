@@ -21,4 +21,9 @@ std::filesystem::path state_run_folder(const std::filesystem::path& state_file, 
 /// this state's run), OutputError when the copy cannot be written.
 void keep_first_rows(const std::filesystem::path& from, const std::filesystem::path& to, std::int64_t rows);
 
+/// keep_first_rows for a file whose header follows comment lines starting with '#' (sensors.csv,
+/// interfaces.csv). Rows are lines: interfaces.csv has one per (time, pair), and its count comes
+/// from the state's /interfaces group (io/measurement_state_parts.hpp), not from output_rows.
+void keep_rows_after_comments(const std::filesystem::path& from, const std::filesystem::path& to, std::int64_t rows);
+
 }  // namespace blockdem

@@ -11,6 +11,7 @@
 #include "io/history_writer.hpp"
 #include "io/input_error.hpp"
 #include "io/interfaces_writer.hpp"
+#include "io/measurement_state_parts.hpp"
 #include "io/output_file.hpp"
 #include "io/output_folder.hpp"
 #include "io/run_budget.hpp"
@@ -185,6 +186,16 @@ nlohmann::json run_scenario(const RunRequest& request) {
         keep_first_rows(start.run_folder / "history.csv", out_dir / "history.csv", rows);
         keep_first_rows(start.run_folder / "energy.csv", out_dir / "energy.csv", rows);
     }
+    // Sensors and interfaces (io/sensor_keys.hpp) go on likewise when the state has their groups
+    // (io/measurement_state_parts.hpp); else they start afresh at the state's time.
+    const bool sensors_go_on = start.restart && start.restart->has_group("sensors") && !loaded.measurements.sensors.empty();
+    const bool interfaces_go_on =
+        start.restart && start.restart->has_group("interfaces") && loaded.measurements.interfaces.any();
+    if (sensors_go_on)
+        keep_rows_after_comments(start.run_folder / "sensors.csv", out_dir / "sensors.csv", start.restart->info().output_rows);
+    if (interfaces_go_on)
+        keep_rows_after_comments(start.run_folder / "interfaces.csv", out_dir / "interfaces.csv",
+                                 interfaces_csv_rows(*start.restart));
     // The scenario as run (after --set), so that the folder documents itself.
     if (!in_place || !request.scenario.empty()) write_scenario_copy(loaded.root, scenario, out_dir);
     HistoryWriter history(out_dir / "history.csv", world, mode);
@@ -203,19 +214,28 @@ nlohmann::json run_scenario(const RunRequest& request) {
         vtk_state.emplace(*vtk, world);
         parts.push_back(&*vtk_state);
     }
+    // Sensors and interfaces: nothing at all when not configured.
+    std::optional<SensorsWriter> sensors;
+    std::optional<InterfacesWriter> interfaces;
+    std::optional<SensorsStatePart> sensors_state;
+    std::optional<InterfacesStatePart> interfaces_state;
+    auto mode_if = [](bool goes_on) { return goes_on ? OutputFile::Mode::append : OutputFile::Mode::replace; };
+    if (!loaded.measurements.sensors.empty()) {
+        options.recorders.push_back(
+            &sensors.emplace(out_dir / "sensors.csv", world, loaded.measurements.sensors, mode_if(sensors_go_on)));
+        parts.push_back(&sensors_state.emplace(*sensors));
+    }
+    if (loaded.measurements.interfaces.any()) {
+        options.recorders.push_back(
+            &interfaces.emplace(out_dir / "interfaces.csv", loaded.measurements.interfaces, mode_if(interfaces_go_on)));
+        parts.push_back(&interfaces_state.emplace(*interfaces, world));
+    }
     if (start.restart)
         for (StatePart* part : parts)
             // The monitor's group is required; a part the state lacks (VTK frames that the saved
             // run did not write) starts afresh.
             if (part == &monitor_state || start.restart->has_group(part->state_group())) start.restart->restore(*part);
     if (start.restart && !in_place && vtk) copy_vtk_frames(start.run_folder / "vtk", out_dir / "vtk", vtk->frames_written());
-    // Sensors and interfaces (io/sensor_keys.hpp): nothing at all when not configured.
-    std::optional<SensorsWriter> sensors;
-    std::optional<InterfacesWriter> interfaces;
-    if (!loaded.measurements.sensors.empty())
-        options.recorders.push_back(&sensors.emplace(out_dir / "sensors.csv", world, loaded.measurements.sensors));
-    if (loaded.measurements.interfaces.any())
-        options.recorders.push_back(&interfaces.emplace(out_dir / "interfaces.csv", loaded.measurements.interfaces));
     // What was written besides history.csv and summary.json; `blockdem run` reads "report".
     auto outputs = [&] {
         return nlohmann::json{{"energy", "energy.csv"}, {"bodies", "bodies.json"},
@@ -253,6 +273,8 @@ nlohmann::json run_scenario(const RunRequest& request) {
         // The rows the state counts must be on disk with it.
         history.flush();
         energy.flush();
+        if (sensors) sensors->flush();
+        if (interfaces) interfaces->flush();
         state_info.reason = reason == SaveReason::stopped ? "interrupted" : reason == SaveReason::every ? "save_state_every"
                                                                                                           : "save_state";
         state_info.output_rows = output_rows_before(w, w.step_index);

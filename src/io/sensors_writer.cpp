@@ -32,8 +32,10 @@ std::string sensors_csv_header(const World& w, const SensorBank& bank) {
     return text;
 }
 
-SensorsWriter::SensorsWriter(const std::filesystem::path& file, const World& w, std::vector<SensorDef> sensors)
-    : bank_(std::move(sensors), w.dt_s), out_(file) {
+SensorsWriter::SensorsWriter(const std::filesystem::path& file, const World& w, std::vector<SensorDef> sensors,
+                             OutputFile::Mode mode)
+    : bank_(std::move(sensors), w.dt_s), out_(file, mode) {
+    if (mode == OutputFile::Mode::append) return;
     out_.append(sensors_csv_header(w, bank_));
     out_.flush();
 }

@@ -15,11 +15,18 @@ namespace blockdem {
 
 class SensorsWriter : public Recorder {
 public:
-    SensorsWriter(const std::filesystem::path& file, const World& w, std::vector<SensorDef> sensors);
+    /// mode append: the file already holds the header and the rows before a restart (io/run_restart.hpp).
+    SensorsWriter(const std::filesystem::path& file, const World& w, std::vector<SensorDef> sensors,
+                  OutputFile::Mode mode = OutputFile::Mode::replace);
     /// Every step, before record(): feeds the filters.
     void observe(const World& w) { bank_.observe(w); }
     void record(const World& w) override;
     void finish(const World& w) override;
+    /// Writes the buffered rows (before a state file that counts them).
+    void flush() { out_.flush(); }
+    /// The sensors and their filters (a state file saves and restores them).
+    SensorBank& bank() { return bank_; }
+    const SensorBank& bank() const { return bank_; }
 
 private:
     SensorBank bank_;

@@ -103,4 +103,10 @@ double ButterworthChannel::filter(double x) {
     return v;
 }
 
+void ButterworthChannel::restore(const std::vector<double>& state, bool started) {
+    if (state.size() != state_.size()) throw std::invalid_argument("the saved filter state has another number of sections");
+    state_ = state;
+    started_ = started;
+}
+
 }  // namespace blockdem

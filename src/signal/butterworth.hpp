@@ -50,6 +50,11 @@ public:
     /// constant input equal to it, so a channel that starts away from zero (a position) starts
     /// without a transient.
     double filter(double x);
+    /// The running state (two per section) and whether the first sample came, for a state file.
+    const std::vector<double>& state() const { return state_; }
+    bool started() const { return started_; }
+    /// Continues from a saved state(); its size must be state()'s (std::invalid_argument).
+    void restore(const std::vector<double>& state, bool started);
 
 private:
     std::vector<SecondOrderSection> sections_;

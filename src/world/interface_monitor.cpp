@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "world/sensor.hpp"
 
@@ -105,6 +106,18 @@ void InterfaceMonitor::observe(const World& w) {
         s.opening_m = interface_opening_m(b, s.body_a, s.body_b, n);
         s.peak_opening_m = std::max(s.peak_opening_m, s.opening_m);
     }
+}
+
+void InterfaceMonitor::restore(std::vector<InterfaceState> states) {
+    if (!all_) {
+        bool same = states.size() == states_.size();
+        for (std::size_t k = 0; same && k < states.size(); ++k)
+            same = states[k].body_a == states_[k].body_a && states[k].body_b == states_[k].body_b;
+        if (!same) throw std::invalid_argument("the saved interfaces are not the pairs named in [output] interfaces");
+    }
+    states_ = std::move(states);
+    index_.clear();
+    for (std::size_t k = 0; k < states_.size(); ++k) index_.emplace(pair_key(states_[k].body_a, states_[k].body_b), k);
 }
 
 }  // namespace blockdem

@@ -63,6 +63,9 @@ public:
     const std::vector<InterfaceState>& interfaces() const { return states_; }
     /// Whether every touching pair is followed (discovered as they touch).
     bool follows_all() const { return all_; }
+    /// Continues from saved interfaces() (a state file); named pairs must be this monitor's,
+    /// in order (std::invalid_argument otherwise).
+    void restore(std::vector<InterfaceState> states);
 
 private:
     std::size_t find_or_add(const World& w, const PairContact& pair);

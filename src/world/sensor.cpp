@@ -1,5 +1,7 @@
 #include "world/sensor.hpp"
 
+#include <stdexcept>
+
 namespace blockdem {
 
 PointKinematics point_kinematics(const Bodies& b, std::uint32_t i, Vec2 r0_m) {
@@ -69,6 +71,35 @@ void SensorBank::observe(const World& w) {
         const std::int64_t f = filter_of_channel_[c];
         values_[c] = f < 0 ? raw_[c] : filters_[static_cast<std::size_t>(f)].filter(raw_[c]);
     }
+}
+
+SensorBankState SensorBank::state() const {
+    SensorBankState s;
+    for (const ButterworthChannel& f : filters_) {
+        s.filter_state.insert(s.filter_state.end(), f.state().begin(), f.state().end());
+        s.filter_started.push_back(f.started() ? 1 : 0);
+    }
+    s.relative_start_m = relative_start_m_;
+    s.started = started_;
+    return s;
+}
+
+void SensorBank::restore(const SensorBankState& s) {
+    std::size_t values = 0;
+    for (const ButterworthChannel& f : filters_) values += f.state().size();
+    if (s.filter_state.size() != values || s.filter_started.size() != filters_.size() ||
+        s.relative_start_m.size() != relative_start_m_.size())
+        throw std::invalid_argument("the saved sensor state is for other sensors or filters");
+    std::size_t at = 0;
+    for (std::size_t i = 0; i < filters_.size(); ++i) {
+        const std::size_t n = filters_[i].state().size();
+        filters_[i].restore(std::vector<double>(s.filter_state.begin() + static_cast<std::ptrdiff_t>(at),
+                                                s.filter_state.begin() + static_cast<std::ptrdiff_t>(at + n)),
+                            s.filter_started[i] != 0);
+        at += n;
+    }
+    relative_start_m_ = s.relative_start_m;
+    started_ = s.started;
 }
 
 }  // namespace blockdem

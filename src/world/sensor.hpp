@@ -58,6 +58,15 @@ std::size_t sensor_channel_count(SensorKind kind);
 /// Column suffixes and their units, in channel order.
 const std::vector<std::pair<const char*, const char*>>& sensor_columns(SensorKind kind);
 
+/// What a SensorBank carries from one step to the next (a state file saves it): every filtered
+/// channel's running state, and each relative sensor's reading at the start.
+struct SensorBankState {
+    std::vector<double> filter_state;         ///< the filters' states, filter by filter (two per section)
+    std::vector<std::uint8_t> filter_started; ///< per filter: 1 once it has had its first sample
+    std::vector<Vec2> relative_start_m;       ///< [m] per sensor: x1(0) - x2(0) (0 for point sensors)
+    bool started = false;                     ///< the first step has been observed
+};
+
 /// Every sensor of a run, updated at every step; values() holds the latest filtered channels.
 class SensorBank {
 public:
@@ -70,6 +79,10 @@ public:
     const std::vector<double>& values() const { return values_; }
     /// The filter of sensor s (nullopt when unfiltered).
     const std::optional<ButterworthDesign>& design(std::size_t s) const { return designs_[s]; }
+    SensorBankState state() const;
+    /// Continues from a saved state() of a bank with the same sensors; std::invalid_argument
+    /// when its sizes are not this bank's.
+    void restore(const SensorBankState& state);
 
 private:
     std::vector<SensorDef> sensors_;
