@@ -16,6 +16,7 @@ nlohmann::json bodies_json(const World& w) {
         list.push_back({{"id", i},
                         {"name", b.name[i]},
                         {"kind", to_string(b.kind[i])},
+                        {"assembly", b.assembly[i]},
                         {"material", w.contact.materials[b.material[i]]},
                         {"recorded", b.record[i] != 0},
                         {"initial_centroid_m", {b.initial_position_m[i].x, b.initial_position_m[i].y}},

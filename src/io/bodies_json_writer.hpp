@@ -1,6 +1,7 @@
 #pragma once
 // bodies.json: what the figures and the report need to draw the bodies at any output time
-// from history.csv alone (no VTK needed): per body its id, name, kind, material, whether it is
+// from history.csv alone (no VTK needed): per body its id, name, kind, assembly ("" for
+// [[bodies]]; a drawn block's layer), material, whether it is
 // in history.csv, its centroid at t = 0 and its corners relative to the centroid at rotation
 // 0 [m]. A corner at time t is then x(t) + R(rot(t)) * corner, with x and rot from history.csv.
 #include <filesystem>

@@ -37,7 +37,10 @@ namespace fs = std::filesystem;
 // motions, the initial state), which are relative to the original scenario's folder: make them
 // absolute.
 void make_file_keys_absolute(toml::table& root, const fs::path& scenario_dir) {
-    for (const char* key : {"table_motion.horizontal.file", "table_motion.vertical.file", "simulation.initial_state"}) {
+    std::vector<std::string> keys = {"table_motion.horizontal.file", "table_motion.vertical.file", "simulation.initial_state"};
+    if (const toml::array* drawings = root["geometry"].as_array())  // [[geometry]] file (io/geometry_keys.hpp)
+        for (std::size_t i = 0; i < drawings->size(); ++i) keys.push_back(fmt::format("geometry[{}].file", i));
+    for (const std::string& key : keys) {
         toml::node* file = root.at_path(key).node();
         if (!file || !file->is_string()) continue;
         const fs::path path = *file->value<std::string>();

@@ -10,6 +10,7 @@
 
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
+#include "io/geometry_keys.hpp"
 #include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
@@ -405,7 +406,8 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     Model model;
     model.settings = read_settings(top.table("simulation"));
     const std::vector<TableReader> body_tables = top.table_array("bodies");
-    if (body_tables.empty() && !top.has("assemblies")) top.fail("", "the scenario has no [[bodies]] or [[assemblies]]");
+    if (body_tables.empty() && !top.has("assemblies") && !top.has("geometry"))
+        top.fail("", "the scenario has no [[bodies]], [[assemblies]] or [[geometry]]");
     std::set<std::string> names;
     for (const TableReader& bt : body_tables) {
         model.bodies.push_back(read_body(bt));
@@ -413,6 +415,7 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
             bt.fail("name", fmt::format("two bodies are named '{}'", model.bodies.back().name));
     }
     read_assemblies(top, model);  // generated blocks and [settling] (io/assembly_keys.hpp)
+    read_geometry(top, model, scenario_dir);  // drawn blocks (io/geometry_keys.hpp)
     check_domain_contains_bodies(top.table("simulation"), model);
     if (auto outcomes = top.optional_table("outcomes")) model.settings.outcomes = read_outcome_thresholds(*outcomes);
     model.contact = read_contact(top.table("contact"), model.bodies);

@@ -1,0 +1,204 @@
+#include "io/dxf_reader.hpp"
+
+#include <charconv>
+#include <sstream>
+#include <string_view>
+
+#include <dl_creationadapter.h>
+#include <dl_dxf.h>
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+
+namespace blockdem {
+namespace {
+
+// DXF group-code flags of a POLYLINE / LWPOLYLINE (group 70).
+constexpr int polyline_closed = 1;
+constexpr int polyline_3d_or_mesh = 8 | 16 | 64;  // 3-D polyline, polygon mesh, polyface mesh
+
+std::string_view trimmed(std::string_view s) {
+    const auto begin = s.find_first_not_of(" \t\r");
+    if (begin == std::string_view::npos) return {};
+    return s.substr(begin, s.find_last_not_of(" \t\r") - begin + 1);
+}
+
+// Why text is not an ASCII DXF drawing, or "" when it looks like one: its first group (after
+// 999 comments) opens a SECTION, every group code is a number and the last group is 0 EOF.
+// dxflib itself reads anything without complaint, so a wrong file would give an empty drawing.
+std::string structure_problem(const std::string& text) {
+    if (text.rfind("AutoCAD Binary DXF", 0) == 0)
+        return "is a binary DXF, which blockdem does not read: save the drawing as an ASCII DXF";
+    std::istringstream in(text);
+    std::string code_line, value_line;
+    int line = 0;
+    bool first = true;
+    std::string last_code_text, last_value_text;
+    while (std::getline(in, code_line)) {
+        ++line;
+        const std::string_view code = trimmed(code_line);
+        if (code.empty() && in.peek() == EOF) break;  // a final empty line
+        int number = 0;
+        const auto [end, error] = std::from_chars(code.data(), code.data() + code.size(), number);
+        if (code.empty() || error != std::errc{} || end != code.data() + code.size() || number < 0 || number > 1071)
+            return first ? "is not a DXF drawing (a DXF file starts with the group '0' 'SECTION')"
+                         : fmt::format("is not a valid DXF drawing: line {} should hold a group code (a whole number "
+                                       "from 0 to 1071), found '{}'",
+                                       line, std::string(code.substr(0, 40)));
+        if (!std::getline(in, value_line)) return fmt::format("is not a valid DXF drawing: the group code on line {} has no value", line);
+        ++line;
+        const std::string_view value = trimmed(value_line);
+        if (first && number != 999) {
+            if (number != 0 || value != "SECTION") return "is not a DXF drawing (a DXF file starts with the group '0' 'SECTION')";
+            first = false;
+        }
+        last_code_text = std::string(code);
+        last_value_text = std::string(value);
+    }
+    if (first) return "is not a DXF drawing (it holds no DXF groups)";
+    if (last_code_text != "0" || last_value_text != "EOF")
+        return "ends before its '0' 'EOF' group: the file is truncated or not a complete DXF drawing";
+    return "";
+}
+
+// $INSUNITS codes (the DXF reference, header variables) blockdem can name.
+std::optional<std::string> unit_name(int insunits) {
+    switch (insunits) {
+        case 1: return "in";
+        case 2: return "ft";
+        case 4: return "mm";
+        case 5: return "cm";
+        case 6: return "m";
+        case 7: return "km";
+        case 10: return "yd";
+        default: return std::nullopt;  // 0: unitless, others: rare units
+    }
+}
+
+// dxflib calls one function per entity; this collects them in file order. A polyline's vertices
+// come after its addPolyline (and, for an old-style POLYLINE, end with SEQEND), so a polyline
+// is complete when the next entity, block or section begins.
+class Collector : public DL_CreationAdapter {
+public:
+    Drawing drawing;
+
+    void addBlock(const DL_BlockData&) override { finish(); in_block_definition_ = true; }
+    void endBlock() override { finish(); in_block_definition_ = false; }
+    void endSection() override { finish(); }
+    void endSequence() override { finish(); }
+
+    void setVariableInt(const std::string& key, int value, int) override {
+        if (key == "$INSUNITS") drawing.declared_units = unit_name(value);
+    }
+
+    void addPolyline(const DL_PolylineData& data) override {
+        finish();
+        if (ignored()) return;
+        ++polylines_;
+        current_ = start("polyline");
+        current_->closed = (data.flags & polyline_closed) != 0;
+        if (data.flags & polyline_3d_or_mesh)
+            current_->problem = "is a 3-D polyline or a mesh, not a 2-D outline: draw the block as a closed 2-D polyline";
+        const double* direction = getExtrusion()->getDirection();
+        mirrored_ = direction[2] < 0.0;
+        if (direction[0] != 0.0 || direction[1] != 0.0)
+            current_->problem = "is drawn in a plane other than the XY plane (its extrusion direction is not +Z or -Z)";
+    }
+
+    void addVertex(const DL_VertexData& v) override {
+        if (!current_) return;
+        // An entity whose extrusion direction is -Z (mirrored in CAD) has x flipped in its own
+        // coordinate system (the DXF arbitrary-axis rule).
+        current_->vertices.push_back({mirrored_ ? -v.x : v.x, v.y});
+        if (v.bulge != 0.0 && current_->problem.empty())
+            current_->problem = fmt::format("has an arc segment (bulge {:g}) after its vertex {} at ({:g}, {:g}): "
+                                            "blocks have straight edges; replace the arc by straight segments in the drawing",
+                                            v.bulge, current_->vertices.size() - 1, v.x, v.y);
+    }
+
+    void addLine(const DL_LineData&) override {
+        not_a_block("line", "a line: a block is one closed polyline (join the lines into a closed polyline)");
+    }
+    void addArc(const DL_ArcData&) override { not_a_block("arc", "an arc: blocks have straight edges"); }
+    void addCircle(const DL_CircleData&) override {
+        not_a_block("circle", "a circle: blocks are polygons; draw it as a closed polyline of straight segments");
+    }
+    void addEllipse(const DL_EllipseData&) override {
+        not_a_block("ellipse", "an ellipse: blocks are polygons; draw it as a closed polyline of straight segments");
+    }
+    void addSpline(const DL_SplineData&) override {
+        not_a_block("spline", "a spline: blocks have straight edges; convert it to a closed polyline of straight segments");
+    }
+    void addInsert(const DL_InsertData& data) override {
+        not_a_block("block reference", fmt::format("a reference to the block definition '{}': explode it so that its "
+                                                   "polylines are in model space",
+                                                   data.name));
+    }
+    void addSolid(const DL_SolidData&) override { not_a_block("solid", "a 2-D solid: draw the block as a closed polyline"); }
+    void addTrace(const DL_TraceData&) override { not_a_block("trace", "a trace: draw the block as a closed polyline"); }
+    void add3dFace(const DL_3dFaceData&) override { not_a_block("3-D face", "a 3-D face: draw the block as a closed polyline"); }
+    void addHatch(const DL_HatchData&) override {
+        not_a_block("hatch", "a hatch: blocks are closed polylines (put hatches on a layer without blocks)");
+    }
+
+    void finish() {
+        if (!current_) return;
+        std::vector<Vec2>& v = current_->vertices;
+        // A last vertex on the first closes the outline whatever the flag says.
+        if (v.size() > 1 && v.front() == v.back()) {
+            v.pop_back();
+            current_->closed = true;
+        }
+        if (!current_->closed && current_->problem.empty())
+            current_->problem = "is open: a block is a closed polyline (close it in the drawing)";
+        drawing.entities.push_back(std::move(*current_));
+        current_.reset();
+    }
+
+private:
+    bool ignored() { return in_block_definition_ || getAttributes().isInPaperSpace(); }
+
+    DrawingEntity start(const std::string& type) {
+        DrawingEntity e;
+        e.layer = getAttributes().getLayer();
+        e.type = type;
+        const int handle = getAttributes().getHandle();
+        if (handle >= 0) {
+            e.id = fmt::format("(handle {:X})", handle);
+            e.name_suffix = fmt::format("{:X}", handle);
+        } else {
+            const int number = type == "polyline" ? polylines_ : ++others_;
+            e.id = fmt::format("#{}", number);
+            e.name_suffix = fmt::format("{}", number);
+        }
+        return e;
+    }
+
+    void not_a_block(const std::string& type, const std::string& problem) {
+        finish();
+        if (ignored()) return;
+        DrawingEntity e = start(type);
+        e.problem = "is " + problem;
+        drawing.entities.push_back(std::move(e));
+    }
+
+    std::optional<DrawingEntity> current_;
+    bool mirrored_ = false;
+    bool in_block_definition_ = false;
+    int polylines_ = 0;   ///< polylines so far, to number those without a handle
+    int others_ = 0;
+};
+
+}  // namespace
+
+Drawing read_dxf(const std::string& text, const std::string& file) {
+    if (const std::string problem = structure_problem(text); !problem.empty()) throw InputError({file, "", 0, 0}, problem);
+    Collector collector;
+    DL_Dxf dxf;
+    std::istringstream in(text);
+    if (!dxf.in(in, &collector)) throw InputError({file, "", 0, 0}, "dxflib could not read the drawing");
+    collector.finish();
+    return std::move(collector.drawing);
+}
+
+}  // namespace blockdem
