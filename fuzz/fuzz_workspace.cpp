@@ -26,7 +26,7 @@ Workspace make_workspace() {
     const fs::path repo = w.root / "repo";
     w.input_dir = repo / "examples" / "records";
     fs::create_directories(w.input_dir);
-    for (const char* folder : {"paper", "assemblies"}) link_if_present(source / "examples" / folder, repo / "examples" / folder);
+    for (const char* folder : {"paper", "assemblies", "dxf"}) link_if_present(source / "examples" / folder, repo / "examples" / folder);
     link_if_present(source / "tests", repo / "tests");
     link_if_present(source.parent_path() / "shared", w.root / "shared");
     return w;

@@ -14,7 +14,8 @@ namespace blockdem::fuzz {
 ///   <root>/repo/examples/<other>    links to the source tree's example folders
 ///   <root>/repo/tests               link to the source tree's tests/ (tests/data/records)
 ///   <root>/shared                   link to ../shared beside the source tree, when present
-/// so "../../tests/data/records/x.AT2" and the examples' "../../../shared/data/..." resolve.
+/// so "../../tests/data/records/x.AT2", "../dxf/stone_wall.dxf" and the examples'
+/// "../../../shared/data/..." resolve.
 struct Workspace {
     std::filesystem::path root;
     std::filesystem::path input_dir;

@@ -76,7 +76,7 @@ make_dict() {
     fuzz_scenario|fuzz_overrides)
       cat "$source_dir/fuzz/dicts/${1#fuzz_}.dict"
       grep -oh '`[a-z_]\{2,\}`' "$source_dir"/docs/scenario.md "$source_dir"/docs/records.md \
-        "$source_dir"/docs/assemblies.md "$source_dir"/docs/outputs-visual.md 2>/dev/null | tr -d '`' | sort -u |
+        "$source_dir"/docs/assemblies.md "$source_dir"/docs/outputs-visual.md "$source_dir"/docs/drawings.md 2>/dev/null | tr -d '`' | sort -u |
         sed 's/.*/"&"/' ;;
     fuzz_time_series_csv) cat "$source_dir/fuzz/dicts/csv.dict" ;;
     *) cat "$source_dir/fuzz/dicts/records.dict" ;;
