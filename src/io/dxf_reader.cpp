@@ -23,6 +23,21 @@ std::string_view trimmed(std::string_view s) {
     return s.substr(begin, s.find_last_not_of(" \t\r") - begin + 1);
 }
 
+// dxflib sizes its arrays by the counts an entity declares (an LWPOLYLINE's vertices, a spline's
+// knots and points, a hatch's loops and edges, a leader's vertices): a count larger than the file
+// could hold is refused here, so that a corrupt count is a message, not an allocation failure.
+std::string count_problem(const std::string& entity, int code, std::string_view value, std::size_t file_bytes) {
+    const bool count = (entity == "LWPOLYLINE" && code == 90) || (entity == "SPLINE" && code >= 72 && code <= 74) ||
+                       (entity == "HATCH" && code >= 91 && code <= 93) || (entity == "LEADER" && code == 76);
+    if (!count) return "";
+    long long n = 0;
+    const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), n);
+    if (error == std::errc{} && end == value.data() + value.size() && n >= 0 && static_cast<std::size_t>(n) <= file_bytes / 4)
+        return "";
+    return fmt::format("the {} declares a count (group {}) of '{}', which is not a count this file could hold", entity, code,
+                       std::string(value.substr(0, 40)));
+}
+
 // Why text is not an ASCII DXF drawing, or "" when it looks like one: its first group (after
 // 999 comments) opens a SECTION, every group code is a number and the last group is 0 EOF.
 // dxflib itself reads anything without complaint, so a wrong file would give an empty drawing.
@@ -33,6 +48,7 @@ std::string structure_problem(const std::string& text) {
     std::string code_line, value_line;
     int line = 0;
     bool first = true;
+    std::string entity;   // the type of the entity being read (the value of the last group 0)
     std::string last_code_text, last_value_text;
     while (std::getline(in, code_line)) {
         ++line;
@@ -52,6 +68,9 @@ std::string structure_problem(const std::string& text) {
             if (number != 0 || value != "SECTION") return "is not a DXF drawing (a DXF file starts with the group '0' 'SECTION')";
             first = false;
         }
+        if (number == 0) entity = std::string(value);
+        if (const std::string problem = count_problem(entity, number, value, text.size()); !problem.empty())
+            return fmt::format("line {}: {}", line, problem);
         last_code_text = std::string(code);
         last_value_text = std::string(value);
     }

@@ -162,6 +162,8 @@ TEST(DxfReader, NotADrawingIsRefusedWithTheFile) {
     const std::string whole = dxf(lwpolyline("1", "L", square, true));
     expect_contains(read_error(whole.substr(0, whole.size() / 2)), "truncated");
     expect_contains(read_error(group(0, "SECTION") + "not a code\nvalue\n"), "line 3 should hold a group code");
+    expect_contains(read_error(dxf(group(0, "LWPOLYLINE") + group(8, "L") + group(90, "4000000000"))),
+                    "the LWPOLYLINE declares a count (group 90) of '4000000000'");
     EXPECT_EQ(read_error(whole), "");
     // With CRLF line ends, as Windows CAD programs write them.
     std::string crlf;
