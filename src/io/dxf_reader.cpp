@@ -96,14 +96,14 @@ std::optional<std::string> unit_name(int insunits) {
 
 // dxflib calls one function per entity; this collects them in file order. A polyline's vertices
 // come after its addPolyline (and, for an old-style POLYLINE, end with SEQEND), so a polyline
-// is complete when the next entity, block or section begins.
+// is complete when the next entity or block begins, or the file ends. (Not at endSection:
+// dxflib calls it between a POLYLINE and its VERTEX entities too.)
 class Collector : public DL_CreationAdapter {
 public:
     Drawing drawing;
 
     void addBlock(const DL_BlockData&) override { finish(); in_block_definition_ = true; }
     void endBlock() override { finish(); in_block_definition_ = false; }
-    void endSection() override { finish(); }
     void endSequence() override { finish(); }
 
     void setVariableInt(const std::string& key, int value, int) override {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/polygon.hpp"
 #include "io/drawn_outline.hpp"
 #include "io/dxf_reader.hpp"
 #include "io/dxf_writer.hpp"
@@ -209,9 +210,11 @@ TEST(DrawnOutline, RefusesWhatCannotBeABlock) {
     EXPECT_FALSE(drawn_outline_problem({{0, 0}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}, "m"));  // concave: passes on
     expect_contains(*drawn_outline_problem({{0, 0}, {1, 0}}, "m"), "has 2 distinct corners");
     expect_contains(*drawn_outline_problem({{0, 0}, {1, 0}, {2, 0}}, "m"), "has no area");
-    expect_contains(*drawn_outline_problem({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, "mm"),
-                    "crosses itself: its edge from corner 0 (0, 0) mm meets its edge from corner 2 (1, 0) mm");
-    expect_contains(*drawn_outline_problem({{0, 0}, {2, 0}, {1, 0}, {1, 1}}, "m"), "folds back on itself at its corner 2");
+    // A bow tie with unequal lobes (a symmetric one has no net area, and is refused for that).
+    expect_contains(*drawn_outline_problem({{0, 0}, {2, 2}, {2, 0}, {0, 3}}, "mm"),
+                    "crosses itself: its edge from corner 0 (0, 0) mm meets its edge from corner 2 (2, 0) mm");
+    expect_contains(*drawn_outline_problem({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, "m"), "has no area");
+    expect_contains(*drawn_outline_problem({{0, 0}, {2, 0}, {1, 0}, {1, 1}}, "m"), "folds back on itself at its corner 1 (2, 0) m");
     // A figure eight touching itself at one corner.
     EXPECT_TRUE(drawn_outline_problem({{0, 0}, {1, 1}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}, "m"));
     EXPECT_EQ(without_repeated_vertices({{0, 0}, {0, 0}, {1, 0}, {1, 1}, {0, 0}}).size(), 3u);
@@ -305,7 +308,7 @@ TEST(GeometryKeys, BadEntityOnABlockLayerNamesFileEntityAndLayer) {
         {lwpolyline("41", "BLOCKS", {{0, 300}, {100, 300, 1.0}, {100, 400}}, true), "polyline (handle 41) on layer 'BLOCKS' has an arc segment"},
         {group(0, "CIRCLE") + group(5, "42") + group(8, "BLOCKS") + group(10, "0") + group(20, "900") + group(40, "50"),
          "circle (handle 42) on layer 'BLOCKS' is a circle"},
-        {lwpolyline("43", "BLOCKS", {{0, 300}, {100, 400}, {100, 300}, {0, 400}}, true), "polyline (handle 43) on layer 'BLOCKS' crosses itself"},
+        {lwpolyline("43", "BLOCKS", {{0, 300}, {200, 500}, {200, 300}, {0, 600}}, true), "polyline (handle 43) on layer 'BLOCKS' crosses itself"},
         {lwpolyline("44", "BLOCKS", {{0, 300}, {100, 300}, {200, 300}}, true), "polyline (handle 44) on layer 'BLOCKS' has no area"},
         {lwpolyline("45", "BLOCKS", {{0, 300}, {100, 300}}, true), "polyline (handle 45) on layer 'BLOCKS' has 2 distinct corners"},
     };
@@ -376,7 +379,7 @@ TEST(DxfWriter, RoundTripKeepsEveryCornerWithin1nm) {
     blocks.push_back({"GROUND", {{-3.0, -0.5}, {3.0, -0.5}, {3.0, 0.0}, {-3.0, 0.0}}});
     for (int k = 0; k < 5; ++k) {
         const double x = -2.0 + 0.8 * k + std::sqrt(2.0) * 1e-3, h = 0.25 + std::sqrt(3.0) * 1e-4 * k;
-        const double a = 0.01 * std::sin(k + 1.0);
+        const double a = 0.01 * (1.5 + std::sin(k + 1.0));  // > 0: clear of the ground
         blocks.push_back({"BLOCKS", {{x, 0.0}, {x + 0.7, a}, {x + 0.7 + a, h}, {x + a / 3.0, h + a}}});
     }
     const fs::path file = fs::temp_directory_path() / "blockdem-drawings-roundtrip.dxf";
