@@ -76,9 +76,13 @@ std::vector<double> data_array(const std::string& text, const std::string& name,
     return values;
 }
 
+// A body as bodies.json gives it: its name, its layer, its centroid at t = 0 and its corners
+// about the centroid at rotation 0.
 struct BodyLabel {
     std::string name;
     std::string layer;
+    Vec2 initial_centroid_m;          ///< [m]
+    std::vector<Vec2> corners_m;      ///< [m]
 };
 
 std::vector<BodyLabel> body_labels(const fs::path& run_dir) {
@@ -90,7 +94,11 @@ std::vector<BodyLabel> body_labels(const fs::path& run_dir) {
         const nlohmann::json j = nlohmann::json::parse(file_text(file));
         for (const nlohmann::json& b : j.at("bodies")) {
             const std::string assembly = b.value("assembly", "");
-            labels.push_back({b.at("name").get<std::string>(), assembly.empty() ? b.at("kind").get<std::string>() : assembly});
+            BodyLabel label{b.at("name").get<std::string>(), assembly.empty() ? b.at("kind").get<std::string>() : assembly,
+                            {b.at("initial_centroid_m").at(0).get<double>(), b.at("initial_centroid_m").at(1).get<double>()},
+                            {}};
+            for (const nlohmann::json& c : b.at("corners_m")) label.corners_m.push_back({c.at(0).get<double>(), c.at(1).get<double>()});
+            labels.push_back(std::move(label));
         }
     } catch (const nlohmann::json::exception& e) {
         throw InputError({file.string(), "", 0, 0}, fmt::format("not a bodies.json written by blockdem: {}", e.what()));
@@ -98,38 +106,48 @@ std::vector<BodyLabel> body_labels(const fs::path& run_dir) {
     return labels;
 }
 
-std::vector<std::vector<Vec2>> vtk_corners(const RunFrame& frame, std::size_t bodies) {
+// Corners at t from the body's position and rotation at t (a body's corners as the writers keep
+// them are those of the last contact detection, a step behind).
+std::vector<Vec2> corners_at(const std::vector<Vec2>& local_m, Vec2 position_m, double rotation_rad) {
+    const Rotation r = Rotation::from_angle(rotation_rad);
+    std::vector<Vec2> out;
+    for (const Vec2& c : local_m) out.push_back(position_m + r.apply(c));
+    return out;
+}
+
+// A VTK frame's cell data: each body's displacement since t = 0 and rotation, to 9 digits.
+std::vector<std::vector<Vec2>> vtk_corners(const RunFrame& frame, const std::vector<BodyLabel>& labels) {
     const std::string text = file_text(frame.file);
-    const std::vector<double> xyz = data_array(text, "position_m", frame.file);
-    const std::vector<double> connectivity = data_array(text, "connectivity", frame.file);
-    const std::vector<double> offsets = data_array(text, "offsets", frame.file);
-    if (offsets.size() != bodies)
+    const std::vector<double> displacement = data_array(text, "displacement_m", frame.file);
+    const std::vector<double> rotation = data_array(text, "rotation_rad", frame.file);
+    if (rotation.size() != labels.size() || displacement.size() != 3 * labels.size())
         throw InputError({frame.file.string(), "", 0, 0},
-                         fmt::format("the frame has {} bodies, bodies.json {}", offsets.size(), bodies));
-    std::vector<std::vector<Vec2>> corners(bodies);
-    std::size_t k = 0;
-    for (std::size_t i = 0; i < bodies; ++i)
-        for (; k < static_cast<std::size_t>(offsets[i]) && k < connectivity.size(); ++k) {
-            const auto point = static_cast<std::size_t>(connectivity[k]);
-            if (3 * point + 1 >= xyz.size()) throw InputError({frame.file.string(), "", 0, 0}, "a corner index is out of range");
-            corners[i].push_back({xyz[3 * point], xyz[3 * point + 1]});
-        }
+                         fmt::format("the frame has {} bodies, bodies.json {}", rotation.size(), labels.size()));
+    std::vector<std::vector<Vec2>> corners;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        const Vec2 position = labels[i].initial_centroid_m + Vec2{displacement[3 * i], displacement[3 * i + 1]};
+        corners.push_back(corners_at(labels[i].corners_m, position, rotation[i]));
+    }
     return corners;
 }
 
+// A state file's positions and rotations (exact) with its own corners about the centroid.
 std::vector<std::vector<Vec2>> state_corners(const RunFrame& frame, const std::vector<BodyLabel>& labels) {
     const StateFile state(frame.file);
     const WorldState& w = state.world();
     if (w.name.size() != labels.size())
         throw InputError({frame.file.string(), "", 0, 0},
                          fmt::format("the state file has {} bodies, bodies.json {}", w.name.size(), labels.size()));
-    std::vector<std::vector<Vec2>> corners(labels.size());
+    std::vector<std::vector<Vec2>> corners;
     std::size_t k = 0;
     for (std::size_t i = 0; i < labels.size(); ++i) {
         if (w.name[i] != labels[i].name)
             throw InputError({frame.file.string(), "", 0, 0},
                              fmt::format("body {} is '{}' here but '{}' in bodies.json: not the same run", i, w.name[i], labels[i].name));
-        for (std::uint32_t c = 0; c < w.vertex_count[i]; ++c) corners[i].push_back(w.world_vertices_m[k++]);
+        const std::vector<Vec2> local(w.local_vertices_m.begin() + static_cast<std::ptrdiff_t>(k),
+                                      w.local_vertices_m.begin() + static_cast<std::ptrdiff_t>(k + w.vertex_count[i]));
+        k += w.vertex_count[i];
+        corners.push_back(corners_at(local, w.position_m[i], w.rotation_rad[i]));
     }
     return corners;
 }
@@ -163,7 +181,7 @@ const RunFrame& nearest_frame(const std::vector<RunFrame>& frames, std::optional
 std::vector<LayerPolygon> frame_blocks(const fs::path& run_dir, const RunFrame& frame) {
     const std::vector<BodyLabel> labels = body_labels(run_dir);
     const std::vector<std::vector<Vec2>> corners =
-        frame.state_file ? state_corners(frame, labels) : vtk_corners(frame, labels.size());
+        frame.state_file ? state_corners(frame, labels) : vtk_corners(frame, labels);
     std::vector<LayerPolygon> blocks;
     for (std::size_t i = 0; i < labels.size(); ++i) blocks.push_back({labels[i].layer, corners[i]});
     return blocks;

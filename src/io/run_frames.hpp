@@ -1,8 +1,9 @@
 #pragma once
 // The saved times of a finished run folder and the blocks at one of them, for
-// `blockdem export --dxf` (docs/drawings.md): the VTK frames (vtk/bodies.pvd, corners to 9
-// significant digits) and the state files (state/t_*.h5, corners exact). bodies.json gives each
-// body's kind and assembly, which name the layer it is exported on.
+// `blockdem export --dxf` (docs/drawings.md): the VTK frames (vtk/bodies.pvd: each body's
+// displacement and rotation to 9 significant digits) and the state files (state/t_*.h5: exact).
+// bodies.json gives each body's corners about its centroid, its centroid at t = 0, and its kind
+// and assembly, which name the layer it is exported on.
 #include <filesystem>
 #include <optional>
 #include <vector>
