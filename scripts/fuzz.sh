@@ -30,7 +30,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 all=(fuzz_scenario fuzz_overrides fuzz_time_series_csv fuzz_record_auto fuzz_record_peer_at2 fuzz_record_knet
-     fuzz_record_cosmos_v2 fuzz_record_jma_csv fuzz_record_plain)
+     fuzz_record_cosmos_v2 fuzz_record_jma_csv fuzz_record_plain fuzz_drawing)
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
 
 if [ "$build" = 1 ]; then
@@ -54,6 +54,7 @@ seed_files() {
   case "$1" in
     fuzz_scenario) find "$source_dir/examples" "$source_dir/tests/cli/data" "$source_dir/fuzz/seeds/scenario" -name '*.toml' ;;
     fuzz_overrides) find "$source_dir/fuzz/seeds/overrides" -type f ;;
+    fuzz_drawing) find "$source_dir/examples/dxf" "$source_dir/fuzz/seeds/drawing" \( -name '*.dxf' -o -name '*.txt' \) ;;
     fuzz_time_series_csv)
       find "$source_dir/fuzz/seeds/time_series_csv" -type f
       echo "$records/two_columns.csv"; echo "$records/values_only.txt" ;;
@@ -79,6 +80,7 @@ make_dict() {
         "$source_dir"/docs/assemblies.md "$source_dir"/docs/outputs-visual.md "$source_dir"/docs/drawings.md 2>/dev/null | tr -d '`' | sort -u |
         sed 's/.*/"&"/' ;;
     fuzz_time_series_csv) cat "$source_dir/fuzz/dicts/csv.dict" ;;
+    fuzz_drawing) cat "$source_dir/fuzz/dicts/drawing.dict" ;;
     *) cat "$source_dir/fuzz/dicts/records.dict" ;;
   esac >"$dict"
   echo "$dict"
