@@ -44,13 +44,13 @@ LayerSettings read_layer(TableReader t, const std::string& layer) {
     const std::string kind = t.choice("kind", {"dynamic", "fixed", "driven"}, "dynamic");
     s.kind = kind == "dynamic" ? BodyKind::dynamic : kind == "fixed" ? BodyKind::fixed : BodyKind::driven;
     s.density_kg_m3 = t.optional_positive("density");
-    if (s.kind == BodyKind::dynamic && !s.density_kg_m3)
-        t.fail("", fmt::format("the dynamic blocks of layer '{}' need 'density' [kg/m^3] (or kind = \"fixed\" or "
-                               "\"driven\", or skip = true)",
-                               layer));
     s.material = t.optional_string("material").value_or("default");
     s.thickness_m = t.optional_positive("thickness").value_or(1.0);
     s.record = t.boolean_or("record", false);
+    if (s.kind == BodyKind::dynamic && !s.density_kg_m3)
+        t.fail_missing("density", fmt::format(" [kg/m^3]: the dynamic blocks of layer '{}' need it (or kind = \"fixed\" or "
+                                              "\"driven\", or skip = true)",
+                                              layer));
     t.reject_unknown_keys();
     return s;
 }

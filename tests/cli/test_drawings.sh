@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Drawings in and out (docs/drawings.md), end to end: the DXF example (a wall of 13 stones on a
-# shaken slab) runs; `blockdem export --dxf` writes its blocks at a saved time, which read back
-# through [[geometry]] give the same corners (within 1e-9 m for an exact state file, within the
-# 9 significant digits of a VTK frame otherwise); a bad drawing is refused with exit status 2,
-# naming the file, the entity and its layer.
+# shaken slab) runs; `blockdem export --dxf` writes its blocks at a saved time (the last, the
+# nearest to --time, a state file or a VTK frame); the drawing at t = 0 read back through
+# [[geometry]] gives the run's corners within 1e-9 m; a state file and a VTK frame of the same
+# time give the same drawing within 1e-8 m; a run without saved times and a bad drawing are
+# refused with exit status 2, naming the folder, or the file, the entity and its layer.
 #   bash tests/cli/test_drawings.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
 blockdem=$1 source_dir=$2

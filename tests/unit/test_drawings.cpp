@@ -299,7 +299,9 @@ TEST(GeometryKeys, EveryLayerWithBlocksIsMappedOrSkipped) {
     expect_contains(scenario_error("skipkeys", base + "FRAME = { skip = true, kind = \"fixed\" }\n"),
                     "a skipped layer takes no other key");
     expect_contains(scenario_error("nodensity", testing::replace_once(base, "density = 2600.0, ", "") + "FRAME = { skip = true }\n"),
-                    "the dynamic blocks of layer 'BLOCKS' need 'density'");
+                    "missing required key 'geometry[0].layers.BLOCKS.density' [kg/m^3]: the dynamic blocks of layer 'BLOCKS' need it");
+    expect_contains(scenario_error("densitytypo", testing::replace_once(base, "density =", "densty =") + "FRAME = { skip = true }\n"),
+                    "key 'geometry[0].layers.BLOCKS.densty': unknown key (did you mean 'density'?)");
 }
 
 TEST(GeometryKeys, BadEntityOnABlockLayerNamesFileEntityAndLayer) {
