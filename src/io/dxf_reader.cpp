@@ -73,6 +73,7 @@ std::string structure_problem(const std::string& text) {
             return fmt::format("line {}: {}", line, problem);
         last_code_text = std::string(code);
         last_value_text = std::string(value);
+        if (number == 0 && value == "EOF") break;  // what follows (a DOS end-of-file mark) is not read
     }
     if (first) return "is not a DXF drawing (it holds no DXF groups)";
     if (last_code_text != "0" || last_value_text != "EOF")
@@ -210,7 +211,10 @@ private:
 
 }  // namespace
 
-Drawing read_dxf(const std::string& text, const std::string& file) {
+Drawing read_dxf(const std::string& file_text, const std::string& file) {
+    // A UTF-8 byte order mark, which some writers put first, is not part of the first group.
+    const std::string_view bom = "\xEF\xBB\xBF";
+    const std::string text = file_text.rfind(bom, 0) == 0 ? file_text.substr(bom.size()) : file_text;
     if (const std::string problem = structure_problem(text); !problem.empty()) throw InputError({file, "", 0, 0}, problem);
     Collector collector;
     DL_Dxf dxf;

@@ -170,6 +170,8 @@ TEST(DxfReader, NotADrawingIsRefusedWithTheFile) {
     std::string crlf;
     for (char c : whole) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
     EXPECT_EQ(read_dxf(crlf, "d.dxf").entities.size(), 1u);
+    // A byte order mark before, a DOS end-of-file mark after.
+    EXPECT_EQ(read_dxf("\xEF\xBB\xBF" + whole + "\x1a", "d.dxf").entities.size(), 1u);
 }
 
 // ---- the text format ------------------------------------------------------------------------
