@@ -107,8 +107,9 @@ std::vector<BodyDef> drawing_bodies(const Drawing& drawing, const std::string& f
             fail_entity(file, e, fmt::format("makes the block name '{}', which is not valid: use letters, digits, '_' or '-'",
                                              b.name));
         if (const auto [first, added] = named.emplace(b.name, &e); !added)
-            fail_entity(file, e, fmt::format("has the name of {} {} (line {}): every block needs its own name",
-                                             first->second->type, first->second->id, first->second->line));
+            fail_entity(file, e, fmt::format("has the name of {} {}{}: every block needs its own name", first->second->type,
+                                             first->second->id,
+                                             first->second->line > 0 ? fmt::format(" (line {})", first->second->line) : ""));
         b.kind = s.kind;
         b.material = s.material;
         b.density_kg_m3 = s.density_kg_m3.value_or(0.0);
