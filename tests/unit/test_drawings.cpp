@@ -1,6 +1,7 @@
 // Drawings in and out (docs/drawings.md): the DXF and text readers on drawings written here (as
 // DXF text, and with dxflib's writer), every refusal naming the file, the entity and its layer,
 // the [[geometry]] keys, and the round trip write_dxf -> [[geometry]].
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -400,7 +401,7 @@ TEST(DxfWriter, RoundTripKeepsEveryCornerWithin1nm) {
     }
     // 1e-9 m: the tolerance; the writer keeps 16 decimals, so the loss is far below it.
     EXPECT_LT(worst_m, 1e-9);
-    RecordProperty("worst_corner_error_m", std::to_string(worst_m));
+    RecordProperty("worst_corner_error_m", fmt::format("{:.3g}", worst_m));
 }
 
 TEST(DxfWriter, LayerNamesDxfAccepts) {
