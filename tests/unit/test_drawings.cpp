@@ -16,6 +16,7 @@
 #include "io/dxf_writer.hpp"
 #include "io/input_error.hpp"
 #include "io/polygon_text_reader.hpp"
+#include "io/run_frames.hpp"
 #include "io/scenario.hpp"
 #include "support/scenario_text.hpp"
 
@@ -402,6 +403,18 @@ TEST(DxfWriter, RoundTripKeepsEveryCornerWithin1nm) {
     // 1e-9 m: the tolerance; the writer keeps 16 decimals, so the loss is far below it.
     EXPECT_LT(worst_m, 1e-9);
     RecordProperty("worst_corner_error_m", fmt::format("{:.3g}", worst_m));
+}
+
+TEST(RunFrames, NearestSavedTimeWithTheStateFileOnATie) {
+    const std::vector<RunFrame> frames = {{0.0, "vtk/bodies_000000.vtp", false},
+                                          {0.4, "vtk/bodies_000010.vtp", false},
+                                          {0.4, "state/t_0.400000s.h5", true},
+                                          {0.8, "vtk/bodies_000020.vtp", false}};
+    EXPECT_EQ(nearest_frame(frames, std::nullopt).file, "vtk/bodies_000020.vtp");
+    EXPECT_EQ(nearest_frame(frames, 0.4).file, "state/t_0.400000s.h5");
+    EXPECT_EQ(nearest_frame(frames, 0.19).file, "vtk/bodies_000000.vtp");
+    EXPECT_EQ(nearest_frame(frames, 0.61).file, "vtk/bodies_000020.vtp");
+    EXPECT_EQ(nearest_frame(frames, -5.0).file, "vtk/bodies_000000.vtp");
 }
 
 TEST(DxfWriter, LayerNamesDxfAccepts) {
