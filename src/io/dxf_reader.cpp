@@ -49,6 +49,7 @@ std::string structure_problem(const std::string& text) {
     int line = 0;
     bool first = true;
     std::string entity;   // the type of the entity being read (the value of the last group 0)
+    long long vertices_declared = 0, vertices_seen = 0;   // of an LWPOLYLINE
     std::string last_code_text, last_value_text;
     while (std::getline(in, code_line)) {
         ++line;
@@ -68,7 +69,17 @@ std::string structure_problem(const std::string& text) {
             if (number != 0 || value != "SECTION") return "is not a DXF drawing (a DXF file starts with the group '0' 'SECTION')";
             first = false;
         }
-        if (number == 0) entity = std::string(value);
+        if (number == 0) {
+            // dxflib keeps only the vertices an LWPOLYLINE declares: a count that disagrees would
+            // silently cut the outline short.
+            if (entity == "LWPOLYLINE" && vertices_declared != vertices_seen)
+                return fmt::format("line {}: the LWPOLYLINE before this line declares {} vertices (group 90) but has {}",
+                                   line - 1, vertices_declared, vertices_seen);
+            entity = std::string(value);
+            vertices_declared = vertices_seen = 0;
+        }
+        if (entity == "LWPOLYLINE" && number == 90) std::from_chars(value.data(), value.data() + value.size(), vertices_declared);
+        if (entity == "LWPOLYLINE" && number == 10) ++vertices_seen;
         if (const std::string problem = count_problem(entity, number, value, text.size()); !problem.empty())
             return fmt::format("line {}: {}", line, problem);
         last_code_text = std::string(code);

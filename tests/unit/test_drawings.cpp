@@ -167,6 +167,8 @@ TEST(DxfReader, NotADrawingIsRefusedWithTheFile) {
     expect_contains(read_error(group(0, "SECTION") + "not a code\nvalue\n"), "line 3 should hold a group code");
     expect_contains(read_error(dxf(group(0, "LWPOLYLINE") + group(8, "L") + group(90, "4000000000"))),
                     "the LWPOLYLINE declares a count (group 90) of '4000000000'");
+    expect_contains(read_error(dxf(testing::replace_once(lwpolyline("1", "L", square, true), "90\n4\n", "90\n3\n"))),
+                    "line 31: the LWPOLYLINE before this line declares 3 vertices (group 90) but has 4");
     EXPECT_EQ(read_error(whole), "");
     // With CRLF line ends, as Windows CAD programs write them.
     std::string crlf;
