@@ -199,10 +199,11 @@ Polygon keyed_brick(Vec2 origin_m, double length_m, double height_m, double key_
             {c1 + w, y + H + t}, {c1 - w, y + H + t}, {c1 - w, y + H}, {x, y + H}};
 }
 
-Model keyed_wall_scene(int bricks, double duration_s, double dt_s) {
+Model keyed_wall_scene(int bricks, double duration_s) {
     constexpr double brick_length = 0.2;
     constexpr double brick_height = 0.1;
-    Model m = s3_wall_scene(0, duration_s, dt_s);  // the table, the motion and the contact of S3
+    Model m = s3_wall_scene(0, duration_s);  // the table, the motion and the contact of S3
+    m.settings.dt_s.reset();
     const int columns = std::max(2, static_cast<int>(std::lround(std::sqrt(2.0 * bricks))));
     m.bodies.front().vertices_m = box(-0.5, -0.2, columns * brick_length + 0.5, 0.0);
     int made = 0;

@@ -220,7 +220,7 @@ std::uint64_t keyed_wall_hash(int threads, std::size_t& pairs) {
 #ifdef _OPENMP
     omp_set_num_threads(threads);
 #endif
-    Model m = scenes::keyed_wall_scene(300, 1.0, 1e-4);
+    Model m = scenes::keyed_wall_scene(300, 1.0);
     m.table_motion.horizontal = SineMotion{0.8 * 9.81, 0.5, 0.0, 0.0, 0.0};  // past sliding: contacts slip
     World w = build_world(m);
     w.broad_phase_margin_m = 1e-5;  // many rebuilds on the way
