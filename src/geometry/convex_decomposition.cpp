@@ -63,7 +63,115 @@ Piece merged(const Piece& a, const Piece& b) {
     return {};
 }
 
+// Hertel-Mehlhorn: removes every diagonal whose two pieces merge into a convex polygon.
+void merge_where_convex(std::vector<Piece>& pieces, const std::vector<Vec2>& polygon) {
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (std::size_t i = 0; i < pieces.size() && !changed; ++i)
+            for (std::size_t j = i + 1; j < pieces.size() && !changed; ++j) {
+                Piece m = merged(pieces[i], pieces[j]);
+                if (m.empty() || !is_convex(corners(m, polygon))) continue;
+                pieces[i] = std::move(m);
+                pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(j));
+                changed = true;
+            }
+    }
+}
+
+double turn(Vec2 a, Vec2 b, Vec2 c) { return cross(b - a, c - b); }  // > 0: a left turn at b
+
+// True when the segment from corner k of piece p to corner m lies inside p: inside the angle
+// at both ends, and touching no edge nor corner on its way (O'Rourke's diagonal test).
+bool is_inside_diagonal(const Piece& p, const std::vector<Vec2>& v, std::size_t k, std::size_t m) {
+    const std::size_t n = p.size();
+    auto in_angle = [&](std::size_t at, std::size_t to) {
+        const Vec2 before = v[p[(at + n - 1) % n]], corner = v[p[at]], after = v[p[(at + 1) % n]], target = v[p[to]];
+        if (turn(before, corner, after) > 0.0)
+            return cross(target - corner, before - corner) > 0.0 && cross(after - corner, target - corner) > 0.0;
+        return !(cross(target - corner, before - corner) <= 0.0 && cross(after - corner, target - corner) <= 0.0);
+    };
+    if (!in_angle(k, m) || !in_angle(m, k)) return false;
+    const Vec2 a = v[p[k]], b = v[p[m]];
+    for (std::size_t e = 0; e < n; ++e) {
+        const std::size_t e1 = (e + 1) % n;
+        if (e == k || e == m || e1 == k || e1 == m) continue;
+        const Vec2 c = v[p[e]], d = v[p[e1]];
+        const double d0 = cross(b - a, c - a), d1 = cross(b - a, d - a);
+        const double d2 = cross(d - c, a - c), d3 = cross(d - c, b - c);
+        if (((d0 > 0.0) != (d1 > 0.0) || d0 == 0.0 || d1 == 0.0) && ((d2 > 0.0) != (d3 > 0.0) || d2 == 0.0 || d3 == 0.0))
+            return false;  // crosses or touches the edge
+    }
+    return true;
+}
+
+// The two pieces of p on either side of the diagonal from corner k to corner m (k < m).
+std::pair<Piece, Piece> split(const Piece& p, std::size_t k, std::size_t m) {
+    Piece first(p.begin() + static_cast<std::ptrdiff_t>(k), p.begin() + static_cast<std::ptrdiff_t>(m) + 1);
+    Piece second(p.begin() + static_cast<std::ptrdiff_t>(m), p.end());
+    second.insert(second.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(k) + 1);
+    return {first, second};
+}
+
+// How many of the diagonal's two ends it makes convex on both sides (a reflex corner split
+// into two angles of at most 180 degrees: a cut that goes on along an edge leaves a straight
+// corner, which the caller removes).
+int corners_resolved(const Piece& p, const std::vector<Vec2>& v, std::size_t k, std::size_t m) {
+    const std::size_t n = p.size();
+    auto resolves = [&](std::size_t at, std::size_t to) {
+        const Vec2 before = v[p[(at + n - 1) % n]], corner = v[p[at]], after = v[p[(at + 1) % n]], target = v[p[to]];
+        return turn(before, corner, after) <= 0.0 && turn(before, corner, target) >= 0.0 && turn(target, corner, after) >= 0.0;
+    };
+    return (resolves(k, m) ? 1 : 0) + (resolves(m, k) ? 1 : 0);
+}
+
+// Cuts a piece along diagonals from its reflex corners until every piece is convex: each cut
+// is the one that makes most of its ends convex, then the shortest, so that cuts joining two
+// reflex corners (a key's side continuing a groove's) come first.
+void cut_at_reflex_corners(const Piece& p, const std::vector<Vec2>& v, std::vector<Piece>& out) {
+    const std::size_t n = p.size();
+    int best_resolved = 0;
+    double best_length = INFINITY;
+    std::size_t best_k = 0, best_m = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (turn(v[p[(k + n - 1) % n]], v[p[k]], v[p[(k + 1) % n]]) > 0.0) continue;  // convex corner
+        for (std::size_t m = 0; m < n; ++m) {
+            if (m == k || m == (k + 1) % n || (m + 1) % n == k || !is_inside_diagonal(p, v, k, m)) continue;
+            const int resolved = corners_resolved(p, v, k, m);
+            const double cut = length(v[p[m]] - v[p[k]]);
+            if (resolved > best_resolved || (resolved == best_resolved && cut < best_length)) {
+                best_resolved = resolved;
+                best_length = cut;
+                best_k = std::min(k, m);
+                best_m = std::max(k, m);
+            }
+        }
+    }
+    if (best_resolved == 0 && std::isinf(best_length)) {
+        out.push_back(p);  // convex (no reflex corner), or no diagonal found: left to the caller's check
+        return;
+    }
+    const auto [first, second] = split(p, best_k, best_m);
+    cut_at_reflex_corners(first, v, out);
+    cut_at_reflex_corners(second, v, out);
+}
+
 }  // namespace
+
+std::vector<std::vector<Vec2>> convex_pieces_cut_at_reflex_corners(std::vector<Vec2> polygon) {
+    if (polygon.size() < 3) throw std::invalid_argument("a polygon needs at least 3 corners");
+    const double area = polygon_area(polygon);
+    if (area == 0.0) throw std::invalid_argument("the polygon has zero area");
+    if (area < 0.0) std::reverse(polygon.begin(), polygon.end());
+    if (is_convex(polygon)) return {polygon};
+    Piece all(polygon.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    std::vector<Piece> pieces;
+    cut_at_reflex_corners(all, polygon, pieces);
+    merge_where_convex(pieces, polygon);
+    std::vector<std::vector<Vec2>> out;
+    for (const Piece& p : pieces) out.push_back(corners(p, polygon));
+    return out;
+}
 
 bool is_convex(const std::vector<Vec2>& v) {
     for (std::size_t i = 0; i < v.size(); ++i) {
@@ -82,17 +190,7 @@ std::vector<std::vector<Vec2>> convex_decomposition(std::vector<Vec2> polygon) {
     if (is_convex(polygon)) return {polygon};
 
     std::vector<Piece> pieces = ear_clip(polygon);
-    for (bool changed = true; changed;) {
-        changed = false;
-        for (std::size_t i = 0; i < pieces.size() && !changed; ++i)
-            for (std::size_t j = i + 1; j < pieces.size() && !changed; ++j) {
-                Piece m = merged(pieces[i], pieces[j]);
-                if (m.empty() || !is_convex(corners(m, polygon))) continue;
-                pieces[i] = std::move(m);
-                pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(j));
-                changed = true;
-            }
-    }
+    merge_where_convex(pieces, polygon);
     std::vector<std::vector<Vec2>> out;
     for (const Piece& p : pieces) out.push_back(corners(p, polygon));
     return out;

@@ -97,7 +97,7 @@ std::optional<std::string> listed_outline_problem(const std::vector<Vec2>& liste
 
 std::vector<std::vector<Vec2>> outline_parts(const std::vector<Vec2>& outline) {
     if (is_convex(outline)) return {outline};
-    std::vector<std::vector<Vec2>> parts = convex_decomposition(outline);
+    std::vector<std::vector<Vec2>> parts = convex_pieces_cut_at_reflex_corners(outline);
     // Merged pieces may keep a corner of the outline that is straight inside the piece (where a
     // removed diagonal continued an edge): the narrow phase wants strictly convex polygons.
     for (std::vector<Vec2>& part : parts) {
