@@ -112,4 +112,20 @@ std::vector<std::vector<Vec2>> outline_parts(const std::vector<Vec2>& outline) {
     return parts;
 }
 
+std::vector<Vec2> convex_hull(const Vec2* points, std::size_t count) {
+    std::vector<Vec2> p(points, points + count);
+    std::sort(p.begin(), p.end(), [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    if (p.size() < 3) return p;
+    std::vector<Vec2> hull(2 * p.size());
+    std::size_t k = 0;
+    auto add = [&](Vec2 q, std::size_t floor) {
+        while (k >= floor && cross(hull[k - 1] - hull[k - 2], q - hull[k - 1]) <= 0.0) --k;
+        hull[k++] = q;
+    };
+    for (const Vec2& q : p) add(q, 2);                                                  // lower chain
+    for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) add(p[i], lower);       // upper chain
+    hull.resize(k - 1);  // (the last point is the first)
+    return hull;
+}
+
 }  // namespace blockdem

@@ -30,4 +30,8 @@ std::optional<std::string> listed_outline_problem(const std::vector<Vec2>& liste
 /// (straight corners left by the decomposition removed), each passing convexity_problem.
 std::vector<std::vector<Vec2>> outline_parts(const std::vector<Vec2>& outline);
 
+/// The convex hull of count points, counter-clockwise, without straight corners (Andrew's
+/// monotone chain): what a concave body stands on (its base spans the legs of a Pi-shaped block).
+std::vector<Vec2> convex_hull(const Vec2* points, std::size_t count);
+
 }  // namespace blockdem

@@ -18,13 +18,22 @@ struct Edge {
     Vec2 outward;
 };
 
-// The body's edge whose outward normal is most nearly along direction.
+// The body's edge whose outward normal is most nearly along direction; of a concave outline's
+// edges facing alike (a Pi-shaped block's leg soles and the underside of its arch), the one
+// farthest out along direction.
 Edge facing_edge(const Bodies& b, std::uint32_t i, Vec2 direction) {
     const std::uint32_t first = b.vertex_begin[i];
     const std::uint32_t count = b.vertex_count[i];
+    const bool concave = b.part_count[i] > 1;
     std::uint32_t best = 0;
-    for (std::uint32_t k = 1; k < count; ++k)
-        if (dot(b.world_normals[first + k], direction) > dot(b.world_normals[first + best], direction)) best = k;
+    for (std::uint32_t k = 1; k < count; ++k) {
+        const double facing = dot(b.world_normals[first + k], direction);
+        const double best_facing = dot(b.world_normals[first + best], direction);
+        if (facing > best_facing ||
+            (concave && facing == best_facing &&
+             dot(b.world_vertices_m[first + k], direction) > dot(b.world_vertices_m[first + best], direction)))
+            best = k;
+    }
     return {b.world_vertices_m[first + best], b.world_vertices_m[first + (best + 1) % count], b.world_normals[first + best]};
 }
 
