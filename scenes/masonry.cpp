@@ -188,4 +188,38 @@ Model s3_wall_scene(int bricks, double duration_s, double dt_s) {
     return m;
 }
 
+Polygon keyed_brick(Vec2 origin_m, double length_m, double height_m, double key_width_m, double key_depth_m) {
+    const double x = origin_m.x, y = origin_m.y, L = length_m, H = height_m, w = 0.5 * key_width_m, t = key_depth_m;
+    const double c1 = x + 0.25 * L, c2 = x + 0.75 * L;
+    return {// the bottom, left to right, with the two grooves cut up into the brick
+            {x, y}, {c1 - w, y}, {c1 - w, y + t}, {c1 + w, y + t}, {c1 + w, y}, {c2 - w, y}, {c2 - w, y + t},
+            {c2 + w, y + t}, {c2 + w, y}, {x + L, y},
+            // the top, right to left, with the two tongues standing on it
+            {x + L, y + H}, {c2 + w, y + H}, {c2 + w, y + H + t}, {c2 - w, y + H + t}, {c2 - w, y + H}, {c1 + w, y + H},
+            {c1 + w, y + H + t}, {c1 - w, y + H + t}, {c1 - w, y + H}, {x, y + H}};
+}
+
+Model keyed_wall_scene(int bricks, double duration_s) {
+    constexpr double brick_length = 0.2;
+    constexpr double brick_height = 0.1;
+    Model m = s3_wall_scene(0, duration_s);  // the table, the motion and the contact of S3
+    m.settings.dt_s.reset();
+    const int columns = std::max(2, static_cast<int>(std::lround(std::sqrt(2.0 * bricks))));
+    m.bodies.front().vertices_m = box(-0.5, -0.2, columns * brick_length + 0.5, 0.0);
+    int made = 0;
+    for (int r = 0; made < bricks; ++r) {
+        const int in_row = r % 2 == 0 ? columns : columns - 1;
+        const double x0 = r % 2 == 0 ? 0.0 : 0.5 * brick_length;
+        for (int j = 0; j < in_row && made < bricks; ++j, ++made) {
+            BodyDef b;
+            b.name = fmt::format("brick{}", made);
+            b.vertices_m = keyed_brick({x0 + j * brick_length, r * brick_height}, brick_length, brick_height, 0.04, 0.02);
+            b.mass_kg = 40.0;
+            b.record = false;
+            m.bodies.push_back(std::move(b));
+        }
+    }
+    return m;
+}
+
 }  // namespace blockdem::scenes

@@ -3,18 +3,20 @@
 namespace blockdem {
 
 void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<BodyPair>& pairs,
-                           std::vector<PairContact>& scratch) {
+                           const std::vector<std::uint32_t>& part_body, std::vector<PairContact>& scratch) {
     scratch.clear();
     scratch.reserve(pairs.size());
     std::size_t old = 0;
     for (const auto& [a, b] : pairs) {
-        while (old < table.size() && (table[old].a < a || (table[old].a == a && table[old].b < b))) ++old;
-        if (old < table.size() && table[old].a == a && table[old].b == b) {
+        while (old < table.size() && (table[old].part_a < a || (table[old].part_a == a && table[old].part_b < b))) ++old;
+        if (old < table.size() && table[old].part_a == a && table[old].part_b == b) {
             scratch.push_back(table[old]);
         } else {
             PairContact fresh;
-            fresh.a = a;
-            fresh.b = b;
+            fresh.a = part_body[a];
+            fresh.b = part_body[b];
+            fresh.part_a = a;
+            fresh.part_b = b;
             scratch.push_back(fresh);
         }
     }

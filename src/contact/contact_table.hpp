@@ -34,13 +34,17 @@ struct ContactPoint {
     }
 };
 
-/// All contact points between bodies a < b.
+/// All contact points between part part_a of body a and part part_b of body b (a < b; a convex
+/// body is one part, and then the part id is the body id while every body is convex). The law,
+/// the ledger and the force sums read the bodies; the narrow phase reads the parts.
 struct PairContact {
-    // (What a pair that stays apart reads comes first, in the entry's first 24 bytes: most
+    // (What a pair that stays apart reads comes first, in the entry's first 32 bytes: most
     // candidate pairs of a large scene are apart or just touching, and the table outgrows the
     // caches, so those pairs should cost one cache line, not three.)
     std::uint32_t a = 0;
     std::uint32_t b = 0;
+    std::uint32_t part_a = 0;                 ///< a part of body a (world/world.hpp, Bodies)
+    std::uint32_t part_b = 0;                 ///< a part of body b
     std::uint32_t count = 0;                  ///< active points (0 = apart)
     std::uint32_t reference = no_reference;   ///< reference edge last step (hysteresis)
     AxisCache axis_cache;                     ///< lets lasting contacts skip the full separating-axis test
@@ -50,9 +54,10 @@ struct PairContact {
 };
 
 /// Replaces the candidate pairs after a broad-phase rebuild, keeping the state of pairs that
-/// remain candidates. Both lists are sorted, so this is one linear merge.
+/// remain candidates. pairs: pairs of parts of different bodies, sorted; part_body: each part's
+/// body. The table is sorted by (part_a, part_b) too, so this is one linear merge.
 void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<BodyPair>& pairs,
-                           std::vector<PairContact>& scratch);
+                           const std::vector<std::uint32_t>& part_body, std::vector<PairContact>& scratch);
 
 /// One point of last step that opened: where it was and its last dashpot forces.
 struct OpenedPoint {

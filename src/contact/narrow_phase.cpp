@@ -12,10 +12,14 @@ namespace blockdem {
 OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
     PairContact& pair = w.contacts[p];
+    // The pair's polygons are parts (a convex body's one part is the body itself); the motion
+    // that moves them is their bodies'.
+    const std::uint32_t part_a = pair.part_a;
+    const std::uint32_t part_b = pair.part_b;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
-    const Aabb& box_a = b.box_m[pair.a];
-    const Aabb& box_b = b.box_m[pair.b];
+    const Aabb& box_a = b.part_box_m[part_a];
+    const Aabb& box_b = b.part_box_m[part_b];
     if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
         // (Reset only if set: a pair apart stays clean and its cache line is not written.)
         if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
@@ -24,10 +28,10 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
         return none;
     }
-    const PolygonView a{&b.world_vertices_m[b.vertex_begin[pair.a]], &b.world_normals[b.vertex_begin[pair.a]],
-                        b.vertex_count[pair.a]};
-    const PolygonView c{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
-                        b.vertex_count[pair.b]};
+    const PolygonView a{&b.world_vertices_m[b.part_vertex_begin[part_a]], &b.world_normals[b.part_vertex_begin[part_a]],
+                        b.part_vertex_count[part_a]};
+    const PolygonView c{&b.world_vertices_m[b.part_vertex_begin[part_b]], &b.world_normals[b.part_vertex_begin[part_b]],
+                        b.part_vertex_count[part_b]};
     // Still apart along the edge that separated the pair last step: the pair (no points, no
     // reference) is already what collide_polygons would make it. (Bricks laid side by side
     // stay exactly touching, separation 0, until the load reaches them.)
@@ -36,8 +40,9 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         return none;
     }
     // How far any edge's separation can have moved since the last step: both bodies'
-    // translations plus their rotations times a lever covering every corner of either
-    // (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a margin for round-off.
+    // translations plus their rotations times a lever covering every corner of either (the
+    // bodies' radii cover their parts too) (x(t) - x(t - dt) = v(t - dt/2) dt exactly), with a
+    // margin for round-off.
     // (Lengths are bounded by |x| + |y|: no square roots, and a bound is all this needs.)
     const double radii = b.bounding_radius_m[pair.a] + b.bounding_radius_m[pair.b];
     const double lever = norm_bound(b.position_m[pair.a] - b.position_m[pair.b]) + radii;
@@ -50,8 +55,8 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
     collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
-    // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
-    const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
+    // Corners of one pair are at least a face apart, so 5% of the smaller part is "same place".
+    const double match_distance = 0.05 * std::min(b.part_radius_m[part_a], b.part_radius_m[part_b]);
     return update_pair_geometry(pair, manifold, match_distance);
 }
 

@@ -129,14 +129,15 @@ std::vector<StiffnessPoint> start_stiffness_points(const World& w) {
     constexpr double growth = 1e-6;
     std::vector<Vec2> grown;
     for (const PairContact& pair : w.contacts) {
-        const std::uint32_t first = b.vertex_begin[pair.a];
-        const std::uint32_t count = b.vertex_count[pair.a];
+        // (The pair's polygons are parts of the two bodies, world/world.hpp.)
+        const std::uint32_t first = b.part_vertex_begin[pair.part_a];
+        const std::uint32_t count = b.part_vertex_count[pair.part_a];
         grown.resize(count);
         for (std::uint32_t k = 0; k < count; ++k)
             grown[k] = b.position_m[pair.a] + (1.0 + growth) * (b.world_vertices_m[first + k] - b.position_m[pair.a]);
         const PolygonView a{grown.data(), &b.world_normals[first], count};
-        const PolygonView other{&b.world_vertices_m[b.vertex_begin[pair.b]], &b.world_normals[b.vertex_begin[pair.b]],
-                                b.vertex_count[pair.b]};
+        const PolygonView other{&b.world_vertices_m[b.part_vertex_begin[pair.part_b]],
+                                &b.world_normals[b.part_vertex_begin[pair.part_b]], b.part_vertex_count[pair.part_b]};
         ContactManifold manifold;
         if (!collide_polygons(a, other, no_reference, manifold)) continue;
         touches[pair.a] = touches[pair.b] = 1;

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
 #include "io/geometry_keys.hpp"
@@ -304,7 +305,7 @@ BodyDef read_body(TableReader t) {
         b.vertices_m = rectangle_vertices(width, height, *center, rotation);
     } else {
         const std::vector<Vec2> listed = t.vec2_list("vertices");
-        if (auto problem = listed_vertices_problem(listed)) t.fail("vertices", *problem);
+        if (auto problem = listed_outline_problem(listed)) t.fail("vertices", *problem);
         b.vertices_m = counter_clockwise(listed);
         if (rotation != 0.0) {
             const Vec2 c = polygon_properties(b.vertices_m).centroid_m;

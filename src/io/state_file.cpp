@@ -334,6 +334,8 @@ std::vector<T> point_column(const std::vector<PairContact>& contacts, Field fiel
 void write_contacts(StateGroup g, const std::vector<PairContact>& c) {
     g.write("a", column<std::uint32_t>(c, [](const PairContact& p) { return p.a; }));
     g.write("b", column<std::uint32_t>(c, [](const PairContact& p) { return p.b; }));
+    g.write("part_a", column<std::uint32_t>(c, [](const PairContact& p) { return p.part_a; }));
+    g.write("part_b", column<std::uint32_t>(c, [](const PairContact& p) { return p.part_b; }));
     g.write("count", column<std::uint32_t>(c, [](const PairContact& p) { return p.count; }));
     g.write("reference", column<std::uint32_t>(c, [](const PairContact& p) { return p.reference; }));
     g.write("normal", column<Vec2>(c, [](const PairContact& p) { return p.normal; }));
@@ -373,16 +375,22 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
                               normal_dashpot = g.doubles("point_normal_dashpot_n", 2 * n, 2),
                               shear_dashpot = g.doubles("point_shear_dashpot_n", 2 * n, 2);
     const std::vector<std::uint8_t> sliding = g.flags("point_sliding", 2 * n, 2);
+    // (Files written before bodies had parts: every body was convex, one part with the body's id.)
+    const std::vector<std::uint32_t> part_a = g.has("part_a") ? g.indices("part_a", n) : a;
+    const std::vector<std::uint32_t> part_b = g.has("part_b") ? g.indices("part_b", n) : b;
     std::vector<PairContact> out(a.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         PairContact& p = out[i];
-        // The table is sorted by (a, b) with a < b: the merge and the force sums rely on it.
-        const bool sorted = i == 0 || out[i - 1].a < a[i] || (out[i - 1].a == a[i] && out[i - 1].b < b[i]);
+        // The table is sorted by (part_a, part_b), with a < b: the merge and the force sums rely on it.
+        const bool sorted = i == 0 || out[i - 1].part_a < part_a[i] ||
+                            (out[i - 1].part_a == part_a[i] && out[i - 1].part_b < part_b[i]);
         if (a[i] >= b[i] || b[i] >= body_count || count[i] > 2 || !sorted)
             throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: pair {} is not a "
                                                                "valid entry of the contact table", g.path(), i + 1));
         p.a = a[i];
         p.b = b[i];
+        p.part_a = part_a[i];
+        p.part_b = part_b[i];
         p.count = count[i];
         p.reference = reference[i];
         p.normal = normal[i];

@@ -63,7 +63,7 @@ void body_cell_data(Buffer& out, const Bodies& b) {
 // each of its corners moves.
 void body_point_data(Buffer& out, const Bodies& b, const std::vector<std::uint32_t>& owner) {
     fmt::format_to(std::back_inserter(out), "<PointData Vectors=\"velocity_m_s\">\n");
-    data_array(out, "Float64", "velocity_m_s", 3, b.world_vertices_m.size(), [&](Buffer& o, std::size_t k) {
+    data_array(out, "Float64", "velocity_m_s", 3, owner.size(), [&](Buffer& o, std::size_t k) {
         const std::uint32_t i = owner[k];
         vec3(o, b.velocity_at_t_m_s[i] + cross(b.angular_velocity_at_t_rad_s[i], b.world_vertices_m[k] - b.position_m[i]));
     });
@@ -97,14 +97,16 @@ void write_collection(const std::filesystem::path& file, const std::string& pref
 
 std::string vtk_bodies_polydata(const World& w) {
     const Bodies& b = w.bodies;
-    std::vector<std::uint32_t> owner(b.world_vertices_m.size());
+    // The bodies' outlines (they come first in the vertex arrays), not the parts of concave ones.
+    const std::size_t corners = b.outline_corners();
+    std::vector<std::uint32_t> owner(corners);
     for (std::uint32_t i = 0; i < b.size(); ++i)
         for (std::uint32_t k = 0; k < b.vertex_count[i]; ++k) owner[b.vertex_begin[i] + k] = i;
     Buffer out;
     begin_file(out, w.time_s);
     fmt::format_to(std::back_inserter(out), "<Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"0\" "
-                   "NumberOfStrips=\"0\" NumberOfPolys=\"{}\">\n<Points>\n", b.world_vertices_m.size(), b.size());
-    data_array(out, "Float64", "position_m", 3, b.world_vertices_m.size(),
+                   "NumberOfStrips=\"0\" NumberOfPolys=\"{}\">\n<Points>\n", corners, b.size());
+    data_array(out, "Float64", "position_m", 3, corners,
                [&](Buffer& o, std::size_t k) { vec3(o, b.world_vertices_m[k]); });
     fmt::format_to(std::back_inserter(out), "</Points>\n<Polys>\n");
     data_array(out, "Int64", "connectivity", 1, b.size(), [&](Buffer& o, std::size_t i) {

@@ -18,13 +18,22 @@ struct Edge {
     Vec2 outward;
 };
 
-// The body's edge whose outward normal is most nearly along direction.
+// The body's edge whose outward normal is most nearly along direction; of a concave outline's
+// edges facing alike (a Pi-shaped block's leg soles and the underside of its arch), the one
+// farthest out along direction.
 Edge facing_edge(const Bodies& b, std::uint32_t i, Vec2 direction) {
     const std::uint32_t first = b.vertex_begin[i];
     const std::uint32_t count = b.vertex_count[i];
+    const bool concave = b.part_count[i] > 1;
     std::uint32_t best = 0;
-    for (std::uint32_t k = 1; k < count; ++k)
-        if (dot(b.world_normals[first + k], direction) > dot(b.world_normals[first + best], direction)) best = k;
+    for (std::uint32_t k = 1; k < count; ++k) {
+        const double facing = dot(b.world_normals[first + k], direction);
+        const double best_facing = dot(b.world_normals[first + best], direction);
+        if (facing > best_facing ||
+            (concave && facing == best_facing &&
+             dot(b.world_vertices_m[first + k], direction) > dot(b.world_vertices_m[first + best], direction)))
+            best = k;
+    }
     return {b.world_vertices_m[first + best], b.world_vertices_m[first + (best + 1) % count], b.world_normals[first + best]};
 }
 
@@ -69,6 +78,11 @@ std::size_t InterfaceMonitor::find_or_add(const World& w, const PairContact& pai
 
 void InterfaceMonitor::observe(const World& w) {
     const Bodies& b = w.bodies;
+    // A concave body may touch another through several of its parts: each part pair is an entry
+    // of the table, and the interface of the two bodies sums them (points, forces, their centre).
+    centre_sum_m_.assign(states_.size(), Vec2{});
+    shear_ccw_sum_n_.assign(states_.size(), 0.0);
+    normal_now_.assign(states_.size(), Vec2{});
     for (InterfaceState& s : states_) {
         s.touching = false;
         s.points = 0;
@@ -78,24 +92,31 @@ void InterfaceMonitor::observe(const World& w) {
         if (pair.count == 0) continue;
         const std::size_t k = find_or_add(w, pair);
         if (k == states_.size()) continue;
-        InterfaceState& s = states_[k];
-        const bool flipped = s.body_a != pair.a;
-        const Vec2 n = flipped ? -pair.normal : pair.normal;
-        const Vec2 tangent{n.y, -n.x};   // n turned clockwise
-        Vec2 centre_m;
-        double normal_n = 0.0, shear_ccw_n = 0.0;
-        for (std::uint32_t p = 0; p < pair.count; ++p) {
-            normal_n += pair.points[p].normal_force_n;
-            shear_ccw_n += pair.points[p].shear_force_n;
-            centre_m += pair.points[p].point_m;
+        if (centre_sum_m_.size() < states_.size()) {  // (an interface discovered now)
+            centre_sum_m_.resize(states_.size());
+            shear_ccw_sum_n_.resize(states_.size(), 0.0);
+            normal_now_.resize(states_.size());
         }
-        centre_m = (1.0 / pair.count) * centre_m;
+        InterfaceState& s = states_[k];
         // Both N and the shear along s = -(the contact tangent) come out the same whichever
         // body of the pair is body_a (interface_monitor.hpp).
+        for (std::uint32_t p = 0; p < pair.count; ++p) {
+            s.normal_force_n += pair.points[p].normal_force_n;
+            shear_ccw_sum_n_[k] += pair.points[p].shear_force_n;
+            centre_sum_m_[k] += pair.points[p].point_m;
+        }
+        s.points += pair.count;
+        // (The first part pair's normal: the parts of one interface face the same way.)
+        if (!s.touching) normal_now_[k] = s.body_a != pair.a ? -pair.normal : pair.normal;
         s.touching = true;
-        s.points = pair.count;
-        s.normal_force_n = normal_n;
-        s.shear_force_n = -shear_ccw_n;
+    }
+    for (std::size_t k = 0; k < states_.size(); ++k) {
+        InterfaceState& s = states_[k];
+        if (!s.touching) continue;
+        const Vec2 n = normal_now_[k];
+        const Vec2 tangent{n.y, -n.x};   // n turned clockwise
+        const Vec2 centre_m = (1.0 / s.points) * centre_sum_m_[k];
+        s.shear_force_n = -shear_ccw_sum_n_[k];
         if (s.first_touch_time_s < 0.0) s.first_touch_time_s = w.time_s;
         auto velocity_at = [&](std::uint32_t i) {
             const Vec2 r = centre_m - b.position_m[i];

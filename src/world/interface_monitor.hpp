@@ -7,7 +7,8 @@
 // s = +x). At each step, while the pair touches:
 //   normal_force_n  N = sum of the points' normal forces on body_b along n (compression > 0);
 //   shear_force_n   S = sum of the points' shear forces on body_b along s;
-//   points          the number of active contact points (0, 1 or 2);
+//   points          the number of active contact points (0, 1 or 2 for convex bodies; a
+//                   concave body touching through several of its parts sums them all);
 //   opening_m       the gap at the far corner: the two facing edges are, on each body, the edge
 //                   whose outward normal points most nearly towards the other body; the
 //                   opening is the largest distance of the two end corners of the shorter edge
@@ -73,6 +74,10 @@ private:
     bool all_ = false;
     std::vector<InterfaceState> states_;
     std::unordered_map<std::uint64_t, std::size_t> index_;   ///< (min id, max id) -> states_ entry
+    // Scratch of observe(), per interface: the sums over its part pairs this step.
+    std::vector<Vec2> centre_sum_m_;      ///< [m] sum of the active points
+    std::vector<double> shear_ccw_sum_n_; ///< [N] sum of the points' shear forces along the contact tangent
+    std::vector<Vec2> normal_now_;        ///< from body_a into body_b
 };
 
 /// The opening of a touching pair (see above) with normal n from body a into body b.

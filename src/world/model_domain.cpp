@@ -43,7 +43,7 @@ ModelDomain derived_domain(const World& w) {
     Aabb box = empty_box();
     double largest_radius_m = 0.0;
     for (std::size_t i = 0; i < b.size(); ++i) {
-        Aabb body = b.box_m[i];
+        Aabb body = body_box(b, i);
         if (b.kind[i] == BodyKind::driven) body = {body.lo + swept.lo, body.hi + swept.hi};
         if (b.kind[i] == BodyKind::dynamic) largest_radius_m = std::max(largest_radius_m, b.bounding_radius_m[i]);
         grow(box, body);
@@ -63,12 +63,12 @@ void init_model_domain(World& w) {
         w.domain.from_scenario = true;
         w.domain.box_m = {w.settings.domain->lo_m, w.settings.domain->hi_m};
         for (std::size_t i = 0; i < b.size(); ++i)
-            if (!contains(w.domain.box_m, b.box_m[i]))
+            if (!contains(w.domain.box_m, body_box(b, i)))
                 throw ModelError(fmt::format("simulation.domain [[{:g}, {:g}], [{:g}, {:g}]] m does not contain body '{}' "
                                              "at t = 0 (its box is [[{:g}, {:g}], [{:g}, {:g}]] m)",
                                              w.domain.box_m.lo.x, w.domain.box_m.lo.y, w.domain.box_m.hi.x,
-                                             w.domain.box_m.hi.y, b.name[i], b.box_m[i].lo.x, b.box_m[i].lo.y,
-                                             b.box_m[i].hi.x, b.box_m[i].hi.y));
+                                             w.domain.box_m.hi.y, b.name[i], body_box(b, i).lo.x, body_box(b, i).lo.y,
+                                             body_box(b, i).hi.x, body_box(b, i).hi.y));
     } else {
         w.domain = derived_domain(w);
     }
@@ -85,7 +85,7 @@ std::size_t take_out_bodies_outside_domain(World& w) {
     const Vec2 g = w.gravity_now_m_s2;
     std::size_t now = 0;
     for (std::size_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] != BodyKind::dynamic || b.is_static[i] || overlaps(b.box_m[i], w.domain.box_m)) continue;
+        if (b.kind[i] != BodyKind::dynamic || b.is_static[i] || overlaps(body_box(b, i), w.domain.box_m)) continue;
         const Vec2 v = b.velocity_m_s[i];
         const double omega = b.angular_velocity_rad_s[i];
         w.energy.removed_j += 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega +
@@ -100,7 +100,10 @@ std::size_t take_out_bodies_outside_domain(World& w) {
         ++now;
     }
     if (w.domain.left.empty()) return now;
-    std::erase_if(w.candidate_pairs, [&](const BodyPair& p) { return is_taken_out(b, p.first) || is_taken_out(b, p.second); });
+    // (Candidate pairs are pairs of parts.)
+    std::erase_if(w.candidate_pairs, [&](const BodyPair& p) {
+        return is_taken_out(b, b.part_body[p.first]) || is_taken_out(b, b.part_body[p.second]);
+    });
     return now;
 }
 

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geometry/outline.hpp"
+#include "geometry/polygon.hpp"
+
 namespace blockdem {
 namespace {
 
@@ -13,15 +16,27 @@ namespace {
 // from the base lying flat, and the start's tilt is kept apart in base_tilt_rad. "Down" and
 // "level" are gravity's, which a tilted table turns (down = (-sin tilt, -cos tilt), level angle =
 // tilt: a base along x is tilted from level by the table's tilt).
+// A concave body stands on its convex hull (a Pi-shaped block on both legs, not on one), so its
+// base is the hull's edge; a convex body's outline is its hull.
 BodyResponse base_of(const Bodies& b, std::size_t i, const OutcomeThresholds& t, double level_angle_rad) {
     const Vec2 down{-std::sin(level_angle_rad), -std::cos(level_angle_rad)};
     const std::uint32_t first = b.vertex_begin[i];
-    const std::uint32_t count = b.vertex_count[i];
+    std::uint32_t count = b.vertex_count[i];
+    const Vec2* corners = &b.world_vertices_m[first];
+    const Vec2* normals = &b.world_normals[first];
+    std::vector<Vec2> hull, hull_normals;
+    if (b.part_count[i] > 1) {
+        hull = convex_hull(corners, count);
+        count = static_cast<std::uint32_t>(hull.size());
+        for (std::uint32_t k = 0; k < count; ++k) hull_normals.push_back(edge_normal(hull[k], hull[(k + 1) % count]));
+        corners = hull.data();
+        normals = hull_normals.data();
+    }
     std::uint32_t base = 0;
     for (std::uint32_t k = 1; k < count; ++k)
-        if (dot(b.world_normals[first + k], down) > dot(b.world_normals[first + base], down)) base = k;
-    const Vec2 left = b.world_vertices_m[first + base];
-    const Vec2 right = b.world_vertices_m[first + (base + 1) % count];
+        if (dot(normals[k], down) > dot(normals[base], down)) base = k;
+    const Vec2 left = corners[base];
+    const Vec2 right = corners[(base + 1) % count];
     const Vec2 along = normalized(right - left);   // +x when the base is level
     const Vec2 up = perp(along);                    // into the body
     const Vec2 c = b.position_m[i];
@@ -36,9 +51,9 @@ BodyResponse base_of(const Bodies& b, std::size_t i, const OutcomeThresholds& t,
     r.rocking_threshold_rad = t.rocking_ratio * std::max(1e-6, std::min(std::abs(r.alpha_ccw_rad), std::abs(r.alpha_cw_rad)));
     r.slip_threshold_m = t.slip_ratio * r.base_length_m;
     double low = INFINITY, high = -INFINITY;
-    for (std::uint32_t k = first; k < first + count; ++k) {
-        low = std::min(low, -dot(b.world_vertices_m[k], down));
-        high = std::max(high, -dot(b.world_vertices_m[k], down));
+    for (std::uint32_t k = 0; k < count; ++k) {
+        low = std::min(low, -dot(corners[k], down));
+        high = std::max(high, -dot(corners[k], down));
     }
     r.height_m = high - low;
     return r;

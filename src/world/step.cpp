@@ -15,23 +15,36 @@
 
 namespace blockdem {
 
+namespace {
+
+// Corners first to first + count of a body at x turned by r, and their box.
+Aabb place_corners(Bodies& b, std::uint32_t first, std::uint32_t count, Vec2 x, const Rotation& r) {
+    Aabb box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
+    for (std::uint32_t k = first; k < first + count; ++k) {
+        const Vec2 v = x + r.apply(b.local_vertices_m[k]);
+        b.world_vertices_m[k] = v;
+        b.world_normals[k] = r.apply(b.local_normals[k]);
+        box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y)};
+        box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y)};
+    }
+    return box;
+}
+
+}  // namespace
+
 void update_body_geometry(World& w) {
     Bodies& b = w.bodies;
     const auto n = static_cast<std::ptrdiff_t>(b.size());
     // Normals are turned with the body rather than recomputed from the corners: no square root.
     parallel_for(n, [&](std::ptrdiff_t i) {
         const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
-        const std::uint32_t first = b.vertex_begin[i];
-        const std::uint32_t count = b.vertex_count[i];
-        Aabb box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
-        for (std::uint32_t k = first; k < first + count; ++k) {
-            const Vec2 v = b.position_m[i] + r.apply(b.local_vertices_m[k]);
-            b.world_vertices_m[k] = v;
-            b.world_normals[k] = r.apply(b.local_normals[k]);
-            box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y)};
-            box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y)};
-        }
-        b.box_m[i] = box;
+        const Vec2 x = b.position_m[i];
+        const std::uint32_t first_part = b.part_begin[i];
+        const std::uint32_t parts = b.part_count[i];
+        for (std::uint32_t j = first_part; j < first_part + parts; ++j)
+            b.part_box_m[j] = place_corners(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r);
+        // A concave body's outline is not one of its parts: placed too, for the outputs.
+        if (parts > 1) place_corners(b, b.vertex_begin[i], b.vertex_count[i], x, r);
     });
 }
 
@@ -53,12 +66,23 @@ bool broad_phase_is_stale(const World& w) {
 void rebuild_candidate_pairs(World& w) {
     Bodies& b = w.bodies;
     const double pad = 0.5 * w.broad_phase_margin_m;
-    const auto n = static_cast<std::ptrdiff_t>(b.size());
-    w.boxes.resize(b.size());
-    parallel_for(n, [&](std::ptrdiff_t i) { w.boxes[i] = {b.box_m[i].lo - Vec2{pad, pad}, b.box_m[i].hi + Vec2{pad, pad}}; });
-    w.broad_phase.find_pairs(w.boxes, b.is_static, w.candidate_pairs);
+    const auto parts = static_cast<std::ptrdiff_t>(b.part_total());
+    w.boxes.resize(b.part_total());
+    parallel_for(parts, [&](std::ptrdiff_t j) {
+        w.boxes[j] = {b.part_box_m[j].lo - Vec2{pad, pad}, b.part_box_m[j].hi + Vec2{pad, pad}};
+    });
+    // Part ids are body ids while every body is convex; else the parts of one body are never
+    // a candidate pair (they move as one).
+    const bool all_convex = b.part_total() == b.size();
+    if (!all_convex) {
+        w.part_is_static.resize(b.part_total());
+        for (std::size_t j = 0; j < b.part_total(); ++j) w.part_is_static[j] = b.is_static[b.part_body[j]];
+    }
+    w.broad_phase.find_pairs(w.boxes, all_convex ? b.is_static : w.part_is_static, w.candidate_pairs);
+    if (!all_convex)
+        std::erase_if(w.candidate_pairs, [&](const BodyPair& p) { return b.part_body[p.first] == b.part_body[p.second]; });
     take_out_bodies_outside_domain(w);  // before the merge: a taken-out body's contacts are dropped
-    merge_candidate_pairs(w.contacts, w.candidate_pairs, w.contacts_scratch);
+    merge_candidate_pairs(w.contacts, w.candidate_pairs, b.part_body, w.contacts_scratch);
     index_pairs_by_body(w);
     b.position_at_rebuild_m = b.position_m;
     b.rotation_at_rebuild_rad = b.rotation_rad;

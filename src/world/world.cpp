@@ -8,6 +8,7 @@
 #include "contact/narrow_phase.hpp"
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
+#include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
 #include "world/settling.hpp"
 #include "world/simulation_error.hpp"
@@ -23,8 +24,24 @@ std::uint32_t World::body_id(const std::string& wanted) const {
 
 namespace {
 
-void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
-    if (auto problem = convexity_problem(def.vertices_m)) throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
+// Adds body def with its outline's corners; returns its convex parts (relative to the world
+// origin), whose corners build_world appends after every outline.
+std::vector<std::vector<Vec2>> add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
+    if (auto problem = outline_problem(def.vertices_m)) throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
+    std::vector<std::vector<Vec2>> parts;
+    try {
+        parts = outline_parts(def.vertices_m);
+    } catch (const std::invalid_argument& e) {
+        throw ModelError(fmt::format("body '{}': its outline cannot be cut into convex parts: {}", def.name, e.what()));
+    }
+    double thinnest = INFINITY;
+    for (const std::vector<Vec2>& part : parts) {
+        if (auto problem = convexity_problem(part))
+            throw ModelError(fmt::format("body '{}': a convex part of its outline is not valid: {}", def.name, *problem));
+        thinnest = std::min(thinnest, least_width(part));
+    }
+    // The shoelace sums of polygon_properties hold for any simple polygon, convex or not: the
+    // union's area, centroid and polar moment in closed form, not summed over the parts.
     const PolygonProperties props = polygon_properties(def.vertices_m);
     double mass = def.mass_kg.value_or(def.density_kg_m3 * props.area_m2 * def.thickness_m);
     if (def.kind == BodyKind::dynamic && !(mass > 0.0))
@@ -58,7 +75,7 @@ void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
         radius = std::max(radius, length(v - props.centroid_m));
     }
     b.bounding_radius_m.push_back(radius);
-    b.least_width_m.push_back(least_width(def.vertices_m));
+    b.least_width_m.push_back(thinnest);
     const std::size_t first = b.local_vertices_m.size() - def.vertices_m.size();
     for (std::size_t k = 0; k < def.vertices_m.size(); ++k)
         b.local_normals.push_back(
@@ -70,6 +87,37 @@ void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
     b.angular_velocity_rad_s.push_back(dynamic ? def.angular_velocity_rad_s : 0.0);
     b.velocity_at_t_m_s.push_back(b.velocity_m_s.back());
     b.angular_velocity_at_t_rad_s.push_back(b.angular_velocity_rad_s.back());
+    return parts;
+}
+
+// The parts of body i: a convex body's one part is its outline; a concave body's parts get
+// their own corners after every outline, so that outputs and state files see outlines only.
+void add_parts(Bodies& b, std::uint32_t i, const std::vector<std::vector<Vec2>>& parts) {
+    b.part_begin.push_back(static_cast<std::uint32_t>(b.part_body.size()));
+    b.part_count.push_back(static_cast<std::uint32_t>(parts.size()));
+    if (parts.size() == 1) {
+        b.part_body.push_back(i);
+        b.part_vertex_begin.push_back(b.vertex_begin[i]);
+        b.part_vertex_count.push_back(b.vertex_count[i]);
+        b.part_radius_m.push_back(b.bounding_radius_m[i]);
+        return;
+    }
+    const Vec2 centroid = b.position_m[i];
+    for (const std::vector<Vec2>& part : parts) {
+        const Vec2 own_centroid = polygon_properties(part).centroid_m;
+        const auto first = static_cast<std::uint32_t>(b.local_vertices_m.size());
+        double radius = 0.0;
+        for (Vec2 v : part) {
+            b.local_vertices_m.push_back(v - centroid);
+            radius = std::max(radius, length(v - own_centroid));
+        }
+        for (std::size_t k = 0; k < part.size(); ++k)
+            b.local_normals.push_back(edge_normal(b.local_vertices_m[first + k], b.local_vertices_m[first + (k + 1) % part.size()]));
+        b.part_body.push_back(i);
+        b.part_vertex_begin.push_back(first);
+        b.part_vertex_count.push_back(static_cast<std::uint32_t>(part.size()));
+        b.part_radius_m.push_back(radius);
+    }
 }
 
 void check_no_initial_overlap(World& w) {
@@ -119,6 +167,15 @@ void set_time_step(World& w, const SimulationSettings& settings) {
 
 }  // namespace
 
+Aabb body_box(const Bodies& b, std::size_t i) {
+    Aabb box = b.part_box_m[b.part_begin[i]];
+    for (std::uint32_t j = b.part_begin[i] + 1; j < b.part_begin[i] + b.part_count[i]; ++j) {
+        box.lo = {std::min(box.lo.x, b.part_box_m[j].lo.x), std::min(box.lo.y, b.part_box_m[j].lo.y)};
+        box.hi = {std::max(box.hi.x, b.part_box_m[j].hi.x), std::max(box.hi.y, b.part_box_m[j].hi.y)};
+    }
+    return box;
+}
+
 namespace {
 
 template <class T>
@@ -133,8 +190,10 @@ std::size_t memory_bytes(const World& w) {
     std::size_t total = sizeof(World) + bytes_of(b.name) + bytes_of(b.kind) + bytes_of(b.is_static) + bytes_of(b.record) +
                         bytes_of(b.material) + bytes_of(b.mass_kg) + bytes_of(b.inv_mass_1_kg) + bytes_of(b.inertia_kg_m2) +
                         bytes_of(b.inv_inertia_1_kg_m2) + bytes_of(b.bounding_radius_m) + bytes_of(b.least_width_m) + bytes_of(b.vertex_begin) +
-                        bytes_of(b.vertex_count) + bytes_of(b.local_vertices_m) + bytes_of(b.world_vertices_m) + bytes_of(b.local_normals) +
-                        bytes_of(b.world_normals) + bytes_of(b.box_m) + bytes_of(b.position_m) + bytes_of(b.rotation_rad) +
+                        bytes_of(b.vertex_count) + bytes_of(b.part_begin) + bytes_of(b.part_count) + bytes_of(b.part_body) +
+                        bytes_of(b.part_vertex_begin) + bytes_of(b.part_vertex_count) + bytes_of(b.part_radius_m) +
+                        bytes_of(b.part_box_m) + bytes_of(b.local_vertices_m) + bytes_of(b.world_vertices_m) + bytes_of(b.local_normals) +
+                        bytes_of(b.world_normals) + bytes_of(b.position_m) + bytes_of(b.rotation_rad) +
                         bytes_of(b.velocity_m_s) + bytes_of(b.angular_velocity_rad_s) + bytes_of(b.acceleration_m_s2) +
                         bytes_of(b.angular_acceleration_rad_s2) + bytes_of(b.velocity_at_t_m_s) +
                         bytes_of(b.angular_velocity_at_t_rad_s) + bytes_of(b.force_n) + bytes_of(b.torque_n_m) +
@@ -142,7 +201,7 @@ std::size_t memory_bytes(const World& w) {
                         bytes_of(b.rotation_at_rebuild_rad);
     for (const std::string& name : b.name)
         if (name.capacity() > 15) total += name.capacity() + 1;  // beyond the small-string buffer
-    total += bytes_of(w.boxes) + bytes_of(w.candidate_pairs) + bytes_of(w.contacts) + bytes_of(w.contacts_scratch) +
+    total += bytes_of(w.boxes) + bytes_of(w.part_is_static) + bytes_of(w.candidate_pairs) + bytes_of(w.contacts) + bytes_of(w.contacts_scratch) +
              bytes_of(w.pair_forces) + bytes_of(w.body_pair_start) + bytes_of(w.body_pair_entries) +
              bytes_of(w.contacts_fill) + bytes_of(w.driven_bodies);
     total += w.broad_phase.memory_bytes();
@@ -154,11 +213,13 @@ World build_world(const Model& model) {
     w.settings = model.settings;
     w.contact = model.contact;
     w.table_motion = model.table_motion;
-    for (const BodyDef& def : model.bodies) add_body(w.bodies, def, w.contact);
+    std::vector<std::vector<std::vector<Vec2>>> parts;
+    for (const BodyDef& def : model.bodies) parts.push_back(add_body(w.bodies, def, w.contact));
     const std::size_t n = w.bodies.size();
+    for (std::size_t i = 0; i < n; ++i) add_parts(w.bodies, static_cast<std::uint32_t>(i), parts[i]);
     w.bodies.world_vertices_m.resize(w.bodies.local_vertices_m.size());
     w.bodies.world_normals.resize(w.bodies.local_vertices_m.size());
-    w.bodies.box_m.resize(n);
+    w.bodies.part_box_m.resize(w.bodies.part_total());
     w.bodies.acceleration_m_s2.assign(n, {});
     w.bodies.angular_acceleration_rad_s2.assign(n, 0.0);
     w.bodies.force_n.assign(n, {});

@@ -30,14 +30,25 @@ struct Bodies {
     std::vector<double> inertia_kg_m2;          ///< [kg m^2] about the centroid
     std::vector<double> inv_inertia_1_kg_m2;    ///< [1/(kg m^2)], 0 for static bodies
     std::vector<double> bounding_radius_m;      ///< [m] largest centroid-to-corner distance
-    std::vector<double> least_width_m;          ///< [m] least width (overlaps are judged against it)
-    std::vector<std::uint32_t> vertex_begin;    ///< first corner in the vertex arrays
-    std::vector<std::uint32_t> vertex_count;
-    std::vector<Vec2> local_vertices_m;         ///< [m] corners relative to the centroid at rotation 0
+    std::vector<double> least_width_m;          ///< [m] least width of its thinnest part (overlaps are judged against it)
+    std::vector<std::uint32_t> vertex_begin;    ///< first corner of the outline in the vertex arrays
+    std::vector<std::uint32_t> vertex_count;    ///< corners of the outline
+    /// [m] corners relative to the centroid at rotation 0: every body's outline, in body order,
+    /// then the corners of the parts of concave bodies (a convex body's one part is its outline)
+    std::vector<Vec2> local_vertices_m;
     std::vector<Vec2> world_vertices_m;         ///< [m] corners now
     std::vector<Vec2> local_normals;            ///< outward unit edge normals at rotation 0
     std::vector<Vec2> world_normals;            ///< outward unit edge normals now
-    std::vector<Aabb> box_m;                    ///< [m] tight bounding box now
+
+    // Parts: the convex pieces of a body (geometry/outline.hpp), what the broad and narrow phase
+    // work on. A convex body is one part; part ids run in body order.
+    std::vector<std::uint32_t> part_begin;      ///< per body: its first part id
+    std::vector<std::uint32_t> part_count;      ///< per body: 1 for a convex body
+    std::vector<std::uint32_t> part_body;       ///< per part: the body it belongs to
+    std::vector<std::uint32_t> part_vertex_begin;///< per part: first corner in the vertex arrays
+    std::vector<std::uint32_t> part_vertex_count;///< per part
+    std::vector<double> part_radius_m;          ///< [m] per part: largest distance from its own centroid to a corner
+    std::vector<Aabb> part_box_m;               ///< [m] per part: tight bounding box now
 
     std::vector<Vec2> position_m;               ///< [m] centroid at t
     std::vector<double> rotation_rad;           ///< [rad] at t, counter-clockwise from the start
@@ -55,7 +66,13 @@ struct Bodies {
     std::vector<double> rotation_at_rebuild_rad;///< [rad] at the last broad-phase rebuild
 
     std::size_t size() const { return name.size(); }
+    std::size_t part_total() const { return part_body.size(); }
+    /// Corners of the outlines (they come first in the vertex arrays): what outputs and state files hold.
+    std::size_t outline_corners() const { return name.empty() ? 0 : vertex_begin.back() + vertex_count.back(); }
 };
+
+/// [m] body i's tight bounding box now: the union of its parts' boxes.
+Aabb body_box(const Bodies& b, std::size_t i);
 
 /// One pair's contact forces this step: what each of its points adds to the two bodies.
 struct PairForces {
@@ -129,9 +146,10 @@ struct World {
 
     GridBroadPhase broad_phase;
     double broad_phase_margin_m = 0.0;    ///< [m] boxes are enlarged by this; rebuild after margin/2 motion
-    std::vector<Aabb> boxes;              ///< enlarged boxes at the last rebuild
-    std::vector<BodyPair> candidate_pairs;
-    std::vector<PairContact> contacts;    ///< sorted by (a, b)
+    std::vector<Aabb> boxes;              ///< enlarged part boxes at the last rebuild
+    std::vector<std::uint8_t> part_is_static;  ///< scratch of the rebuild (worlds with concave bodies)
+    std::vector<BodyPair> candidate_pairs;///< pairs of parts of different bodies
+    std::vector<PairContact> contacts;    ///< sorted by (part_a, part_b), so also by a
     std::vector<PairContact> contacts_scratch;
     /// The contact law's result per pair, written in parallel, summed per body in table order.
     std::vector<PairForces> pair_forces;

@@ -23,7 +23,9 @@ WorldState capture_state(const World& w) {
     s.name = b.name;
     s.kind = b.kind;
     s.vertex_count = b.vertex_count;
-    s.local_vertices_m = b.local_vertices_m;
+    // The outlines only: a concave body's parts follow from its outline (world.cpp).
+    const auto outline_end = static_cast<std::ptrdiff_t>(b.outline_corners());
+    s.local_vertices_m.assign(b.local_vertices_m.begin(), b.local_vertices_m.begin() + outline_end);
     s.is_static = b.is_static;
     s.position_m = b.position_m;
     s.rotation_rad = b.rotation_rad;
@@ -32,8 +34,8 @@ WorldState capture_state(const World& w) {
     s.velocity_at_t_m_s = b.velocity_at_t_m_s;
     s.angular_velocity_at_t_rad_s = b.angular_velocity_at_t_rad_s;
     s.initial_position_m = b.initial_position_m;
-    s.world_vertices_m = b.world_vertices_m;
-    s.world_normals = b.world_normals;
+    s.world_vertices_m.assign(b.world_vertices_m.begin(), b.world_vertices_m.begin() + outline_end);
+    s.world_normals.assign(b.world_normals.begin(), b.world_normals.begin() + outline_end);
     s.position_at_rebuild_m = b.position_at_rebuild_m;
     s.rotation_at_rebuild_rad = b.rotation_at_rebuild_rad;
     s.contacts = w.contacts;
@@ -63,6 +65,14 @@ std::optional<std::string> state_mismatch(const World& w, const WorldState& s) {
             if (s.local_vertices_m[k].x != b.local_vertices_m[k].x || s.local_vertices_m[k].y != b.local_vertices_m[k].y)
                 return fmt::format("body '{}' has another shape in the state than in the scenario (corner {})", b.name[i],
                                    k - b.vertex_begin[i] + 1);
+    // The contact table's parts must be parts of its bodies (the same outlines cut the same way).
+    for (std::size_t p = 0; p < s.contacts.size(); ++p) {
+        const PairContact& pair = s.contacts[p];
+        if (pair.part_a >= b.part_total() || pair.part_b >= b.part_total() || b.part_body[pair.part_a] != pair.a ||
+            b.part_body[pair.part_b] != pair.b)
+            return fmt::format("contact pair {} of the state joins parts {} and {}, which are not parts of bodies '{}' and "
+                               "'{}' in the scenario", p + 1, pair.part_a, pair.part_b, b.name[pair.a], b.name[pair.b]);
+    }
     return std::nullopt;
 }
 
@@ -94,7 +104,7 @@ void restore_bodies_and_contacts(World& w, const WorldState& s, bool dynamic_onl
     w.stability = s.stability;
     w.contacts = s.contacts;
     w.candidate_pairs.clear();
-    for (const PairContact& pair : w.contacts) w.candidate_pairs.emplace_back(pair.a, pair.b);
+    for (const PairContact& pair : w.contacts) w.candidate_pairs.emplace_back(pair.part_a, pair.part_b);
     index_pairs_by_body(w);
     // Bodies taken out of the model stay out: static, and moved by no force.
     w.domain.left = s.left;
