@@ -9,6 +9,7 @@
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/rounded_contact.hpp"
 #include "world/settling.hpp"
 #include "world/simulation_error.hpp"
 #include "world/step.hpp"
@@ -63,6 +64,9 @@ void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
     for (std::size_t k = 0; k < def.vertices_m.size(); ++k)
         b.local_normals.push_back(
             edge_normal(b.local_vertices_m[first + k], b.local_vertices_m[first + (k + 1) % def.vertices_m.size()]));
+    if (auto problem = rounding_problem(def.vertices_m, std::vector<Vec2>(b.local_normals.begin() + first, b.local_normals.end()),
+                                        b.least_width_m.back(), contact.rounding_m))
+        throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
     b.position_m.push_back(props.centroid_m);
     b.initial_position_m.push_back(props.centroid_m);
     b.rotation_rad.push_back(0.0);
