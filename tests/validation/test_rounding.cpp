@@ -52,7 +52,11 @@ constexpr double rocking_r = 0.8e-3;  // [m] 1e-3 x the block's height
 
 Model rocking_model(double theta0, double duration, double rounding_m) {
     const Vec2 pivot{-b, 0.0};
-    const Vec2 center = pivot + Rotation::from_angle(theta0).apply(Vec2{b, h});
+    // Rounded, the block stands on the arc of its corner: lowered so that the arc's lowest point
+    // (r below the arc's centre, r in from the corner along both edges) touches the table.
+    const Rotation turn = Rotation::from_angle(theta0);
+    const double lowest_arc_point = turn.apply(Vec2{rounding_m, rounding_m}).y - rounding_m;
+    const Vec2 center = pivot + turn.apply(Vec2{b, h}) - Vec2{0.0, lowest_arc_point};
     BodyDef block = testing::rectangle_body("block", BodyKind::dynamic, 2 * b, 2 * h, center, theta0, 1536.0);
     BodyDef table = testing::rectangle_body("table", BodyKind::driven, 4.0, 0.2, {0, -0.1});
     Model m = testing::model_with({table, block}, testing::contact(1.0e9, 2.0, damping_ratio_paper(0.2), 1.0), 2.0e-5, g,
