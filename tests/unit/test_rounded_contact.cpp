@@ -169,6 +169,53 @@ TEST(RoundedContact, SeparatingEdgeCachedForPairsApart) {
     EXPECT_TRUE(separated_by_cached_edge(a.view(), b.view(), cache));
 }
 
+TEST(RoundedContact, AxisCacheGivesTheFullTestsResultBitForBit) {
+    // A block rocking and sliding on a table, and then tipping onto its corner arc: at each pose
+    // the contact with the cache kept from step to step (drift and turn added as the narrow
+    // phase does) equals the contact found by the full test, bit for bit.
+    const Poly table = box(4.0, 0.2, {0.0, -0.1});
+    AxisCache cache;
+    std::uint32_t reference_cached = no_reference, reference_full = no_reference;
+    Vec2 last_centre{};
+    double last_angle = 0.0;
+    int cached_steps = 0;
+    for (int k = 0; k <= 30000; ++k) {
+        const double angle = 0.3 * std::sin(0.0002 * k) * std::sin(0.0002 * k);  // to 0.27 rad and back
+        const Vec2 centre{0.1 * std::sin(0.0003 * k), 0.0};
+        // The rounded block's lowest point (r below its core's, the core being the rectangle
+        // 2r smaller) 0.1 mm into the table.
+        double lowest = INFINITY;
+        for (Vec2 v : rectangle_vertices(0.5 - 2.0 * r, 0.2 - 2.0 * r, centre, angle)) lowest = std::min(lowest, v.y - r);
+        const Poly block = box(0.5, 0.2, centre - Vec2{0.0, lowest + 1e-4}, angle);
+        if (k > 0) {
+            // (Lever: the distance between the centres plus both bounding radii, as the narrow phase.)
+            cache.drift_m += norm_bound(centre - last_centre) + std::abs(angle - last_angle) * 2.5 + 1e-12;
+            cache.turn_rad += std::abs(angle - last_angle) + 1e-15;
+        }
+        last_centre = centre;
+        last_angle = angle;
+        const bool usable = cache.others_max_separation_m < INFINITY;
+        ContactManifold with_cache, full;
+        AxisCache fresh;
+        const bool touch_cached = collide_rounded(table.view(), block.view(), r, reference_cached, with_cache, cache);
+        const bool touch_full = collide_rounded(table.view(), block.view(), r, reference_full, full, fresh);
+        if (usable && cache.others_max_separation_m < INFINITY && cache.drift_m > 0.0) ++cached_steps;
+        ASSERT_TRUE(touch_full) << k;
+        ASSERT_EQ(touch_cached, touch_full) << k;
+        ASSERT_EQ(with_cache.count, full.count) << k;
+        EXPECT_EQ(with_cache.reference, full.reference) << k;
+        EXPECT_EQ(with_cache.stiffness_scale, full.stiffness_scale) << k;
+        for (std::uint32_t i = 0; i < full.count; ++i) {
+            EXPECT_EQ(with_cache.points[i].overlap_m, full.points[i].overlap_m) << k;
+            EXPECT_EQ(with_cache.points[i].point_m, full.points[i].point_m) << k;
+            EXPECT_EQ(with_cache.points[i].feature, full.points[i].feature) << k;
+        }
+        reference_cached = with_cache.count > 0 ? with_cache.reference : no_reference;
+        reference_full = full.count > 0 ? full.reference : no_reference;
+    }
+    EXPECT_GT(cached_steps, 20000);  // the cache did serve most steps
+}
+
 TEST(RoundedContact, RefusesARoundingTooLargeForTheBody) {
     const Poly brick = box(0.4, 0.1, {0.0, 0.0});
     EXPECT_FALSE(rounding_problem(brick.v, brick.n, 0.1, 0.0).has_value());
