@@ -1,6 +1,6 @@
 // Rounded corners ([contact] rounding) leave the validated cases as they were: with arcs of
 // r = 1e-3 x the block's size, Newmark sliding, Housner's free rocking and impact restitution,
-// and the static rocking onset are matched within the same tolerances as with sharp corners
+// the restitution of flat and one-corner drops, and the static rocking onset are matched within the same tolerances as with sharp corners
 // (tests/validation/test_sliding.cpp, test_rocking.cpp, whose reasons for the tolerances hold
 // here unchanged), and the rounded runs stay close to the sharp ones.
 //
@@ -141,6 +141,56 @@ TEST(Rounding, RockingOnsetUnchanged) {
     EXPECT_NEAR(onset / threshold, 1.0, 0.02);
     std::printf("rounded (r = %.1f mm) rocking onset at %.4f g b/h; arc pivot g (b - r)/(h - r) = %.4f g b/h\n",
                 1e3 * rocking_r, onset / threshold, (b - rocking_r) / (h - rocking_r) / (b / h));
+}
+
+// test_restitution_impact.cpp's drops (no gravity, 1 m/s, kn = 1e6 N/m, dt = 1e-6 s) on a
+// 0.5 x 0.2 m block rounded with r = 0.5 mm; its tolerances: 2% flat, 3% on one corner.
+Model drop_model(double tilt_rad, double h_n, double rounding_m) {
+    Model m = testing::model_with({testing::rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0, -0.1}),
+                                   testing::rectangle_body("block", BodyKind::dynamic, 0.5, 0.2, {0, 0.2}, tilt_rad)},
+                                  testing::contact(1.0e6, 0.0, h_n, 0.0), 1.0e-6, 0.0);
+    m.bodies[1].velocity_m_s = {0.0, -1.0};
+    m.contact.rounding_m = rounding_m;
+    return m;
+}
+
+void step_through_impact(World& w) {
+    bool touched = false;
+    testing::step_until(w, 0.3, [&](const World& world) {
+        const int n = testing::contact_points_of(world, 1);
+        if (n > 0) touched = true;
+        return touched && n == 0;
+    });
+    ASSERT_TRUE(touched);
+}
+
+TEST(Rounding, ImpactRestitutionUnchanged) {
+    const double r = 0.5e-3;
+    // Flat: two points, as with sharp corners; the rebound is the requested e.
+    const double e = 0.6;
+    World flat = build_world(drop_model(0.0, damping_ratio_rebound(e), r));
+    step_through_impact(flat);
+    EXPECT_NEAR(flat.bodies.velocity_m_s[1].y, e, 0.02 * e);
+    // One corner: the arc lands at its lowest point, r below the arc's centre; the corner's
+    // damping ratio is h sqrt(m / m_eff) with the lever of that point (test_restitution_impact.cpp).
+    const double tilt = 0.2;
+    const double h = damping_ratio_rebound(e);
+    World w = build_world(drop_model(tilt, h, r));
+    Vec2 arc_centre{0, 1e9};
+    for (Vec2 v : rectangle_vertices(0.5 - 2.0 * r, 0.2 - 2.0 * r, w.bodies.position_m[1], tilt))
+        if (v.y < arc_centre.y) arc_centre = v;
+    const double d = arc_centre.x - w.bodies.position_m[1].x;
+    const double mass = w.bodies.mass_kg[1];
+    const double m_eff = 1.0 / (1.0 / mass + d * d / w.bodies.inertia_kg_m2[1]);
+    const Vec2 start = w.bodies.position_m[1];
+    step_through_impact(w);
+    // The lowest point of the arc now (the block has turned a little).
+    const Vec2 lowest = w.bodies.position_m[1] + Rotation::from_angle(w.bodies.rotation_rad[1]).apply(arc_centre - start) - Vec2{0.0, r};
+    const double point_vy = w.bodies.velocity_m_s[1].y + w.bodies.angular_velocity_rad_s[1] * (lowest - w.bodies.position_m[1]).x;
+    const double expected = restitution_no_tension(h * std::sqrt(mass / m_eff));
+    EXPECT_NEAR(point_vy, expected, 0.03 * expected);
+    std::printf("rounded drops: flat rebound %.4f (requested %.3f); one corner %.4f, predicted %.4f\n",
+                flat.bodies.velocity_m_s[1].y, e, point_vy, expected);
 }
 
 }  // namespace
