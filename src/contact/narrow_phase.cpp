@@ -50,7 +50,7 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     pair.axis_cache.turn_rad +=
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
-    if (w.contact.rounding_m > 0.0)
+    if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
         collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache);
     else
         collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);

@@ -15,7 +15,7 @@ std::uint32_t previous_corner(std::uint32_t i, std::uint32_t count) { return i =
 // How far corner i of the core lies inside corner i of the polygon: the core corner is on the
 // lines of edges i-1 and i moved inward by r, so with o = r (n_{i-1} + n_i) / (1 + n_{i-1} . n_i),
 // n . o = r for both normals, and the core corner is v_i - o.
-Vec2 corner_offset(Vec2 normal_before, Vec2 normal_after, double r) {
+[[gnu::always_inline]] inline Vec2 corner_offset(Vec2 normal_before, Vec2 normal_after, double r) {
     return (r / (1.0 + dot(normal_before, normal_after))) * (normal_before + normal_after);
 }
 
@@ -30,8 +30,8 @@ Vec2 core_corner(const PolygonView& p, std::uint32_t i, double r) { return p.ver
 // (first bracket 0, as the sharp model sees them) give exactly 2r, so that the rounded bodies
 // touch without a contact, as sharp ones do; computing it from the core corners instead would
 // leave an overlap of a few ulps, and such pairs would cost a contact every step.
-double corner_separation(const PolygonView& poly, std::uint32_t i, const PolygonView& other, std::uint32_t j,
-                         Vec2 other_offset_j, double r) {
+[[gnu::always_inline]] inline double corner_separation(const PolygonView& poly, std::uint32_t i, const PolygonView& other,
+                                                       std::uint32_t j, Vec2 other_offset_j, double r) {
     const Vec2 n = poly.normals[i];
     return (dot(n, other.vertices[j]) - dot(n, poly.vertices[i])) + (r - dot(n, other_offset_j));
 }
@@ -148,7 +148,8 @@ struct ClipPoint {
 
 // Keeps the part of segment (in[0], in[1]) where dot(direction, x) <= offset; a point made by
 // the cut takes the feature id cut.
-int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double offset, std::uint32_t cut) {
+[[gnu::always_inline]] inline int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double offset,
+                                               std::uint32_t cut) {
     int n = 0;
     const double d0 = dot(direction, in[0].p) - offset;
     const double d1 = dot(direction, in[1].p) - offset;
@@ -169,7 +170,8 @@ struct FaceCorners {
     double separation_i1, separation_i2;  ///< [m]
 };
 
-FaceCorners face_corners(const PolygonView& ref, std::uint32_t edge, const PolygonView& inc, std::uint32_t incident, double r) {
+[[gnu::always_inline]] inline FaceCorners face_corners(const PolygonView& ref, std::uint32_t edge, const PolygonView& inc,
+                                                       std::uint32_t incident, double r) {
     FaceCorners c;
     c.r1 = edge;
     c.r2 = next_corner(edge, ref.count);
@@ -188,8 +190,8 @@ FaceCorners face_corners(const PolygonView& ref, std::uint32_t edge, const Polyg
 // false when the incident edge lies outside the reference edge's extent, or (separated cores
 // only) when the deepest part of the incident core lies outside it, so that the closest points
 // are not on this edge. a, b: the drawn polygons (the four core corners it needs are made here).
-bool face_contact(const PolygonView& a, const PolygonView& b, double r, const Reference& chosen, const FaceCorners& fc,
-                  ContactManifold& m) {
+[[gnu::always_inline]] inline bool face_contact(const PolygonView& a, const PolygonView& b, double r, const Reference& chosen,
+                                               const FaceCorners& fc, ContactManifold& m) {
     const PolygonView& ref = chosen.owner == 0 ? a : b;
     const PolygonView& inc = chosen.owner == 0 ? b : a;
     const std::uint32_t inc_owner = 1u - chosen.owner;
@@ -323,8 +325,9 @@ namespace {
 // its separation at the reference edge's two corners) or the others' at the last full test
 // moved by the drift since. Returns nullopt when the full test is needed; owner 2: the
 // reference edge now keeps the cores 2r apart.
-std::optional<Reference> cached_reference(const PolygonView& a, const PolygonView& b, double r,
-                                          std::uint32_t previous_reference, const AxisCache& cache, FaceCorners& fc) {
+[[gnu::always_inline]] inline std::optional<Reference> cached_reference(const PolygonView& a, const PolygonView& b, double r,
+                                                                         std::uint32_t previous_reference, const AxisCache& cache,
+                                                                         FaceCorners& fc) {
     if (previous_reference == no_reference || !(cache.others_max_separation_m < INFINITY)) return std::nullopt;
     const Reference kept{feature_owner(previous_reference), feature_vertex(previous_reference)};
     const PolygonView& ref = kept.owner == 0 ? a : b;
@@ -378,7 +381,7 @@ bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding
                      ContactManifold& manifold, AxisCache& cache) {
     const double r = rounding_m;
     manifold.count = 0;
-    FaceCorners fc;
+    FaceCorners fc{};
     std::optional<Reference> chosen = cached_reference(a, b, r, previous_reference, cache, fc);
     if (chosen && chosen->owner == 2) {
         cache = AxisCache{};
