@@ -23,8 +23,6 @@ Vec2 corner_offset(const PolygonView& p, std::uint32_t i, double r) {
     return corner_offset(p.normals[previous_corner(i, p.count)], p.normals[i], r);
 }
 
-Vec2 core_corner(const PolygonView& p, std::uint32_t i, double r) { return p.vertices[i] - corner_offset(p, i, r); }
-
 // The separation of the cores along edge i's normal n, measured at corner j of the other
 // polygon: (n . v_j - n . v_i) + (r - n . o_j). Grouped so that drawn faces exactly touching
 // (first bracket 0, as the sharp model sees them) give exactly 2r, so that the rounded bodies
@@ -36,22 +34,30 @@ Vec2 core_corner(const PolygonView& p, std::uint32_t i, double r) { return p.ver
     return (dot(n, other.vertices[j]) - dot(n, poly.vertices[i])) + (r - dot(n, other_offset_j));
 }
 
-// Every corner offset of a polygon: on the stack for the usual polygons, on the heap for many-sided ones.
-class CornerOffsets {
+// Room for one vector per corner: on the stack for the usual polygons, on the heap for
+// many-sided ones (the narrow phase runs for every pair at every step: no allocation there).
+class CornerVectors {
 public:
-    CornerOffsets(const PolygonView& p, double r) {
-        data_ = p.count <= small_count ? small_ : (large_.resize(p.count), large_.data());
-        for (std::uint32_t i = 0; i < p.count; ++i) data_[i] = corner_offset(p, i, r);
-    }
-    CornerOffsets(const CornerOffsets&) = delete;
-    CornerOffsets& operator=(const CornerOffsets&) = delete;
+    explicit CornerVectors(std::uint32_t count) : data_(count <= small_count ? small_ : (large_.resize(count), large_.data())) {}
+    CornerVectors(const CornerVectors&) = delete;
+    CornerVectors& operator=(const CornerVectors&) = delete;
+    Vec2& operator[](std::uint32_t i) { return data_[i]; }
     Vec2 operator[](std::uint32_t i) const { return data_[i]; }
+    const Vec2* data() const { return data_; }
 
 private:
     static constexpr std::uint32_t small_count = 16;
     Vec2 small_[small_count];
     std::vector<Vec2> large_;
-    Vec2* data_ = nullptr;
+    Vec2* data_;
+};
+
+// Every corner offset of a polygon.
+class CornerOffsets : public CornerVectors {
+public:
+    CornerOffsets(const PolygonView& p, double r) : CornerVectors(p.count) {
+        for (std::uint32_t i = 0; i < p.count; ++i) (*this)[i] = corner_offset(p, i, r);
+    }
 };
 
 // Separation of the other core from edge i of poly's core.
@@ -353,10 +359,11 @@ namespace {
 }
 
 // Corner contact: one point between the closest points of the separated cores.
-bool corner_contact(const PolygonView& a, const PolygonView& b, double r, const Reference& chosen, ContactManifold& m) {
-    std::vector<Vec2> corners_a(a.count), corners_b(b.count);
-    for (std::uint32_t i = 0; i < a.count; ++i) corners_a[i] = core_corner(a, i, r);
-    for (std::uint32_t j = 0; j < b.count; ++j) corners_b[j] = core_corner(b, j, r);
+bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffsets& offsets_a,
+                    const CornerOffsets& offsets_b, double r, const Reference& chosen, ContactManifold& m) {
+    CornerVectors corners_a(a.count), corners_b(b.count);
+    for (std::uint32_t i = 0; i < a.count; ++i) corners_a[i] = a.vertices[i] - offsets_a[i];
+    for (std::uint32_t j = 0; j < b.count; ++j) corners_b[j] = b.vertices[j] - offsets_b[j];
     const PolygonView ca{corners_a.data(), a.normals, a.count};
     const PolygonView cb{corners_b.data(), b.normals, b.count};
     const Vec2 n = (chosen.owner == 0 ? a : b).normals[chosen.edge];
@@ -413,7 +420,7 @@ bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding
     }
     manifold.count = 0;
     if (chosen->separation_m < 0.0) return false;  // overlapping cores, incident edge beside the reference (as sharp)
-    return corner_contact(a, b, r, *chosen, manifold);
+    return corner_contact(a, b, offsets_a, offsets_b, r, *chosen, manifold);
 }
 
 }  // namespace blockdem
