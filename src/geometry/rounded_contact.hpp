@@ -26,8 +26,9 @@
 // single corner point that follows it (the sharp model softens it to zero instead, because there
 // the contact really ends).
 //
-// The cores are computed from the polygons' current corners and edge normals at each call (a
-// core corner is v_i - r (n_{i-1} + n_i) / (1 + n_{i-1} . n_i): a few operations per corner).
+// The cores' corners are made from the polygons' current corners and edge normals when needed
+// (a core corner is v_i - r (n_{i-1} + n_i) / (1 + n_{i-1} . n_i): a few operations per corner);
+// a lasting face contact needs only the four corners of its two edges (see the AxisCache).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -48,8 +49,11 @@ std::optional<std::string> rounding_problem(const std::vector<Vec2>& vertices, c
 
 /// The contact of the rounded polygons a and b (rounding_m > 0): fills manifold like
 /// collide_polygons (normal from a to b, points, reference, stiffness_scale). previous_reference:
-/// last step's reference edge for this pair. cache: only its separating edge is set (an edge of the
-/// cores that kept them more than 2r apart), the rest is cleared. Returns true if they touch.
+/// last step's reference edge for this pair. cache: as collide_polygons' AxisCache, on the cores
+/// (the caller adds drift and turn each step); a pair in lasting face contact skips the full test
+/// with the same result, bit for bit. Its separating edge, for a pair apart, is an edge that kept
+/// the cores 2r or more apart: the caller's test of it on the drawn polygons is then conservative
+/// (drawn polygons apart means rounded ones apart). Returns true if they touch.
 bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding_m, std::uint32_t previous_reference,
                      ContactManifold& manifold, AxisCache& cache);
 
