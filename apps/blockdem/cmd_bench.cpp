@@ -32,6 +32,7 @@ struct BenchOptions {
     double work = 3e6;          ///< block-steps per timed run (steps = work / N, 3 to 5000)
     int repeats = 3;
     int warmup = 5;             ///< untimed steps after building (contacts close as the blocks settle)
+    double rounding_m = 0.0;    ///< [m] [contact] rounding of the scene's corners (0: sharp, the scenes' own)
     double idle_wait_s = 0.0;   ///< wait up to this long for the CPUs to be 90% idle before each run
     std::string markdown;
 };
@@ -96,7 +97,9 @@ struct TimedWorld {
 std::vector<TimedWorld> prepare_cases(const std::string& scene, int n, const BenchOptions& o) {
     if (o.threads.empty()) throw std::invalid_argument("--threads: give at least one thread count");
     set_step_threads(o.threads.front());
-    World w = build_world(make_scene(scene, n));
+    Model model = make_scene(scene, n);
+    model.contact.rounding_m = o.rounding_m;
+    World w = build_world(model);
     for (int i = 0; i < o.warmup; ++i) step(w);
     BenchResult r;
     r.scene = scene;
@@ -209,6 +212,9 @@ void add_bench_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--work", o->work, "block-steps per timed run (steps = work / blocks, 3 to 5000)")->capture_default_str();
     cmd->add_option("--warmup", o->warmup, "untimed steps before timing (same for every size: same state)")
+        ->capture_default_str();
+    cmd->add_option("--rounding", o->rounding_m, "corner radius [m] of every block ([contact] rounding); 0: sharp")
+        ->check(CLI::NonNegativeNumber)
         ->capture_default_str();
     cmd->add_option("--repeats", o->repeats, "timed runs per case; the fastest is reported")->capture_default_str();
     cmd->add_option("--idle-wait", o->idle_wait_s, "wait up to this many seconds for idle CPUs before each run")

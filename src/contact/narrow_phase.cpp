@@ -5,6 +5,7 @@
 
 #include "contact/contact_table.hpp"
 #include "geometry/polygon_contact.hpp"
+#include "geometry/rounded_contact.hpp"
 #include "world/parallel.hpp"
 
 namespace blockdem {
@@ -54,7 +55,10 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     pair.axis_cache.turn_rad +=
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
-    collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
+    if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
+        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache);
+    else
+        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
     // Corners of one pair are at least a face apart, so 5% of the smaller part is "same place".
     const double match_distance = 0.05 * std::min(b.part_radius_m[part_a], b.part_radius_m[part_b]);
     return update_pair_geometry(pair, manifold, match_distance);

@@ -237,6 +237,10 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
     pairs.parameters.assign(pairs.materials.size() * pairs.materials.size(), defaults);
     const std::vector<ElasticMaterial> elastic = read_materials(t, material, pairs);
     if (material) derive_stiffness(pairs, elastic, bodies);
+    if (auto rounding = t.optional_number("rounding")) {
+        if (!(*rounding >= 0.0)) t.fail("rounding", fmt::format("is a corner radius [m] and must be >= 0, got {}", *rounding));
+        pairs.rounding_m = *rounding;
+    }
     std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
     for (TableReader pair : t.table_array("pairs")) {
         const auto names = [&] {

@@ -10,6 +10,7 @@
 #include "dynamics/critical_time_step.hpp"
 #include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/rounded_contact.hpp"
 #include "world/settling.hpp"
 #include "world/simulation_error.hpp"
 #include "world/step.hpp"
@@ -23,6 +24,13 @@ std::uint32_t World::body_id(const std::string& wanted) const {
 }
 
 namespace {
+
+// The outward unit normals of a counter-clockwise convex polygon's edges (edge k: corner k to k+1).
+std::vector<Vec2> part_normals(const std::vector<Vec2>& part) {
+    std::vector<Vec2> normals;
+    for (std::size_t k = 0; k < part.size(); ++k) normals.push_back(edge_normal(part[k], part[(k + 1) % part.size()]));
+    return normals;
+}
 
 // Adds body def with its outline's corners; returns its convex parts (relative to the world
 // origin), whose corners build_world appends after every outline.
@@ -39,6 +47,9 @@ std::vector<std::vector<Vec2>> add_body(Bodies& b, const BodyDef& def, const Mat
         if (auto problem = convexity_problem(part))
             throw ModelError(fmt::format("body '{}': a convex part of its outline is not valid: {}", def.name, *problem));
         thinnest = std::min(thinnest, least_width(part));
+        // Rounded corners are those of each convex part: every part must keep a core.
+        if (auto problem = rounding_problem(part, part_normals(part), least_width(part), contact.rounding_m))
+            throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
     }
     // The shoelace sums of polygon_properties hold for any simple polygon, convex or not: the
     // union's area, centroid and polar moment in closed form, not summed over the parts.

@@ -1,0 +1,426 @@
+#include "geometry/rounded_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace blockdem {
+namespace {
+
+std::uint32_t next_corner(std::uint32_t i, std::uint32_t count) { return i + 1 == count ? 0 : i + 1; }
+std::uint32_t previous_corner(std::uint32_t i, std::uint32_t count) { return i == 0 ? count - 1 : i - 1; }
+
+// How far corner i of the core lies inside corner i of the polygon: the core corner is on the
+// lines of edges i-1 and i moved inward by r, so with o = r (n_{i-1} + n_i) / (1 + n_{i-1} . n_i),
+// n . o = r for both normals, and the core corner is v_i - o.
+[[gnu::always_inline]] inline Vec2 corner_offset(Vec2 normal_before, Vec2 normal_after, double r) {
+    return (r / (1.0 + dot(normal_before, normal_after))) * (normal_before + normal_after);
+}
+
+Vec2 corner_offset(const PolygonView& p, std::uint32_t i, double r) {
+    return corner_offset(p.normals[previous_corner(i, p.count)], p.normals[i], r);
+}
+
+// The separation of the cores along edge i's normal n, measured at corner j of the other
+// polygon: (n . v_j - n . v_i) + (r - n . o_j). Grouped so that drawn faces exactly touching
+// (first bracket 0, as the sharp model sees them) give exactly 2r, so that the rounded bodies
+// touch without a contact, as sharp ones do; computing it from the core corners instead would
+// leave an overlap of a few ulps, and such pairs would cost a contact every step.
+[[gnu::always_inline]] inline double corner_separation(const PolygonView& poly, std::uint32_t i, const PolygonView& other,
+                                                       std::uint32_t j, Vec2 other_offset_j, double r) {
+    const Vec2 n = poly.normals[i];
+    return (dot(n, other.vertices[j]) - dot(n, poly.vertices[i])) + (r - dot(n, other_offset_j));
+}
+
+// Room for one vector per corner: on the stack for the usual polygons, on the heap for
+// many-sided ones (the narrow phase runs for every pair at every step: no allocation there).
+class CornerVectors {
+public:
+    explicit CornerVectors(std::uint32_t count) : data_(count <= small_count ? small_ : (large_.resize(count), large_.data())) {}
+    CornerVectors(const CornerVectors&) = delete;
+    CornerVectors& operator=(const CornerVectors&) = delete;
+    Vec2& operator[](std::uint32_t i) { return data_[i]; }
+    Vec2 operator[](std::uint32_t i) const { return data_[i]; }
+    const Vec2* data() const { return data_; }
+
+private:
+    static constexpr std::uint32_t small_count = 16;
+    Vec2 small_[small_count];
+    std::vector<Vec2> large_;
+    Vec2* data_;
+};
+
+// Every corner offset of a polygon.
+class CornerOffsets : public CornerVectors {
+public:
+    CornerOffsets(const PolygonView& p, double r) : CornerVectors(p.count) {
+        for (std::uint32_t i = 0; i < p.count; ++i) (*this)[i] = corner_offset(p, i, r);
+    }
+};
+
+// Separation of the other core from edge i of poly's core.
+double edge_separation(const PolygonView& poly, std::uint32_t i, const PolygonView& other, const CornerOffsets& offsets,
+                       double r) {
+    double least = corner_separation(poly, i, other, 0, offsets[0], r);
+    for (std::uint32_t j = 1; j < other.count; ++j) least = std::min(least, corner_separation(poly, i, other, j, offsets[j], r));
+    return least;
+}
+
+// How much less a reference edge may separate the cores than the best edge and still be kept
+// [m]: the sharp model's 2% of the penetration once the cores overlap, and a round-off margin
+// while they are apart (the normal is exact either way then: this only decides between parallel
+// faces). It never grows with the best separation, which the cache's test below relies on.
+double reference_tolerance(double best_separation_m, double r) { return 0.02 * std::max(0.0, -best_separation_m) + 1e-9 * r; }
+
+struct Reference {
+    std::uint32_t owner = 0;
+    std::uint32_t edge = 0;
+    double separation_m = -std::numeric_limits<double>::infinity();  ///< [m]
+};
+
+// The edge of either core with the largest separation, or nullopt (and separating set) when
+// one separates the cores by 2r or more. Last step's edge is kept while it is within a
+// tolerance of the best (reference_tolerance).
+std::optional<Reference> choose_reference(const PolygonView& a, const PolygonView& b, const CornerOffsets& offsets_a,
+                                          const CornerOffsets& offsets_b, double r, std::uint32_t previous_reference,
+                                          std::uint32_t& separating) {
+    Reference best;
+    double previous_separation = -std::numeric_limits<double>::infinity();
+    for (std::uint32_t owner = 0; owner < 2; ++owner) {
+        const PolygonView& poly = owner == 0 ? a : b;
+        const PolygonView& other = owner == 0 ? b : a;
+        for (std::uint32_t i = 0; i < poly.count; ++i) {
+            const double s = edge_separation(poly, i, other, owner == 0 ? offsets_b : offsets_a, r);
+            if (s >= 2.0 * r) {
+                separating = make_feature(owner, i);
+                return std::nullopt;
+            }
+            if (s > best.separation_m) best = {owner, i, s};
+            if (make_feature(owner, i) == previous_reference) previous_separation = s;
+        }
+    }
+    if (previous_reference != no_reference && previous_separation >= best.separation_m - reference_tolerance(best.separation_m, r))
+        return Reference{feature_owner(previous_reference), feature_vertex(previous_reference), previous_separation};
+    return best;
+}
+
+// The largest separation over every edge of both cores except the two named ones.
+double largest_other_separation(const PolygonView& a, const PolygonView& b, const CornerOffsets& offsets_a,
+                                const CornerOffsets& offsets_b, double r, std::uint32_t skip1, std::uint32_t skip2) {
+    double largest = -std::numeric_limits<double>::infinity();
+    for (std::uint32_t owner = 0; owner < 2; ++owner) {
+        const PolygonView& poly = owner == 0 ? a : b;
+        const PolygonView& other = owner == 0 ? b : a;
+        for (std::uint32_t i = 0; i < poly.count; ++i) {
+            const std::uint32_t f = make_feature(owner, i);
+            if (f != skip1 && f != skip2)
+                largest = std::max(largest, edge_separation(poly, i, other, owner == 0 ? offsets_b : offsets_a, r));
+        }
+    }
+    return largest;
+}
+
+// The edge of incident whose outward normal points most against n, and by how much it beats the
+// runner-up (difference of the two dot products).
+struct IncidentEdge {
+    std::uint32_t edge = 0;
+    double margin = 0.0;  ///< [-]
+};
+
+IncidentEdge incident_edge(const PolygonView& incident, Vec2 n) {
+    IncidentEdge best;
+    double most_against = std::numeric_limits<double>::infinity();
+    double runner_up = std::numeric_limits<double>::infinity();
+    for (std::uint32_t i = 0; i < incident.count; ++i) {
+        const double d = dot(incident.normals[i], n);
+        if (d < most_against) {
+            runner_up = most_against;
+            most_against = d;
+            best.edge = i;
+        } else {
+            runner_up = std::min(runner_up, d);
+        }
+    }
+    best.margin = runner_up - most_against;
+    return best;
+}
+
+struct ClipPoint {
+    Vec2 p;
+    std::uint32_t feature;
+};
+
+// Keeps the part of segment (in[0], in[1]) where dot(direction, x) <= offset; a point made by
+// the cut takes the feature id cut.
+[[gnu::always_inline]] inline int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double offset,
+                                               std::uint32_t cut) {
+    int n = 0;
+    const double d0 = dot(direction, in[0].p) - offset;
+    const double d1 = dot(direction, in[1].p) - offset;
+    if (d0 <= 0.0) out[n++] = in[0];
+    if (d1 <= 0.0) out[n++] = in[1];
+    if (d0 * d1 < 0.0) {
+        const double f = d0 / (d0 - d1);
+        out[n++] = {in[0].p + f * (in[1].p - in[0].p), cut};
+    }
+    return n;
+}
+
+// What a face contact needs of the four corners of the reference edge (r1, r2) and the incident
+// edge (i1, i2): their offsets, and the incident corners' separations from the reference edge.
+struct FaceCorners {
+    std::uint32_t r1, r2, i1, i2;
+    Vec2 offset_r1, offset_r2, offset_i1, offset_i2;
+    double separation_i1, separation_i2;  ///< [m]
+};
+
+[[gnu::always_inline]] inline FaceCorners face_corners(const PolygonView& ref, std::uint32_t edge, const PolygonView& inc,
+                                                       std::uint32_t incident, double r) {
+    FaceCorners c;
+    c.r1 = edge;
+    c.r2 = next_corner(edge, ref.count);
+    c.i1 = incident;
+    c.i2 = next_corner(incident, inc.count);
+    c.offset_r1 = corner_offset(ref, c.r1, r);
+    c.offset_r2 = corner_offset(ref, c.r2, r);
+    c.offset_i1 = corner_offset(inc, c.i1, r);
+    c.offset_i2 = corner_offset(inc, c.i2, r);
+    c.separation_i1 = corner_separation(ref, edge, inc, c.i1, c.offset_i1, r);
+    c.separation_i2 = corner_separation(ref, edge, inc, c.i2, c.offset_i2, r);
+    return c;
+}
+
+// The face contact on reference edge `edge` of `owner`'s core, incident edge i1 of the other's:
+// false when the incident edge lies outside the reference edge's extent, or (separated cores
+// only) when the deepest part of the incident core lies outside it, so that the closest points
+// are not on this edge. a, b: the drawn polygons (the four core corners it needs are made here).
+[[gnu::always_inline]] inline bool face_contact(const PolygonView& a, const PolygonView& b, double r, const Reference& chosen,
+                                               const FaceCorners& fc, ContactManifold& m) {
+    const PolygonView& ref = chosen.owner == 0 ? a : b;
+    const PolygonView& inc = chosen.owner == 0 ? b : a;
+    const std::uint32_t inc_owner = 1u - chosen.owner;
+    const Vec2 n = ref.normals[chosen.edge];
+    const Vec2 v1 = ref.vertices[fc.r1] - fc.offset_r1;
+    const Vec2 v2 = ref.vertices[fc.r2] - fc.offset_r2;
+    const Vec2 tangent = perp(n);
+    const ClipPoint segment[2] = {{inc.vertices[fc.i1] - fc.offset_i1, make_feature(inc_owner, fc.i1)},
+                                  {inc.vertices[fc.i2] - fc.offset_i2, make_feature(inc_owner, fc.i2)}};
+    ClipPoint once[2];
+    ClipPoint twice[2];
+    if (clip_segment(segment, once, -tangent, -dot(tangent, v1), make_feature(chosen.owner, fc.r1)) < 2) return false;
+    if (clip_segment(once, twice, tangent, dot(tangent, v2), make_feature(chosen.owner, fc.r2)) < 2) return false;
+    // Each clipped point's separation: a corner's is the exact one (corner_separation); a cut
+    // point's is measured from the core edge's line.
+    double separation[2];
+    for (int k = 0; k < 2; ++k) {
+        const std::uint32_t f = twice[k].feature;
+        separation[k] = f == make_feature(inc_owner, fc.i1)   ? fc.separation_i1
+                        : f == make_feature(inc_owner, fc.i2) ? fc.separation_i2
+                                                              : dot(n, twice[k].p - v1);
+    }
+    // The clipped part reaches as deep as the whole core: the closest points are on this edge.
+    // (Round-off: a cut point of an edge parallel to the reference is computed, not a corner.)
+    if (chosen.separation_m >= 0.0 && std::min(separation[0], separation[1]) > chosen.separation_m + 1e-9 * r)
+        return false;
+    m.normal = chosen.owner == 0 ? n : -n;
+    m.reference = make_feature(chosen.owner, chosen.edge);
+    m.count = 0;
+    for (int k = 0; k < 2; ++k) {
+        const double overlap = 2.0 * r - separation[k];
+        if (overlap <= 0.0) continue;
+        ContactGeometry& g = m.points[m.count++];
+        g.point_m = twice[k].p - (r - 0.5 * overlap) * n;  // midway between the two rounded surfaces
+        g.overlap_m = overlap;
+        g.feature = twice[k].feature;
+    }
+    m.stiffness_scale = 1.0;
+    if (m.count == 2) {
+        // Two points closing up become the one corner point that follows (see the header): the
+        // pair's stiffness falls from two points' to one's as the span falls below 1% of the
+        // shorter edge.
+        const Vec2 along_reference = v2 - v1;
+        const Vec2 along_incident = segment[1].p - segment[0].p;
+        const double shorter_squared = std::min(dot(along_reference, along_reference), dot(along_incident, along_incident));
+        const Vec2 span = m.points[1].point_m - m.points[0].point_m;
+        const double span_squared = dot(span, span);
+        if (span_squared < 1e-4 * shorter_squared)
+            m.stiffness_scale = 0.5 + 0.5 * std::sqrt(span_squared) / (0.01 * std::sqrt(shorter_squared));
+    }
+    return m.count > 0;
+}
+
+// The point of segment (p, q) closest to x.
+Vec2 closest_on_segment(Vec2 x, Vec2 p, Vec2 q) {
+    const Vec2 d = q - p;
+    const double dd = dot(d, d);
+    const double f = dd > 0.0 ? std::clamp(dot(x - p, d) / dd, 0.0, 1.0) : 0.0;
+    return p + f * d;
+}
+
+struct ClosestPoints {
+    double distance_m = std::numeric_limits<double>::infinity();  ///< [m]
+    Vec2 on_a;
+    Vec2 on_b;
+    std::uint32_t feature = 0;  ///< the corner in the pair
+};
+
+// The closest points of separated cores a and b (given as core polygons) when they are not on one face: a corner of one
+// against an edge (or corner) of the other. Only corners within 2r of the other core along the
+// separating direction u (from a to b) can be closest, and only edges with such a corner at one
+// end. Corners of the incident core (owner incident_owner) are tried first, so that a
+// corner-to-corner pair is named by the incident corner as in the face contact it follows.
+ClosestPoints closest_core_points(const PolygonView& a, const PolygonView& b, Vec2 u, double r,
+                                  std::uint32_t incident_owner) {
+    double a_most = -std::numeric_limits<double>::infinity();
+    double b_least = std::numeric_limits<double>::infinity();
+    for (std::uint32_t i = 0; i < a.count; ++i) a_most = std::max(a_most, dot(u, a.vertices[i]));
+    for (std::uint32_t j = 0; j < b.count; ++j) b_least = std::min(b_least, dot(u, b.vertices[j]));
+    auto near_a = [&](std::uint32_t i) { return dot(u, a.vertices[i]) > b_least - 2.0 * r; };
+    auto near_b = [&](std::uint32_t j) { return dot(u, b.vertices[j]) < a_most + 2.0 * r; };
+    ClosestPoints best;
+    for (std::uint32_t pass = 0; pass < 2; ++pass) {
+        const std::uint32_t owner = pass == 0 ? incident_owner : 1u - incident_owner;
+        const PolygonView& corners = owner == 0 ? a : b;
+        const PolygonView& edges = owner == 0 ? b : a;
+        for (std::uint32_t i = 0; i < corners.count; ++i) {
+            if (!(owner == 0 ? near_a(i) : near_b(i))) continue;
+            for (std::uint32_t e = 0; e < edges.count; ++e) {
+                const std::uint32_t f = next_corner(e, edges.count);
+                if (!(owner == 0 ? near_b(e) || near_b(f) : near_a(e) || near_a(f))) continue;
+                const Vec2 x = corners.vertices[i];
+                const Vec2 y = closest_on_segment(x, edges.vertices[e], edges.vertices[f]);
+                const double d = length(y - x);
+                if (d < best.distance_m)
+                    best = owner == 0 ? ClosestPoints{d, x, y, make_feature(0, i)} : ClosestPoints{d, y, x, make_feature(1, i)};
+            }
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+std::optional<std::string> rounding_problem(const std::vector<Vec2>& vertices, const std::vector<Vec2>& normals,
+                                            double least_width_m, double rounding_m) {
+    if (rounding_m <= 0.0) return std::nullopt;
+    if (rounding_m >= rounding_width_fraction * least_width_m)
+        return fmt::format("[contact] rounding = {:g} m must be below {:g} of the body's least width ({:g} m), i.e. "
+                           "below {:g} m",
+                           rounding_m, rounding_width_fraction, least_width_m, rounding_width_fraction * least_width_m);
+    const std::uint32_t count = static_cast<std::uint32_t>(vertices.size());
+    for (std::uint32_t i = 0; i < count; ++i) {
+        const std::uint32_t j = next_corner(i, count);
+        const Vec2 from = vertices[i] - corner_offset(normals[previous_corner(i, count)], normals[i], rounding_m);
+        const Vec2 to = vertices[j] - corner_offset(normals[i], normals[j], rounding_m);
+        // The core's edge must keep the drawn edge's direction (else the corners' arcs overlap).
+        if (dot(to - from, vertices[j] - vertices[i]) <= 0.0)
+            return fmt::format("[contact] rounding = {:g} m removes edge {} (corner {} to {}, {:g} m long) of the body: "
+                               "its corners are too sharp or the edge too short for arcs of that radius",
+                               rounding_m, i, i, j, length(vertices[j] - vertices[i]));
+    }
+    return std::nullopt;
+}
+
+namespace {
+
+// The reference edge kept from last step without the full test, when the cache shows that the
+// full test would choose it again (as polygon_contact.cpp's AxisCache, on the cores): its
+// separation is at least every other edge's, which is at most the incident edge's (bounded by
+// its separation at the reference edge's two corners) or the others' at the last full test
+// moved by the drift since. Returns nullopt when the full test is needed; owner 2: the
+// reference edge now keeps the cores 2r apart.
+[[gnu::always_inline]] inline std::optional<Reference> cached_reference(const PolygonView& a, const PolygonView& b, double r,
+                                                                         std::uint32_t previous_reference, const AxisCache& cache,
+                                                                         FaceCorners& fc) {
+    if (previous_reference == no_reference || !(cache.others_max_separation_m < INFINITY)) return std::nullopt;
+    const Reference kept{feature_owner(previous_reference), feature_vertex(previous_reference)};
+    const PolygonView& ref = kept.owner == 0 ? a : b;
+    const PolygonView& inc = kept.owner == 0 ? b : a;
+    if (kept.edge >= ref.count) return std::nullopt;
+    std::uint32_t i1 = feature_vertex(cache.incident);
+    if (!(2.0 * cache.turn_rad + 1e-12 < cache.incident_margin)) {
+        i1 = incident_edge(inc, ref.normals[kept.edge]).edge;
+        if (make_feature(1u - kept.owner, i1) != cache.incident) return std::nullopt;
+    }
+    // The deepest corner of the incident core along n is an end of the incident edge (the edge
+    // whose normal is nearest -n has the support corner at one end).
+    fc = face_corners(ref, kept.edge, inc, i1, r);
+    const double separation = std::min(fc.separation_i1, fc.separation_i2);
+    if (separation >= 2.0 * r) return Reference{2, 0, separation};
+    const double incident_at_most = std::min(corner_separation(inc, i1, ref, fc.r1, fc.offset_r1, r),
+                                             corner_separation(inc, i1, ref, fc.r2, fc.offset_r2, r));
+    const double bound = std::max(incident_at_most, cache.others_max_separation_m + cache.drift_m);
+    // Every edge the full test would weigh separates by at most bound, and the tolerance only
+    // grows as the best falls: meeting it against bound is enough for the full test to keep it.
+    if (separation >= bound - reference_tolerance(bound, r)) return Reference{kept.owner, kept.edge, separation};
+    return std::nullopt;
+}
+
+// Corner contact: one point between the closest points of the separated cores.
+bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffsets& offsets_a,
+                    const CornerOffsets& offsets_b, double r, const Reference& chosen, ContactManifold& m) {
+    CornerVectors corners_a(a.count), corners_b(b.count);
+    for (std::uint32_t i = 0; i < a.count; ++i) corners_a[i] = a.vertices[i] - offsets_a[i];
+    for (std::uint32_t j = 0; j < b.count; ++j) corners_b[j] = b.vertices[j] - offsets_b[j];
+    const PolygonView ca{corners_a.data(), a.normals, a.count};
+    const PolygonView cb{corners_b.data(), b.normals, b.count};
+    const Vec2 n = (chosen.owner == 0 ? a : b).normals[chosen.edge];
+    const Vec2 u = chosen.owner == 0 ? n : -n;
+    const ClosestPoints c = closest_core_points(ca, cb, u, r, 1u - chosen.owner);
+    const double overlap = 2.0 * r - c.distance_m;
+    if (!(overlap > 0.0)) return false;
+    // Cores touching (distance 0) leave the line between them undefined: the reference normal.
+    m.normal = c.distance_m > 1e-12 * r ? (1.0 / c.distance_m) * (c.on_b - c.on_a) : u;
+    m.reference = make_feature(chosen.owner, chosen.edge);
+    m.count = 1;
+    m.points[0].point_m = 0.5 * (c.on_a + c.on_b);
+    m.points[0].overlap_m = overlap;
+    m.points[0].feature = c.feature;
+    m.stiffness_scale = 1.0;
+    return true;
+}
+
+}  // namespace
+
+bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding_m, std::uint32_t previous_reference,
+                     ContactManifold& manifold, AxisCache& cache) {
+    const double r = rounding_m;
+    manifold.count = 0;
+    FaceCorners fc{};
+    std::optional<Reference> chosen = cached_reference(a, b, r, previous_reference, cache, fc);
+    if (chosen && chosen->owner == 2) {
+        cache = AxisCache{};
+        cache.separating = previous_reference;
+        return false;
+    }
+    if (chosen) {
+        if (face_contact(a, b, r, *chosen, fc, manifold)) return true;
+        manifold.count = 0;  // the closest points left the reference edge: the full test decides
+    }
+    cache = AxisCache{};
+    const CornerOffsets offsets_a(a, r);
+    const CornerOffsets offsets_b(b, r);
+    std::uint32_t separating = no_reference;
+    chosen = choose_reference(a, b, offsets_a, offsets_b, r, previous_reference, separating);
+    if (!chosen) {
+        cache.separating = separating;
+        return false;
+    }
+    const PolygonView& ref = chosen->owner == 0 ? a : b;
+    const PolygonView& inc = chosen->owner == 0 ? b : a;
+    const IncidentEdge incident = incident_edge(inc, ref.normals[chosen->edge]);
+    if (face_contact(a, b, r, *chosen, face_corners(ref, chosen->edge, inc, incident.edge, r), manifold)) {
+        cache.incident = make_feature(1u - chosen->owner, incident.edge);
+        cache.incident_margin = incident.margin;
+        cache.others_max_separation_m = largest_other_separation(a, b, offsets_a, offsets_b, r,
+                                                                 make_feature(chosen->owner, chosen->edge), cache.incident);
+        return true;
+    }
+    manifold.count = 0;
+    if (chosen->separation_m < 0.0) return false;  // overlapping cores, incident edge beside the reference (as sharp)
+    return corner_contact(a, b, offsets_a, offsets_b, r, *chosen, manifold);
+}
+
+}  // namespace blockdem
