@@ -76,6 +76,17 @@ double mass_of(const BodyDef& b, const PolygonProperties& p) {
     return b.mass_kg.value_or(b.density_kg_m3 * p.area_m2 * b.thickness_m);
 }
 
+// GLPK's scaling and basis routines print to the terminal whatever the solver's message level:
+// its terminal output is off while a problem is solved, and restored after (the physics never
+// prints).
+struct GlpkSilence {
+    int previous = glp_term_out(GLP_OFF);
+    GlpkSilence() = default;
+    GlpkSilence(const GlpkSilence&) = delete;
+    GlpkSilence& operator=(const GlpkSilence&) = delete;
+    ~GlpkSilence() { glp_term_out(previous); }
+};
+
 struct GlpkProblem {
     glp_prob* lp = glp_create_prob();
     GlpkProblem() = default;
@@ -89,8 +100,9 @@ struct Triplets {
     std::vector<int> row{0};
     std::vector<int> column{0};
     std::vector<double> value{0.0};
+    // Coefficients are of order one; a round-off remainder (cos 90 deg = 6e-17) is left out.
     void add(int r, int c, double v) {
-        if (v == 0.0) return;
+        if (std::abs(v) < 1e-13) return;
         row.push_back(r);
         column.push_back(c);
         value.push_back(v);
@@ -221,6 +233,7 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
             if (movable(model.bodies[i]) && !touched[i]) result.unsupported.push_back(i);
     }
 
+    const GlpkSilence silence;
     GlpkProblem problem;
     glp_prob* lp = problem.lp;
     glp_set_obj_dir(lp, GLP_MAX);

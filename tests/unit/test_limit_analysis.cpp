@@ -2,7 +2,8 @@
 // base (lambda = b/h when it topples, mu when it slides), a stack of two blocks, a block wedged
 // between walls (unbounded), a block in the air (no equilibrium), and the minimum thickness of a
 // semicircular arch (Heyman: t/R = 0.1075 for a continuous ring; a ring of n voussoirs with
-// chord faces needs a little more). The LP is solved to round-off: tolerances are 1e-9 relative.
+// chord faces differs by the choice of hinge positions). The LP is solved to round-off:
+// tolerances on lambda are 1e-9.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -156,10 +157,10 @@ TEST(LimitAnalysis, SemicircularArchMinimumThickness) {
         double lo = 0.10, hi = 0.12;
         for (int i = 0; i < 30; ++i) (stands(0.5 * (lo + hi), n) ? hi : lo) = 0.5 * (lo + hi);
         std::printf("semicircular arch, %d voussoirs, mu = 0.8: minimum t/R = %.5f (Heyman, continuous: 0.1075)\n", n, hi);
-        // Chord faces and discrete joints make the ring a little weaker than the continuous one,
-        // by less than 10 %, and less so with more voussoirs.
-        EXPECT_GT(hi, 0.105);
-        EXPECT_LT(hi, 0.118);
+        // Measured 0.10735 (20), 0.10710 (24), 0.10743 (40). Hinges can form only at joints, so a
+        // ring of voussoirs is a little stronger than the continuous one, and its chord faces a
+        // little weaker; both effects are well under 1 % here.
+        EXPECT_NEAR(hi, 0.1075, 0.001);
     }
     const LimitResult thin = solve_limit_analysis(semicircular_arch(0.10, 20, 0.8));
     EXPECT_TRUE(thin.status == LimitStatus::no_equilibrium || thin.lambda < 0.0);
@@ -216,8 +217,8 @@ TEST(ArchGenerator, VoussoirsShareTheirJointsAndAbutmentsCarryTheSprings) {
     EXPECT_EQ(m.bodies[10].kind, BodyKind::driven);
     m.contact = MaterialPairs::uniform(testing::contact(1e9, 0.8, 0.0, 0.0));
     EXPECT_EQ(find_interfaces(m, 1e-9).size(), 10u) << "8 joints between voussoirs and 2 springings";
-    EXPECT_THROW(scenes::masonry_arch({.span_m = 2.0, .rise_m = 1.5}), std::invalid_argument);
-    EXPECT_THROW(scenes::masonry_arch({.span_m = 2.0, .rise_m = 1.0, .ring_thickness_m = 0.1, .voussoirs = 2}),
+    EXPECT_THROW(scenes::masonry_arch({.origin_m = {}, .span_m = 2.0, .rise_m = 1.5}), std::invalid_argument);
+    EXPECT_THROW(scenes::masonry_arch({.origin_m = {}, .span_m = 2.0, .rise_m = 1.0, .ring_thickness_m = 0.1, .voussoirs = 2}),
                  std::invalid_argument);
 }
 
