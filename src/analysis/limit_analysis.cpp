@@ -188,8 +188,9 @@ std::vector<InterfaceKinematics> interface_kinematics(const Model& model, const 
     for (InterfaceKinematics& k : out) {
         const bool open0 = k.opening[0] > tolerance;
         const bool open1 = k.opening[1] > tolerance;
-        if (std::abs(k.slip[0]) > tolerance || std::abs(k.slip[1]) > tolerance) k.motion = InterfaceMotion::slides;
-        else if (open0 && open1) k.motion = InterfaceMotion::opens;
+        // A joint that separates at both ends is open, whatever it does along itself.
+        if (open0 && open1) k.motion = InterfaceMotion::opens;
+        else if (std::abs(k.slip[0]) > tolerance || std::abs(k.slip[1]) > tolerance) k.motion = InterfaceMotion::slides;
         else if (open1) k.motion = InterfaceMotion::hinge_at_end_0;
         else if (open0) k.motion = InterfaceMotion::hinge_at_end_1;
         else k.motion = InterfaceMotion::locked;
