@@ -20,6 +20,12 @@ ArchBlocks masonry_arch(const ArchSpec& spec) {
         throw std::invalid_argument(fmt::format("rise must be in (0, span / 2] = (0, {}], got {} (span / 2: a semicircle)",
                                                 0.5 * spec.span_m, spec.rise_m));
     if (spec.voussoirs < 3) throw std::invalid_argument(fmt::format("voussoirs must be >= 3, got {}", spec.voussoirs));
+    // A rise far below the span makes the radius, and the centre's distance, enormous: the
+    // blocks' corners would lose every digit that tells them apart (or overflow).
+    if (!(spec.rise_m >= 1e-3 * spec.span_m))
+        throw std::invalid_argument(fmt::format("rise must be at least span / 1000 = {:g} m (a flatter arch is a lintel), got {}",
+                                                1e-3 * spec.span_m, spec.rise_m));
+    if (!(spec.span_m < 1e4)) throw std::invalid_argument(fmt::format("span must be < 10 km, got {} m", spec.span_m));
     const double radius = arch_radius_m(spec.span_m, spec.rise_m);
     if (!(spec.ring_thickness_m > 0.0 && spec.ring_thickness_m < 2.0 * radius))
         throw std::invalid_argument(fmt::format("ring_thickness must be in (0, 2 R) = (0, {:g}) m, got {}", 2.0 * radius,

@@ -151,8 +151,8 @@ namespace blockdem::scenes {
 /// lower end of that joint.
 struct ArchSpec {
     Vec2 origin_m;                  ///< [m] midpoint between the centre line's springings
-    double span_m = 2.0;            ///< [m] of the centre line
-    double rise_m = 1.0;            ///< [m] of the centre line, in (0, span / 2]
+    double span_m = 2.0;            ///< [m] of the centre line, < 10 km
+    double rise_m = 1.0;            ///< [m] of the centre line, in [span / 1000, span / 2]
     double ring_thickness_m = 0.15; ///< [m] radial, < 2 R
     int voussoirs = 20;             ///< >= 3
     double abutment_height_m = 0.0; ///< [m] <= 0: the ring thickness

@@ -4,6 +4,7 @@
 // and the collapse mechanism: which interfaces hinge (and where), open or slide, named by their
 // bodies. The geometry is the scenario's at t = 0, level (its tilt and table motion are ignored;
 // no settling, no DEM run).
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -64,6 +65,11 @@ void print_result(const Model& model, const LimitResult& r, const std::string& d
         ++moving;
     }
     if (moving == 0) fmt::print("  (no interface moves)\n");
+    const bool slides = std::any_of(r.kinematics.begin(), r.kinematics.end(),
+                                    [](const InterfaceKinematics& k) { return k.motion == InterfaceMotion::slides; });
+    if (slides)
+        fmt::print("note: the mechanism slides; the LP's friction is associative (a sliding joint dilates), so where sliding "
+                   "governs its lambda is an upper value (docs/limit_analysis.md)\n");
 }
 
 nlohmann::json to_json(const Model& model, const LimitResult& r, const std::string& scenario, const std::string& direction) {

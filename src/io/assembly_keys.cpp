@@ -158,6 +158,10 @@ std::vector<BodyDef> read_arch(TableReader& t, const scenes::BlockStyle& style) 
         if (spec.rise_m > 0.5 * spec.span_m)
             t.fail("rise", fmt::format("must be <= span / 2 = {} m (a semicircle at most), got {}", 0.5 * spec.span_m, spec.rise_m));
     }
+    if (spec.rise_m < 1e-3 * spec.span_m)
+        t.fail("rise", fmt::format("must be at least span / 1000 = {:g} m (a flatter arch is a lintel), got {}", 1e-3 * spec.span_m,
+                                   spec.rise_m));
+    if (!(spec.span_m < 1e4)) t.fail(radius ? "radius" : "span", fmt::format("the span must be < 10 km, got {} m", spec.span_m));
     spec.ring_thickness_m = t.positive("ring_thickness");
     const double r = scenes::arch_radius_m(spec.span_m, spec.rise_m);
     if (spec.ring_thickness_m >= 2.0 * r)

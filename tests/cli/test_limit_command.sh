@@ -49,6 +49,8 @@ run_bad() {  # expected text, arguments...
 }
 run_bad "key 'assemblies.v.rise'" "$data/arch.toml" --set assemblies.v.rise=1.5
 run_bad "key 'assemblies.v.ring_thickness'" "$data/arch.toml" --set assemblies.v.ring_thickness=2.5
+run_bad "key 'assemblies.v.rise': must be at least span / 1000" "$data/arch.toml" --set assemblies.v.rise=1e-300
+run_bad "key 'assemblies.v.span': the span must be < 10 km" "$data/arch.toml" --set assemblies.v.span=1e300
 run_bad "key 'assemblies.v.voussoirs'" "$data/arch.toml" --set assemblies.v.voussoirs=2
 run_bad "key 'assemblies.v.abutments'" "$data/arch.toml" --set 'assemblies.v.abutments="loose"'
 run_bad "direction" "$data/arch.toml" --direction up
