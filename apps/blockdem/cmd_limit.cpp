@@ -1,4 +1,4 @@
-// `blockdem limit SCENARIO [--direction +x|-x] [--json FILE] [--set key=value]...`: the collapse
+// `blockdem limit SCENARIO [--direction +x|-x] [--non-associative] [--json FILE] [--set key=value]...`: the collapse
 // multiplier of the scenario's blocks by limit analysis (analysis/limit_analysis.hpp) under a
 // horizontal body force lambda m g, the tilt of a tilting table that stands for it (atan lambda),
 // and the collapse mechanism: which interfaces hinge (and where), open or slide, named by their
@@ -53,6 +53,9 @@ void print_result(const Model& model, const LimitResult& r, const std::string& d
         fmt::print("unbounded: the supports carry any horizontal load towards {}; no collapse\n", direction);
         return;
     }
+    if (r.iterations > 0)
+        fmt::print("non-associative friction: {} LPs after the associative one{}\n", r.iterations,
+                   r.converged ? "" : " (lambda had not settled: the value is that of the last)");
     fmt::print("collapse multiplier lambda = {:.6g} (a table tilted by {:.4f} deg; a quasi-static acceleration of {:.4g} g)\n",
                r.lambda, std::atan(r.lambda) * degrees_per_radian, r.lambda);
     if (r.lambda < 0.0) fmt::print("  lambda < 0: the blocks cannot stand under their own weight alone\n");
@@ -67,7 +70,7 @@ void print_result(const Model& model, const LimitResult& r, const std::string& d
     if (moving == 0) fmt::print("  (no interface moves)\n");
     const bool slides = std::any_of(r.kinematics.begin(), r.kinematics.end(),
                                     [](const InterfaceKinematics& k) { return k.motion == InterfaceMotion::slides; });
-    if (slides)
+    if (slides && r.iterations == 0)
         fmt::print("note: the mechanism slides; the LP's friction is associative (a sliding joint dilates), so where sliding "
                    "governs its lambda is an upper value (docs/limit_analysis.md)\n");
 }
@@ -78,6 +81,11 @@ nlohmann::json to_json(const Model& model, const LimitResult& r, const std::stri
     j["scenario"] = scenario;
     j["direction"] = direction;
     j["status"] = to_string(r.status);
+    j["friction"] = r.iterations > 0 ? "non_associative" : "associative";
+    if (r.iterations > 0) {
+        j["iterations"] = r.iterations;
+        j["converged"] = r.converged;
+    }
     if (r.status == LimitStatus::collapse) {
         j["lambda"] = r.lambda;
         j["tilt_deg"] = std::atan(r.lambda) * degrees_per_radian;
@@ -121,15 +129,19 @@ void add_limit_command(CLI::App& app) {
     auto direction = std::make_shared<std::string>("+x");
     auto json_file = std::make_shared<std::string>();
     auto sets = std::make_shared<std::vector<std::string>>();
+    auto non_associative = std::make_shared<bool>(false);
     cmd->add_option("scenario", *scenario, "scenario file (TOML)")->required();
     cmd->add_option("--direction", *direction, "direction of the live load lambda m g: +x or -x")
         ->check(CLI::IsMember({"+x", "-x"}));
     cmd->add_option("--json", *json_file, "also write the result (forces, thrust points, mechanism) to this JSON file");
     cmd->add_option("--set", *sets, "override a scenario key: --set contact.mu=0.5 (repeatable)");
+    cmd->add_flag("--non-associative", *non_associative,
+                  "joints slip without dilating (iterated LPs; default: the associative static theorem)");
     cmd->callback([=] {
         const LoadedScenario s = load_scenario(*scenario, *sets, false);
         LimitOptions options;
         options.live_load_direction = {*direction == "+x" ? 1.0 : -1.0, 0.0};
+        if (*non_associative) options.friction = FrictionFlow::non_associative;
         const LimitResult r = solve_limit_analysis(s.model, options);
         print_result(s.model, r, *direction);
         if (!json_file->empty()) write_output_file(*json_file, to_json(s.model, r, *scenario, *direction).dump(2) + "\n");

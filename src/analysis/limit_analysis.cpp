@@ -309,6 +309,49 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
     }
     if (status != GLP_OPT) throw std::runtime_error("limit analysis: GLPK ended without an optimum, status " + std::to_string(status));
 
+    if (options.friction == FrictionFlow::non_associative) {
+        // Each end's friction becomes a shear capacity c = mu n from the last solution (a
+        // capacity independent of n: slip without dilation), relaxed halfway towards the new
+        // mu n each time, and the LP solved again from its last basis until lambda settles
+        // (Gilbert, Casapulla and Ahmed 2006). A heuristic: it may stop at a solution that is not
+        // the least non-associative one (docs/limit_analysis.md).
+        std::vector<double> capacity(2 * faces.size());
+        auto mu_n = [&](std::size_t k, int j) { return faces[k].mu * std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))); };
+        for (std::size_t k = 0; k < faces.size(); ++k)
+            for (int j = 0; j < 2; ++j) capacity[2 * k + j] = mu_n(k, j);
+        double previous = glp_get_col_prim(lp, lambda_column);
+        for (result.iterations = 1; result.iterations <= options.max_iterations; ++result.iterations) {
+            for (std::size_t k = 0; k < faces.size(); ++k) {
+                for (int j = 0; j < 2; ++j) {
+                    const int rf = equilibrium_rows + static_cast<int>(4 * k) + 2 * j + 1;
+                    int index[2] = {0, normal_column(k, j) + 1};
+                    double plus[2] = {0.0, 1.0}, minus[2] = {0.0, -1.0};
+                    glp_set_mat_row(lp, rf, 1, index, plus);        // s <= c
+                    glp_set_mat_row(lp, rf + 1, 1, index, minus);   // -s <= c
+                    glp_set_row_bnds(lp, rf, GLP_UP, 0.0, capacity[2 * k + j]);
+                    glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, capacity[2 * k + j]);
+                }
+            }
+            glp_scale_prob(lp, GLP_SF_AUTO);
+            if (glp_simplex(lp, &parameters) != 0) {
+                glp_adv_basis(lp, 0);  // the last basis no longer factorizes: start afresh
+                if (glp_simplex(lp, &parameters) != 0) throw std::runtime_error("limit analysis: GLPK failed while iterating");
+            }
+            const int s = glp_get_status(lp);
+            if (s == GLP_NOFEAS || s == GLP_INFEAS) return result;  // no_equilibrium
+            if (s == GLP_UNBND) {
+                result.status = LimitStatus::unbounded;
+                return result;
+            }
+            const double lambda = glp_get_col_prim(lp, lambda_column);
+            for (std::size_t k = 0; k < faces.size(); ++k)
+                for (int j = 0; j < 2; ++j) capacity[2 * k + j] = 0.5 * (capacity[2 * k + j] + mu_n(k, j));
+            if (std::abs(lambda - previous) <= options.lambda_tolerance) break;
+            previous = lambda;
+        }
+        result.converged = result.iterations <= options.max_iterations;
+        result.iterations = std::min(result.iterations, options.max_iterations);
+    }
     result.status = LimitStatus::collapse;
     result.lambda = glp_get_col_prim(lp, lambda_column);
     for (std::size_t k = 0; k < faces.size(); ++k) {
@@ -345,7 +388,7 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
             u.rotation *= scale;
         }
     }
-    result.kinematics = interface_kinematics(model, faces, result.mechanism, true);
+    result.kinematics = interface_kinematics(model, faces, result.mechanism, options.friction == FrictionFlow::associative);
     return result;
 }
 

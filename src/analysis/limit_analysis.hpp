@@ -40,11 +40,20 @@ struct BlockInterface {
 /// tolerance_m. In body order (a < b), then edge order.
 std::vector<BlockInterface> find_interfaces(const Model& model, double tolerance_m);
 
+/// How a joint slips in the LP: associative (Coulomb's cone as a plastic potential: a slipping
+/// joint opens by mu x its slip; the plain static theorem) or non_associative (slip without
+/// dilation, approached by iterated LPs whose friction is a shear capacity mu n taken from the
+/// previous solution).
+enum class FrictionFlow : std::uint8_t { associative, non_associative };
+
 struct LimitOptions {
     /// [-] the live load's direction (unit vector): lambda m g along it on every dynamic body
     Vec2 live_load_direction{1.0, 0.0};
     /// [m] two edges closer than this touch; <= 0: 1e-6 x the largest body extent
     double touch_tolerance_m = 0.0;
+    FrictionFlow friction = FrictionFlow::associative;
+    int max_iterations = 200;          ///< non_associative: LPs after the first, at most
+    double lambda_tolerance = 1e-6;    ///< [-] non_associative: stop when lambda changes by less
 };
 
 enum class LimitStatus : std::uint8_t {
@@ -97,6 +106,8 @@ struct LimitResult {
     std::vector<BodyMotion> mechanism;            ///< per body; zero for fixed and driven (status collapse)
     std::vector<InterfaceKinematics> kinematics;  ///< per interface (status collapse)
     std::vector<std::uint32_t> unsupported;       ///< dynamic bodies with no interface at all
+    int iterations = 0;                           ///< non_associative: LPs solved after the first
+    bool converged = true;                        ///< non_associative: lambda settled within max_iterations
 };
 
 /// The largest lambda and its mechanism. Throws std::invalid_argument for a model without

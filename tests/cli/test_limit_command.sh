@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `blockdem limit` (docs/limit_analysis.md): a slender block topples at lambda = b/h = 0.25
 # (14.036 deg) about the corner the load pushes it to; a semicircular arch at t/R = 0.15 forms
-# four hinges, the same lambda both ways; at t/R = 0.10 it has no equilibrium; --json writes the
+# four hinges, the same lambda both ways and with --non-associative; at t/R = 0.10 it has no
+# equilibrium; --json writes the
 # forces and the mechanism; bad arch keys and a bad direction are refused with exit status 2.
 # Usage: test_limit_command.sh BLOCKDEM SOURCE_DIR
 set -u
@@ -36,6 +37,10 @@ assert len(j["mechanism"]) == 20
 for i in j["interfaces"]:
     assert min(i["normal_N"]) >= 0.0
 PY
+out=$("$bin" limit "$data/arch.toml" --non-associative --json "$tmp/na.json" 2>&1) || fail "arch non-associative failed: $out"
+expect_in "$out" "non-associative friction: 1 LPs after the associative one"
+expect_in "$out" "collapse multiplier lambda = 0.14935"
+grep -q '"friction": "non_associative"' "$tmp/na.json" || fail "na.json: no friction field"
 out=$("$bin" limit "$data/arch.toml" --direction -x 2>&1) || fail "arch -x failed: $out"
 expect_in "$out" "collapse multiplier lambda = 0.14935"
 out=$("$bin" limit "$data/arch.toml" --set assemblies.v.ring_thickness=0.10 2>&1) || fail "thin arch failed: $out"
