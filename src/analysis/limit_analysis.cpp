@@ -5,6 +5,8 @@
 // body's weight and lengths by the largest body's size, so that the coefficients are of order
 // one whatever the units of the model. GLPK's primal simplex (no presolve, so that an
 // infeasible or unbounded problem still reports its status and an optimum its dual values).
+// Non-associative friction rewrites the friction rows as shear capacities and re-solves from the
+// last basis.
 #include "analysis/limit_analysis.hpp"
 
 #include <algorithm>

@@ -9,8 +9,9 @@
 // such lambda is the collapse multiplier. The LP's dual values of the equilibrium rows are the
 // virtual velocities of the blocks in the collapse mechanism, from which each interface is
 // classified (hinging at one end, opening, sliding). The friction rule of the LP is associative
-// (a sliding interface dilates by mu times its slip): for rocking mechanisms the multiplier is
-// exact, for sliding ones it is the upper value of the non-associative problem
+// (a slipping interface dilates by mu times its slip, even where it separates): for rocking
+// mechanisms the multiplier is exact, where joints slip it is an upper value of the
+// non-associative problem, which FrictionFlow::non_associative approaches by iterated LPs
 // (docs/limit_analysis.md).
 //
 // Interfaces are found from the geometry at t = 0 (edges of neighbouring polygons that lie on one
