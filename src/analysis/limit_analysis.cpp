@@ -200,64 +200,56 @@ std::vector<InterfaceKinematics> interface_kinematics(const Model& model, const 
     return out;
 }
 
-LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options) {
+namespace {
+
+// The dynamic bodies' rows (3 each, 1-based; 0 for supports), mass properties and the scales.
+struct Rows {
+    std::vector<int> first_row;
+    std::vector<PolygonProperties> props;
+    std::vector<double> mass_kg;
+    int equilibrium_rows = 0;
+    double weight_scale_N = 0.0;
+    double length_scale_m = 0.0;
+};
+
+Rows body_rows(const Model& model) {
     const double g = model.settings.gravity_m_s2;
-    if (!(g > 0.0)) throw std::invalid_argument("limit analysis needs gravity (the dead load): gravity is 0");
-    const double d_length = length(options.live_load_direction);
-    if (!(d_length > 0.0)) throw std::invalid_argument("limit analysis needs a live load direction");
-    const Vec2 live = (1.0 / d_length) * options.live_load_direction;
-
-    LimitResult result;
-    const double tolerance_m = options.touch_tolerance_m > 0.0 ? options.touch_tolerance_m : 1e-6 * largest_extent_m(model);
-    result.interfaces = find_interfaces(model, tolerance_m);
-    const auto& faces = result.interfaces;
-
-    // Rows of the dynamic bodies (3 each, 1-based), their properties, the scales.
-    const std::size_t body_count = model.bodies.size();
-    std::vector<int> first_row(body_count, 0);
-    std::vector<PolygonProperties> props(body_count);
-    std::vector<double> mass_kg(body_count, 0.0);
-    int rows = 0;
-    double weight_scale_N = 0.0, length_scale_m = 0.0;
-    for (std::size_t i = 0; i < body_count; ++i) {
-        props[i] = polygon_properties(model.bodies[i].vertices_m);
-        mass_kg[i] = mass_of(model.bodies[i], props[i]);
+    const std::size_t n = model.bodies.size();
+    Rows r{std::vector<int>(n, 0), std::vector<PolygonProperties>(n), std::vector<double>(n, 0.0)};
+    for (std::size_t i = 0; i < n; ++i) {
+        r.props[i] = polygon_properties(model.bodies[i].vertices_m);
+        r.mass_kg[i] = mass_of(model.bodies[i], r.props[i]);
         if (!movable(model.bodies[i])) continue;
-        first_row[i] = rows + 1;
-        rows += 3;
-        weight_scale_N = std::max(weight_scale_N, mass_kg[i] * g);
-        length_scale_m = std::max(length_scale_m, std::sqrt(props[i].area_m2));
+        r.first_row[i] = r.equilibrium_rows + 1;
+        r.equilibrium_rows += 3;
+        r.weight_scale_N = std::max(r.weight_scale_N, r.mass_kg[i] * g);
+        r.length_scale_m = std::max(r.length_scale_m, std::sqrt(r.props[i].area_m2));
     }
-    if (rows == 0) throw std::invalid_argument("limit analysis needs at least one dynamic body");
-    {
-        std::vector<bool> touched(body_count, false);
-        for (const BlockInterface& f : faces) touched[f.body_a] = touched[f.body_b] = true;
-        for (std::uint32_t i = 0; i < body_count; ++i)
-            if (movable(model.bodies[i]) && !touched[i]) result.unsupported.push_back(i);
-    }
+    return r;
+}
 
-    const GlpkSilence silence;
-    GlpkProblem problem;
-    glp_prob* lp = problem.lp;
+// The friction rows of interface k's end j (1-based): s - mu n <= 0, then -s - mu n <= 0.
+int friction_row(const Rows& rows, std::size_t k, int j) { return rows.equilibrium_rows + static_cast<int>(4 * k) + 2 * j + 1; }
+
+int lambda_column(const std::vector<BlockInterface>& faces) { return static_cast<int>(4 * faces.size()) + 1; }
+
+// Rows, columns, bounds and the matrix of the associative LP.
+void build_problem(glp_prob* lp, const Model& model, const std::vector<BlockInterface>& faces, const Rows& rows, Vec2 live) {
     glp_set_obj_dir(lp, GLP_MAX);
-    const int equilibrium_rows = rows;
-    const int friction_rows = static_cast<int>(4 * faces.size());
-    glp_add_rows(lp, equilibrium_rows + friction_rows);
-    const int columns = static_cast<int>(4 * faces.size()) + 1;
-    const int lambda_column = columns;
-    glp_add_cols(lp, columns);
+    glp_add_rows(lp, rows.equilibrium_rows + static_cast<int>(4 * faces.size()));
+    const int lambda = lambda_column(faces);
+    glp_add_cols(lp, lambda);
     Triplets m;
-
-    for (std::size_t i = 0; i < body_count; ++i) {
-        if (!first_row[i]) continue;
-        const double weight = mass_kg[i] * g / weight_scale_N;
-        const int r = first_row[i];
+    for (std::size_t i = 0; i < model.bodies.size(); ++i) {
+        const int r = rows.first_row[i];
+        if (!r) continue;
+        const double weight = rows.mass_kg[i] * model.settings.gravity_m_s2 / rows.weight_scale_N;
         // interface forces + lambda live = - dead (dead = weight downwards)
         glp_set_row_bnds(lp, r, GLP_FX, 0.0, 0.0);
         glp_set_row_bnds(lp, r + 1, GLP_FX, weight, weight);
         glp_set_row_bnds(lp, r + 2, GLP_FX, 0.0, 0.0);
-        m.add(r, lambda_column, weight * live.x);
-        m.add(r + 1, lambda_column, weight * live.y);
+        m.add(r, lambda, weight * live.x);
+        m.add(r + 1, lambda, weight * live.y);
     }
     for (std::size_t k = 0; k < faces.size(); ++k) {
         const BlockInterface& f = faces[k];
@@ -269,9 +261,9 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
             glp_set_col_bnds(lp, cs, GLP_FR, 0.0, 0.0);
             // On b: +n normal + s t at end j; on a: the opposite.
             for (auto [body, sign] : {std::pair{f.body_b, 1.0}, std::pair{f.body_a, -1.0}}) {
-                const int r = first_row[body];
+                const int r = rows.first_row[body];
                 if (!r) continue;
-                const Vec2 arm = (1.0 / length_scale_m) * (f.end_m[j] - props[body].centroid_m);
+                const Vec2 arm = (1.0 / rows.length_scale_m) * (f.end_m[j] - rows.props[body].centroid_m);
                 m.add(r, cn, sign * f.normal.x);
                 m.add(r + 1, cn, sign * f.normal.y);
                 m.add(r + 2, cn, sign * cross(arm, f.normal));
@@ -279,117 +271,149 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
                 m.add(r + 1, cs, sign * t.y);
                 m.add(r + 2, cs, sign * cross(arm, t));
             }
-            const int rf = equilibrium_rows + static_cast<int>(4 * k) + 2 * j + 1;
-            glp_set_row_bnds(lp, rf, GLP_UP, 0.0, 0.0);      // s - mu n <= 0
-            glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, 0.0);  // -s - mu n <= 0
+            const int rf = friction_row(rows, k, j);
+            glp_set_row_bnds(lp, rf, GLP_UP, 0.0, 0.0);
+            glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, 0.0);
             m.add(rf, cs, 1.0);
             m.add(rf, cn, -f.mu);
             m.add(rf + 1, cs, -1.0);
             m.add(rf + 1, cn, -f.mu);
         }
     }
-    glp_set_col_bnds(lp, lambda_column, GLP_FR, 0.0, 0.0);
-    glp_set_obj_coef(lp, lambda_column, 1.0);
+    glp_set_col_bnds(lp, lambda, GLP_FR, 0.0, 0.0);
+    glp_set_obj_coef(lp, lambda, 1.0);
     glp_load_matrix(lp, static_cast<int>(m.row.size()) - 1, m.row.data(), m.column.data(), m.value.data());
+}
 
+// Solves from the current basis (from a fresh one if that fails) and says how it ended.
+LimitStatus solve(glp_prob* lp) {
     glp_smcp parameters;
     glp_init_smcp(&parameters);
     parameters.msg_lev = GLP_MSG_OFF;
     parameters.presolve = GLP_OFF;
     glp_scale_prob(lp, GLP_SF_AUTO);
-    glp_adv_basis(lp, 0);
-    const int code = glp_simplex(lp, &parameters);
-    if (code != 0) throw std::runtime_error("limit analysis: the LP solver (GLPK) failed, code " + std::to_string(code));
+    if (glp_simplex(lp, &parameters) != 0) {
+        glp_adv_basis(lp, 0);
+        const int code = glp_simplex(lp, &parameters);
+        if (code != 0) throw std::runtime_error("limit analysis: the LP solver (GLPK) failed, code " + std::to_string(code));
+    }
     const int status = glp_get_status(lp);
-    if (status == GLP_NOFEAS || status == GLP_INFEAS) {
-        result.status = LimitStatus::no_equilibrium;
-        return result;
-    }
-    if (status == GLP_UNBND) {
-        result.status = LimitStatus::unbounded;
-        return result;
-    }
+    if (status == GLP_NOFEAS || status == GLP_INFEAS) return LimitStatus::no_equilibrium;
+    if (status == GLP_UNBND) return LimitStatus::unbounded;
     if (status != GLP_OPT) throw std::runtime_error("limit analysis: GLPK ended without an optimum, status " + std::to_string(status));
+    return LimitStatus::collapse;
+}
 
-    if (options.friction == FrictionFlow::non_associative) {
-        // Each end's friction becomes a shear capacity c = mu n from the last solution (a
-        // capacity independent of n: slip without dilation), relaxed halfway towards the new
-        // mu n each time, and the LP solved again from its last basis until lambda settles
-        // (Gilbert, Casapulla and Ahmed 2006). A heuristic: it may stop at a solution that is not
-        // the least non-associative one (docs/limit_analysis.md).
-        std::vector<double> capacity(2 * faces.size());
-        auto mu_n = [&](std::size_t k, int j) { return faces[k].mu * std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))); };
+// Non-associative friction: each end's friction becomes a shear capacity c = mu n from the last
+// solution (a capacity independent of n: slip without dilation), moved halfway towards the new
+// mu n each time, and the LP solved again from its last basis until lambda settles (Gilbert,
+// Casapulla and Ahmed 2006). A heuristic: it may stop at a solution that is not the least
+// non-associative one (docs/limit_analysis.md).
+LimitStatus iterate_non_associative(glp_prob* lp, const std::vector<BlockInterface>& faces, const Rows& rows,
+                                    const LimitOptions& options, LimitResult& result) {
+    auto mu_n = [&](std::size_t k, int j) { return faces[k].mu * std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))); };
+    std::vector<double> capacity(2 * faces.size());
+    for (std::size_t k = 0; k < faces.size(); ++k)
+        for (int j = 0; j < 2; ++j) capacity[2 * k + j] = mu_n(k, j);
+    double previous = glp_get_col_prim(lp, lambda_column(faces));
+    result.converged = false;
+    for (result.iterations = 1; result.iterations <= options.max_iterations; ++result.iterations) {
+        for (std::size_t k = 0; k < faces.size(); ++k) {
+            for (int j = 0; j < 2; ++j) {
+                const int rf = friction_row(rows, k, j);
+                int index[2] = {0, normal_column(k, j) + 1};
+                double plus[2] = {0.0, 1.0}, minus[2] = {0.0, -1.0};
+                glp_set_mat_row(lp, rf, 1, index, plus);        // s <= c
+                glp_set_mat_row(lp, rf + 1, 1, index, minus);   // -s <= c
+                glp_set_row_bnds(lp, rf, GLP_UP, 0.0, capacity[2 * k + j]);
+                glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, capacity[2 * k + j]);
+            }
+        }
+        const LimitStatus status = solve(lp);
+        if (status != LimitStatus::collapse) return status;
+        const double lambda = glp_get_col_prim(lp, lambda_column(faces));
         for (std::size_t k = 0; k < faces.size(); ++k)
-            for (int j = 0; j < 2; ++j) capacity[2 * k + j] = mu_n(k, j);
-        double previous = glp_get_col_prim(lp, lambda_column);
-        for (result.iterations = 1; result.iterations <= options.max_iterations; ++result.iterations) {
-            for (std::size_t k = 0; k < faces.size(); ++k) {
-                for (int j = 0; j < 2; ++j) {
-                    const int rf = equilibrium_rows + static_cast<int>(4 * k) + 2 * j + 1;
-                    int index[2] = {0, normal_column(k, j) + 1};
-                    double plus[2] = {0.0, 1.0}, minus[2] = {0.0, -1.0};
-                    glp_set_mat_row(lp, rf, 1, index, plus);        // s <= c
-                    glp_set_mat_row(lp, rf + 1, 1, index, minus);   // -s <= c
-                    glp_set_row_bnds(lp, rf, GLP_UP, 0.0, capacity[2 * k + j]);
-                    glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, capacity[2 * k + j]);
-                }
-            }
-            glp_scale_prob(lp, GLP_SF_AUTO);
-            if (glp_simplex(lp, &parameters) != 0) {
-                glp_adv_basis(lp, 0);  // the last basis no longer factorizes: start afresh
-                if (glp_simplex(lp, &parameters) != 0) throw std::runtime_error("limit analysis: GLPK failed while iterating");
-            }
-            const int s = glp_get_status(lp);
-            if (s == GLP_NOFEAS || s == GLP_INFEAS) return result;  // no_equilibrium
-            if (s == GLP_UNBND) {
-                result.status = LimitStatus::unbounded;
-                return result;
-            }
-            const double lambda = glp_get_col_prim(lp, lambda_column);
-            for (std::size_t k = 0; k < faces.size(); ++k)
-                for (int j = 0; j < 2; ++j) capacity[2 * k + j] = 0.5 * (capacity[2 * k + j] + mu_n(k, j));
-            if (std::abs(lambda - previous) <= options.lambda_tolerance) break;
-            previous = lambda;
+            for (int j = 0; j < 2; ++j) capacity[2 * k + j] = 0.5 * (capacity[2 * k + j] + mu_n(k, j));
+        if (std::abs(lambda - previous) <= options.lambda_tolerance) {
+            result.converged = true;
+            break;
         }
-        result.converged = result.iterations <= options.max_iterations;
-        result.iterations = std::min(result.iterations, options.max_iterations);
+        previous = lambda;
     }
-    result.status = LimitStatus::collapse;
-    result.lambda = glp_get_col_prim(lp, lambda_column);
-    for (std::size_t k = 0; k < faces.size(); ++k) {
-        InterfaceForces forces;
-        for (int j = 0; j < 2; ++j) {
-            forces.normal_N[j] = std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))) * weight_scale_N;
-            forces.shear_N[j] = glp_get_col_prim(lp, normal_column(k, j) + 1) * weight_scale_N;
-        }
-        const double total = forces.normal_N[0] + forces.normal_N[1];
-        forces.thrust_fraction = total > 0.0 ? forces.normal_N[1] / total : std::numeric_limits<double>::quiet_NaN();
-        forces.thrust_point_m = total > 0.0 ? faces[k].end_m[0] + forces.thrust_fraction * (faces[k].end_m[1] - faces[k].end_m[0])
-                                            : 0.5 * (faces[k].end_m[0] + faces[k].end_m[1]);
-        result.forces.push_back(forces);
+    result.iterations = std::min(result.iterations, options.max_iterations);
+    return LimitStatus::collapse;
+}
+
+InterfaceForces forces_of(glp_prob* lp, const BlockInterface& face, std::size_t k, double weight_scale_N) {
+    InterfaceForces forces;
+    for (int j = 0; j < 2; ++j) {
+        forces.normal_N[j] = std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))) * weight_scale_N;
+        forces.shear_N[j] = glp_get_col_prim(lp, normal_column(k, j) + 1) * weight_scale_N;
     }
-    // The duals of the equilibrium rows: the virtual motion (a moment row's dual is a rotation
-    // times the length scale). Scaled so that the fastest point of any body moves at 1, signed so
-    // that the live load does positive work.
-    result.mechanism.assign(body_count, BodyMotion{});
+    const double total = forces.normal_N[0] + forces.normal_N[1];
+    forces.thrust_fraction = total > 0.0 ? forces.normal_N[1] / total : std::numeric_limits<double>::quiet_NaN();
+    forces.thrust_point_m = total > 0.0 ? face.end_m[0] + forces.thrust_fraction * (face.end_m[1] - face.end_m[0])
+                                        : 0.5 * (face.end_m[0] + face.end_m[1]);
+    return forces;
+}
+
+// The duals of the equilibrium rows: the virtual motion (a moment row's dual is a rotation times
+// the length scale). Scaled so that the fastest point of any body moves at 1, signed so that the
+// live load does positive work.
+std::vector<BodyMotion> mechanism_of(glp_prob* lp, const Model& model, const Rows& rows, Vec2 live) {
+    std::vector<BodyMotion> out(model.bodies.size());
     double live_work = 0.0, fastest = 0.0;
-    for (std::size_t i = 0; i < body_count; ++i) {
-        const int r = first_row[i];
+    for (std::size_t i = 0; i < model.bodies.size(); ++i) {
+        const int r = rows.first_row[i];
         if (!r) continue;
-        BodyMotion& u = result.mechanism[i];
+        BodyMotion& u = out[i];
         u.velocity = {glp_get_row_dual(lp, r), glp_get_row_dual(lp, r + 1)};
-        u.rotation = glp_get_row_dual(lp, r + 2) / length_scale_m;
-        live_work += mass_kg[i] * dot(live, u.velocity);
+        u.rotation = glp_get_row_dual(lp, r + 2) / rows.length_scale_m;
+        live_work += rows.mass_kg[i] * dot(live, u.velocity);
         for (Vec2 v : model.bodies[i].vertices_m)
-            fastest = std::max(fastest, length(u.velocity + cross(u.rotation, v - props[i].centroid_m)));
+            fastest = std::max(fastest, length(u.velocity + cross(u.rotation, v - rows.props[i].centroid_m)));
     }
     if (fastest > 0.0) {
         const double scale = (live_work < 0.0 ? -1.0 : 1.0) / fastest;
-        for (BodyMotion& u : result.mechanism) {
+        for (BodyMotion& u : out) {
             u.velocity = scale * u.velocity;
             u.rotation *= scale;
         }
     }
+    return out;
+}
+
+}  // namespace
+
+LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options) {
+    if (!(model.settings.gravity_m_s2 > 0.0)) throw std::invalid_argument("limit analysis needs gravity (the dead load): gravity is 0");
+    const double d_length = length(options.live_load_direction);
+    if (!(d_length > 0.0)) throw std::invalid_argument("limit analysis needs a live load direction");
+    const Vec2 live = (1.0 / d_length) * options.live_load_direction;
+    const Rows rows = body_rows(model);
+    if (rows.equilibrium_rows == 0) throw std::invalid_argument("limit analysis needs at least one dynamic body");
+
+    LimitResult result;
+    const double tolerance_m = options.touch_tolerance_m > 0.0 ? options.touch_tolerance_m : 1e-6 * largest_extent_m(model);
+    result.interfaces = find_interfaces(model, tolerance_m);
+    const auto& faces = result.interfaces;
+    std::vector<bool> touched(model.bodies.size(), false);
+    for (const BlockInterface& f : faces) touched[f.body_a] = touched[f.body_b] = true;
+    for (std::uint32_t i = 0; i < model.bodies.size(); ++i)
+        if (movable(model.bodies[i]) && !touched[i]) result.unsupported.push_back(i);
+
+    const GlpkSilence silence;
+    GlpkProblem problem;
+    build_problem(problem.lp, model, faces, rows, live);
+    glp_adv_basis(problem.lp, 0);
+    result.status = solve(problem.lp);
+    if (result.status == LimitStatus::collapse && options.friction == FrictionFlow::non_associative)
+        result.status = iterate_non_associative(problem.lp, faces, rows, options, result);
+    if (result.status != LimitStatus::collapse) return result;
+
+    result.lambda = glp_get_col_prim(problem.lp, lambda_column(faces));
+    for (std::size_t k = 0; k < faces.size(); ++k) result.forces.push_back(forces_of(problem.lp, faces[k], k, rows.weight_scale_N));
+    result.mechanism = mechanism_of(problem.lp, model, rows, live);
     result.kinematics = interface_kinematics(model, faces, result.mechanism, options.friction == FrictionFlow::associative);
     return result;
 }
