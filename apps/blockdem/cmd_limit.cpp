@@ -72,7 +72,7 @@ void print_result(const Model& model, const LimitResult& r, const std::string& d
                                     [](const InterfaceKinematics& k) { return k.motion == InterfaceMotion::slides; });
     if (slides && r.iterations == 0)
         fmt::print("note: the mechanism slides; the LP's friction is associative (a sliding joint dilates), so where sliding "
-                   "governs its lambda is an upper value (docs/limit_analysis.md)\n");
+                   "governs its lambda is an upper value: see --non-associative (docs/limit_analysis.md)\n");
 }
 
 nlohmann::json to_json(const Model& model, const LimitResult& r, const std::string& scenario, const std::string& direction) {
