@@ -9,7 +9,7 @@ DEMO_OUT ?= out/demo
 # Packages the build and the tests need (Debian 12 names).
 CORE_PACKAGES := g++ cmake make pkg-config libtomlplusplus-dev libcli11-dev libfmt-dev \
                  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
-                 libopenmpi-dev openmpi-bin libhdf5-dev libdxflib-dev
+                 libopenmpi-dev openmpi-bin libhdf5-dev libglpk-dev libdxflib-dev
 # Packages for the checks (docs/checks.md): clang 14 with its sanitizer and libFuzzer runtimes
 # (libclang-rt-14-dev, only recommended by clang-14), its OpenMP runtime for the sanitized build,
 # and llvm-symbolizer (llvm-14) for readable sanitizer reports. `make test` runs the fuzz smoke.

@@ -151,3 +151,39 @@ Model rock_slope_scene(int blocks, double duration_s = 1.0);
 Model rockfill_scene(int blocks, double duration_s = 1.0);
 
 }  // namespace blockdem::scenes
+
+namespace blockdem::scenes {
+
+/// A masonry arch with radial joints (scenes/arch.cpp): a circular ring of `voussoirs` equal
+/// blocks (each a trapezoid between two radial joints, its faces the chords of the intrados and
+/// the extrados) springing from two abutment blocks whose top faces are the springing joints.
+/// The centre line (radius R, midway through the ring) springs from origin_m +- (span/2, 0) and
+/// rises rise_m above them: R = (span^2 / 4 + rise^2) / (2 rise); rise = span / 2 is a
+/// semicircle. Each abutment lies under its springing joint, abutment_height_m deep below the
+/// lower end of that joint.
+struct ArchSpec {
+    Vec2 origin_m;                  ///< [m] midpoint between the centre line's springings
+    double span_m = 2.0;            ///< [m] of the centre line, < 10 km
+    double rise_m = 1.0;            ///< [m] of the centre line, in [span / 1000, span / 2]
+    double ring_thickness_m = 0.15; ///< [m] radial, < 2 R
+    int voussoirs = 20;             ///< >= 3
+    double abutment_height_m = 0.0; ///< [m] <= 0: the ring thickness
+};
+
+struct ArchBlocks {
+    std::vector<Polygon> voussoirs;   ///< from the left springing to the right one
+    Polygon left_abutment;
+    Polygon right_abutment;
+};
+
+/// The centre line's radius [m] of an arch of that span and rise.
+double arch_radius_m(double span_m, double rise_m);
+
+/// The arch's blocks. Throws std::invalid_argument naming the parameter for values out of range.
+ArchBlocks masonry_arch(const ArchSpec& spec);
+
+/// The arch's bodies: the voussoirs dynamic, named prefix0, prefix1, ... from the left, then
+/// prefix_left_abutment and prefix_right_abutment of the given kind (fixed or driven).
+std::vector<BodyDef> arch_bodies(const ArchBlocks& arch, const BlockStyle& style, BodyKind abutments);
+
+}  // namespace blockdem::scenes

@@ -16,6 +16,7 @@ void add_sweep_command(CLI::App& app);
 void add_converge_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_export_command(CLI::App& app);
+void add_limit_command(CLI::App& app);
 
 /// Thrown by a command to end the program with this status, after its own message (an
 /// interrupted run: 130 / 143).

@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
     blockdem::cli::add_converge_command(app);
     blockdem::cli::add_calibrate_command(app);
     blockdem::cli::add_export_command(app);
+    blockdem::cli::add_limit_command(app);
     // With a file-size limit (ulimit -f) the kernel would kill the process with SIGXFSZ and no
     // message; ignored, the write fails with EFBIG and the run says which file.
     std::signal(SIGXFSZ, SIG_IGN);

@@ -1,5 +1,7 @@
 #include "io/assembly_keys.hpp"
 
+#include <cmath>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -134,26 +136,64 @@ scenes::GeneratedBlocks read_voronoi(TableReader& t) {
     return scenes::voronoi_packing(spec);
 }
 
+// An arch: span (or radius), rise (default: a semicircle), ring_thickness, voussoirs, and its
+// abutments fixed or driven with the table.
+std::vector<BodyDef> read_arch(TableReader& t, const scenes::BlockStyle& style) {
+    scenes::ArchSpec spec;
+    spec.origin_m = t.optional_vec2("origin").value_or(Vec2{});
+    const std::optional<double> radius = t.optional_positive("radius");
+    const std::optional<double> span = t.optional_positive("span");
+    if (radius && span) t.fail("radius", "give either span or radius, not both");
+    if (!radius && !span) t.fail("span", "an arch needs its span (or its radius): the centre line's, in m");
+    const std::optional<double> rise = t.optional_positive("rise");
+    if (radius) {
+        const double r = *radius;
+        const double f = rise.value_or(r);
+        if (f > r) t.fail("rise", fmt::format("must be <= radius = {} m (a semicircle at most), got {}", r, f));
+        spec.rise_m = f;
+        spec.span_m = 2.0 * std::sqrt(std::max(0.0, r * r - (r - f) * (r - f)));
+    } else {
+        spec.span_m = *span;
+        spec.rise_m = rise.value_or(0.5 * *span);
+        if (spec.rise_m > 0.5 * spec.span_m)
+            t.fail("rise", fmt::format("must be <= span / 2 = {} m (a semicircle at most), got {}", 0.5 * spec.span_m, spec.rise_m));
+    }
+    if (spec.rise_m < 1e-3 * spec.span_m)
+        t.fail("rise", fmt::format("must be at least span / 1000 = {:g} m (a flatter arch is a lintel), got {}", 1e-3 * spec.span_m,
+                                   spec.rise_m));
+    if (!(spec.span_m < 1e4)) t.fail(radius ? "radius" : "span", fmt::format("the span must be < 10 km, got {} m", spec.span_m));
+    spec.ring_thickness_m = t.positive("ring_thickness");
+    const double r = scenes::arch_radius_m(spec.span_m, spec.rise_m);
+    if (spec.ring_thickness_m >= 2.0 * r)
+        t.fail("ring_thickness", fmt::format("must be < 2 x the centre line's radius = {:g} m, got {}", 2.0 * r, spec.ring_thickness_m));
+    spec.voussoirs = static_cast<int>(t.whole_number("voussoirs", 3, 100000));
+    spec.abutment_height_m = t.optional_positive("abutment_height").value_or(spec.ring_thickness_m);
+    const BodyKind abutments = t.choice("abutments", {"fixed", "driven"}, "fixed") == "fixed" ? BodyKind::fixed : BodyKind::driven;
+    return scenes::arch_bodies(scenes::masonry_arch(spec), style, abutments);
+}
+
 std::vector<BodyDef> read_assembly(TableReader t) {
-    const std::string type = t.choice("type", {"column", "wall", "rock_mass", "voronoi"}, "");
+    const std::string type = t.choice("type", {"column", "wall", "rock_mass", "voronoi", "arch"}, "");
     const scenes::BlockStyle style = read_style(t);
     std::vector<scenes::Polygon> polygons;
+    std::vector<BodyDef> bodies;
     try {
         if (type == "column") polygons = read_column(t);
         if (type == "wall") polygons = read_wall(t);
         if (type == "rock_mass") polygons = read_rock_mass(t).polygons;
         if (type == "voronoi") polygons = read_voronoi(t).polygons;
+        if (type == "arch") bodies = read_arch(t, style);
     } catch (const std::invalid_argument& e) {
         t.fail("", e.what());  // a generator's own check (region outline, spread range, ...)
     }
-    std::vector<BodyDef> bodies = scenes::as_bodies(polygons, style);
+    if (type != "arch") bodies = scenes::as_bodies(polygons, style);
     for (BodyDef& b : bodies) b.assembly = style.name_prefix;  // the collapse summary's group
     // Boundary blocks: those whose centroid lies in a zone move with the table (or stay fixed).
     for (const char* key : {"driven_zone", "fixed_zone"})
         if (t.has(key) && scenes::set_kind_inside(bodies, t.vec2_list(key), key[0] == 'd' ? BodyKind::driven : BodyKind::fixed) == 0)
             t.fail(key, "no block has its centroid in this zone");
     t.reject_unknown_keys();
-    if (polygons.empty()) t.fail("", "the assembly has no blocks (check its size and region)");
+    if (bodies.empty()) t.fail("", "the assembly has no blocks (check its size and region)");
     return bodies;
 }
 

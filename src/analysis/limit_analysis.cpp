@@ -1,0 +1,421 @@
+// The static theorem as an LP (limit_analysis.hpp). Columns: per interface end, n >= 0 and a free
+// s; last, the free lambda. Rows: per dynamic body, force x, force y and moment about its
+// centroid (equalities: the interface forces plus lambda x live load equal minus the dead
+// load); per interface end, s - mu n <= 0 and -s - mu n <= 0. Forces are scaled by the heaviest
+// body's weight and lengths by the largest body's size, so that the coefficients are of order
+// one whatever the units of the model. GLPK's primal simplex (no presolve, so that an
+// infeasible or unbounded problem still reports its status and an optimum its dual values).
+// Non-associative friction rewrites the friction rows as shear capacities and re-solves from the
+// last basis.
+#include "analysis/limit_analysis.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+#include <glpk.h>
+
+#include "geometry/polygon.hpp"
+
+namespace blockdem {
+namespace {
+
+// Antiparallel edges: their normals within this angle of opposite.
+constexpr double parallel_tolerance_rad = 1e-4;
+
+bool movable(const BodyDef& b) { return b.kind == BodyKind::dynamic; }
+
+struct Box {
+    Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    Vec2 hi{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+};
+
+Box bounding_box(const std::vector<Vec2>& v) {
+    Box b;
+    for (Vec2 p : v) {
+        b.lo = {std::min(b.lo.x, p.x), std::min(b.lo.y, p.y)};
+        b.hi = {std::max(b.hi.x, p.x), std::max(b.hi.y, p.y)};
+    }
+    return b;
+}
+
+bool boxes_touch(const Box& a, const Box& b, double tolerance_m) {
+    return a.lo.x <= b.hi.x + tolerance_m && b.lo.x <= a.hi.x + tolerance_m && a.lo.y <= b.hi.y + tolerance_m &&
+           b.lo.y <= a.hi.y + tolerance_m;
+}
+
+// The common segment of edge p0-p1 (of a) and edge q0-q1 (of b), if they touch.
+bool common_segment(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1, double tolerance_m, std::array<Vec2, 2>& ends, Vec2& normal) {
+    const double edge_length = length(p1 - p0);
+    if (!(edge_length > tolerance_m)) return false;
+    const Vec2 along = (1.0 / edge_length) * (p1 - p0);
+    const Vec2 n{along.y, -along.x};  // outward for a counter-clockwise polygon
+    const Vec2 other = normalized(q1 - q0);
+    if (dot(along, other) > -std::cos(parallel_tolerance_rad)) return false;
+    if (std::abs(dot(q0 - p0, n)) > tolerance_m || std::abs(dot(q1 - p0, n)) > tolerance_m) return false;
+    const double u0 = dot(q0 - p0, along);
+    const double u1 = dot(q1 - p0, along);
+    const double lo = std::max(0.0, std::min(u0, u1));
+    const double hi = std::min(edge_length, std::max(u0, u1));
+    if (!(hi - lo > tolerance_m)) return false;
+    ends = {p0 + lo * along, p0 + hi * along};
+    normal = n;
+    return true;
+}
+
+double largest_extent_m(const Model& model) {
+    double extent = 0.0;
+    for (const BodyDef& b : model.bodies) {
+        const Box box = bounding_box(b.vertices_m);
+        extent = std::max({extent, box.hi.x - box.lo.x, box.hi.y - box.lo.y});
+    }
+    return extent;
+}
+
+double mass_of(const BodyDef& b, const PolygonProperties& p) {
+    return b.mass_kg.value_or(b.density_kg_m3 * p.area_m2 * b.thickness_m);
+}
+
+// GLPK's scaling and basis routines print to the terminal whatever the solver's message level:
+// its terminal output is off while a problem is solved, and restored after (the physics never
+// prints).
+struct GlpkSilence {
+    int previous = glp_term_out(GLP_OFF);
+    GlpkSilence() = default;
+    GlpkSilence(const GlpkSilence&) = delete;
+    GlpkSilence& operator=(const GlpkSilence&) = delete;
+    ~GlpkSilence() { glp_term_out(previous); }
+};
+
+struct GlpkProblem {
+    glp_prob* lp = glp_create_prob();
+    GlpkProblem() = default;
+    GlpkProblem(const GlpkProblem&) = delete;
+    GlpkProblem& operator=(const GlpkProblem&) = delete;
+    ~GlpkProblem() { glp_delete_prob(lp); }
+};
+
+// GLPK's sparse matrix, 1-based (entry 0 unused).
+struct Triplets {
+    std::vector<int> row{0};
+    std::vector<int> column{0};
+    std::vector<double> value{0.0};
+    // Coefficients are of order one; a round-off remainder (cos 90 deg = 6e-17) is left out.
+    void add(int r, int c, double v) {
+        if (std::abs(v) < 1e-13) return;
+        row.push_back(r);
+        column.push_back(c);
+        value.push_back(v);
+    }
+};
+
+// Column of interface k's end j: n at 2 (2k + j) + 1, s right after it (1-based).
+int normal_column(std::size_t k, int j) { return static_cast<int>(2 * (2 * k + static_cast<std::size_t>(j)) + 1); }
+
+}  // namespace
+
+const char* to_string(LimitStatus status) {
+    switch (status) {
+        case LimitStatus::collapse: return "collapse";
+        case LimitStatus::no_equilibrium: return "no_equilibrium";
+        case LimitStatus::unbounded: return "unbounded";
+    }
+    return "?";
+}
+
+const char* to_string(InterfaceMotion motion) {
+    switch (motion) {
+        case InterfaceMotion::locked: return "locked";
+        case InterfaceMotion::hinge_at_end_0: return "hinge_at_end_0";
+        case InterfaceMotion::hinge_at_end_1: return "hinge_at_end_1";
+        case InterfaceMotion::opens: return "opens";
+        case InterfaceMotion::slides: return "slides";
+    }
+    return "?";
+}
+
+std::vector<Vec2> body_centroids_m(const Model& model) {
+    std::vector<Vec2> out;
+    out.reserve(model.bodies.size());
+    for (const BodyDef& b : model.bodies) out.push_back(polygon_properties(b.vertices_m).centroid_m);
+    return out;
+}
+
+std::vector<BlockInterface> find_interfaces(const Model& model, double tolerance_m) {
+    std::vector<Box> boxes;
+    for (const BodyDef& b : model.bodies) boxes.push_back(bounding_box(b.vertices_m));
+    std::vector<BlockInterface> out;
+    const auto& bodies = model.bodies;
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        for (std::uint32_t j = i + 1; j < bodies.size(); ++j) {
+            if (!movable(bodies[i]) && !movable(bodies[j])) continue;
+            if (!boxes_touch(boxes[i], boxes[j], tolerance_m)) continue;
+            const auto& a = bodies[i].vertices_m;
+            const auto& b = bodies[j].vertices_m;
+            const double mu = model.contact.at(model.contact.id(bodies[i].material), model.contact.id(bodies[j].material)).mu;
+            for (std::size_t e = 0; e < a.size(); ++e) {
+                for (std::size_t f = 0; f < b.size(); ++f) {
+                    BlockInterface face{i, j, {}, {}, mu};
+                    if (common_segment(a[e], a[(e + 1) % a.size()], b[f], b[(f + 1) % b.size()], tolerance_m, face.end_m,
+                                       face.normal))
+                        out.push_back(face);
+                }
+            }
+        }
+    }
+    return out;
+}
+
+std::vector<InterfaceKinematics> interface_kinematics(const Model& model, const std::vector<BlockInterface>& interfaces,
+                                                      const std::vector<BodyMotion>& motions, bool dilation,
+                                                      double relative_tolerance) {
+    const std::vector<Vec2> centroids = body_centroids_m(model);
+    auto velocity_at = [&](std::uint32_t body, Vec2 p) {
+        return motions[body].velocity + cross(motions[body].rotation, p - centroids[body]);
+    };
+    std::vector<InterfaceKinematics> out(interfaces.size());
+    double largest = 0.0;
+    for (std::size_t k = 0; k < interfaces.size(); ++k) {
+        const BlockInterface& f = interfaces[k];
+        for (int j = 0; j < 2; ++j) {
+            const Vec2 relative = velocity_at(f.body_b, f.end_m[j]) - velocity_at(f.body_a, f.end_m[j]);
+            out[k].slip[j] = dot(relative, perp(f.normal));
+            out[k].opening[j] = dot(relative, f.normal) - (dilation ? f.mu * std::abs(out[k].slip[j]) : 0.0);
+            largest = std::max({largest, std::abs(out[k].slip[j]), std::abs(out[k].opening[j])});
+        }
+    }
+    const double tolerance = relative_tolerance * largest;
+    for (InterfaceKinematics& k : out) {
+        const bool open0 = k.opening[0] > tolerance;
+        const bool open1 = k.opening[1] > tolerance;
+        // A joint that separates at both ends is open, whatever it does along itself.
+        if (open0 && open1) k.motion = InterfaceMotion::opens;
+        else if (std::abs(k.slip[0]) > tolerance || std::abs(k.slip[1]) > tolerance) k.motion = InterfaceMotion::slides;
+        else if (open1) k.motion = InterfaceMotion::hinge_at_end_0;
+        else if (open0) k.motion = InterfaceMotion::hinge_at_end_1;
+        else k.motion = InterfaceMotion::locked;
+    }
+    return out;
+}
+
+namespace {
+
+// The dynamic bodies' rows (3 each, 1-based; 0 for supports), mass properties and the scales.
+struct Rows {
+    std::vector<int> first_row;
+    std::vector<PolygonProperties> props;
+    std::vector<double> mass_kg;
+    int equilibrium_rows = 0;
+    double weight_scale_N = 0.0;
+    double length_scale_m = 0.0;
+};
+
+Rows body_rows(const Model& model) {
+    const double g = model.settings.gravity_m_s2;
+    const std::size_t n = model.bodies.size();
+    Rows r{std::vector<int>(n, 0), std::vector<PolygonProperties>(n), std::vector<double>(n, 0.0)};
+    for (std::size_t i = 0; i < n; ++i) {
+        r.props[i] = polygon_properties(model.bodies[i].vertices_m);
+        r.mass_kg[i] = mass_of(model.bodies[i], r.props[i]);
+        if (!movable(model.bodies[i])) continue;
+        r.first_row[i] = r.equilibrium_rows + 1;
+        r.equilibrium_rows += 3;
+        r.weight_scale_N = std::max(r.weight_scale_N, r.mass_kg[i] * g);
+        r.length_scale_m = std::max(r.length_scale_m, std::sqrt(r.props[i].area_m2));
+    }
+    return r;
+}
+
+// The friction rows of interface k's end j (1-based): s - mu n <= 0, then -s - mu n <= 0.
+int friction_row(const Rows& rows, std::size_t k, int j) { return rows.equilibrium_rows + static_cast<int>(4 * k) + 2 * j + 1; }
+
+int lambda_column(const std::vector<BlockInterface>& faces) { return static_cast<int>(4 * faces.size()) + 1; }
+
+// Rows, columns, bounds and the matrix of the associative LP.
+void build_problem(glp_prob* lp, const Model& model, const std::vector<BlockInterface>& faces, const Rows& rows, Vec2 live) {
+    glp_set_obj_dir(lp, GLP_MAX);
+    glp_add_rows(lp, rows.equilibrium_rows + static_cast<int>(4 * faces.size()));
+    const int lambda = lambda_column(faces);
+    glp_add_cols(lp, lambda);
+    Triplets m;
+    for (std::size_t i = 0; i < model.bodies.size(); ++i) {
+        const int r = rows.first_row[i];
+        if (!r) continue;
+        const double weight = rows.mass_kg[i] * model.settings.gravity_m_s2 / rows.weight_scale_N;
+        // interface forces + lambda live = - dead (dead = weight downwards)
+        glp_set_row_bnds(lp, r, GLP_FX, 0.0, 0.0);
+        glp_set_row_bnds(lp, r + 1, GLP_FX, weight, weight);
+        glp_set_row_bnds(lp, r + 2, GLP_FX, 0.0, 0.0);
+        m.add(r, lambda, weight * live.x);
+        m.add(r + 1, lambda, weight * live.y);
+    }
+    for (std::size_t k = 0; k < faces.size(); ++k) {
+        const BlockInterface& f = faces[k];
+        const Vec2 t = perp(f.normal);
+        for (int j = 0; j < 2; ++j) {
+            const int cn = normal_column(k, j);
+            const int cs = cn + 1;
+            glp_set_col_bnds(lp, cn, GLP_LO, 0.0, 0.0);
+            glp_set_col_bnds(lp, cs, GLP_FR, 0.0, 0.0);
+            // On b: +n normal + s t at end j; on a: the opposite.
+            for (auto [body, sign] : {std::pair{f.body_b, 1.0}, std::pair{f.body_a, -1.0}}) {
+                const int r = rows.first_row[body];
+                if (!r) continue;
+                const Vec2 arm = (1.0 / rows.length_scale_m) * (f.end_m[j] - rows.props[body].centroid_m);
+                m.add(r, cn, sign * f.normal.x);
+                m.add(r + 1, cn, sign * f.normal.y);
+                m.add(r + 2, cn, sign * cross(arm, f.normal));
+                m.add(r, cs, sign * t.x);
+                m.add(r + 1, cs, sign * t.y);
+                m.add(r + 2, cs, sign * cross(arm, t));
+            }
+            const int rf = friction_row(rows, k, j);
+            glp_set_row_bnds(lp, rf, GLP_UP, 0.0, 0.0);
+            glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, 0.0);
+            m.add(rf, cs, 1.0);
+            m.add(rf, cn, -f.mu);
+            m.add(rf + 1, cs, -1.0);
+            m.add(rf + 1, cn, -f.mu);
+        }
+    }
+    glp_set_col_bnds(lp, lambda, GLP_FR, 0.0, 0.0);
+    glp_set_obj_coef(lp, lambda, 1.0);
+    glp_load_matrix(lp, static_cast<int>(m.row.size()) - 1, m.row.data(), m.column.data(), m.value.data());
+}
+
+// Solves from the current basis (from a fresh one if that fails) and says how it ended.
+LimitStatus solve(glp_prob* lp) {
+    glp_smcp parameters;
+    glp_init_smcp(&parameters);
+    parameters.msg_lev = GLP_MSG_OFF;
+    parameters.presolve = GLP_OFF;
+    glp_scale_prob(lp, GLP_SF_AUTO);
+    if (glp_simplex(lp, &parameters) != 0) {
+        glp_adv_basis(lp, 0);
+        const int code = glp_simplex(lp, &parameters);
+        if (code != 0) throw std::runtime_error("limit analysis: the LP solver (GLPK) failed, code " + std::to_string(code));
+    }
+    const int status = glp_get_status(lp);
+    if (status == GLP_NOFEAS || status == GLP_INFEAS) return LimitStatus::no_equilibrium;
+    if (status == GLP_UNBND) return LimitStatus::unbounded;
+    if (status != GLP_OPT) throw std::runtime_error("limit analysis: GLPK ended without an optimum, status " + std::to_string(status));
+    return LimitStatus::collapse;
+}
+
+// Non-associative friction: each end's friction becomes a shear capacity c = mu n from the last
+// solution (a capacity independent of n: slip without dilation), moved halfway towards the new
+// mu n each time, and the LP solved again from its last basis until lambda settles (Gilbert,
+// Casapulla and Ahmed 2006). A heuristic: it may stop at a solution that is not the least
+// non-associative one (docs/limit_analysis.md).
+LimitStatus iterate_non_associative(glp_prob* lp, const std::vector<BlockInterface>& faces, const Rows& rows,
+                                    const LimitOptions& options, LimitResult& result) {
+    auto mu_n = [&](std::size_t k, int j) { return faces[k].mu * std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))); };
+    std::vector<double> capacity(2 * faces.size());
+    for (std::size_t k = 0; k < faces.size(); ++k)
+        for (int j = 0; j < 2; ++j) capacity[2 * k + j] = mu_n(k, j);
+    double previous = glp_get_col_prim(lp, lambda_column(faces));
+    result.converged = false;
+    for (result.iterations = 1; result.iterations <= options.max_iterations; ++result.iterations) {
+        for (std::size_t k = 0; k < faces.size(); ++k) {
+            for (int j = 0; j < 2; ++j) {
+                const int rf = friction_row(rows, k, j);
+                int index[2] = {0, normal_column(k, j) + 1};
+                double plus[2] = {0.0, 1.0}, minus[2] = {0.0, -1.0};
+                glp_set_mat_row(lp, rf, 1, index, plus);        // s <= c
+                glp_set_mat_row(lp, rf + 1, 1, index, minus);   // -s <= c
+                glp_set_row_bnds(lp, rf, GLP_UP, 0.0, capacity[2 * k + j]);
+                glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, capacity[2 * k + j]);
+            }
+        }
+        const LimitStatus status = solve(lp);
+        if (status != LimitStatus::collapse) return status;
+        const double lambda = glp_get_col_prim(lp, lambda_column(faces));
+        for (std::size_t k = 0; k < faces.size(); ++k)
+            for (int j = 0; j < 2; ++j) capacity[2 * k + j] = 0.5 * (capacity[2 * k + j] + mu_n(k, j));
+        if (std::abs(lambda - previous) <= options.lambda_tolerance) {
+            result.converged = true;
+            break;
+        }
+        previous = lambda;
+    }
+    result.iterations = std::min(result.iterations, options.max_iterations);
+    return LimitStatus::collapse;
+}
+
+InterfaceForces forces_of(glp_prob* lp, const BlockInterface& face, std::size_t k, double weight_scale_N) {
+    InterfaceForces forces;
+    for (int j = 0; j < 2; ++j) {
+        forces.normal_N[j] = std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))) * weight_scale_N;
+        forces.shear_N[j] = glp_get_col_prim(lp, normal_column(k, j) + 1) * weight_scale_N;
+    }
+    const double total = forces.normal_N[0] + forces.normal_N[1];
+    forces.thrust_fraction = total > 0.0 ? forces.normal_N[1] / total : std::numeric_limits<double>::quiet_NaN();
+    forces.thrust_point_m = total > 0.0 ? face.end_m[0] + forces.thrust_fraction * (face.end_m[1] - face.end_m[0])
+                                        : 0.5 * (face.end_m[0] + face.end_m[1]);
+    return forces;
+}
+
+// The duals of the equilibrium rows: the virtual motion (a moment row's dual is a rotation times
+// the length scale). Scaled so that the fastest point of any body moves at 1, signed so that the
+// live load does positive work.
+std::vector<BodyMotion> mechanism_of(glp_prob* lp, const Model& model, const Rows& rows, Vec2 live) {
+    std::vector<BodyMotion> out(model.bodies.size());
+    double live_work = 0.0, fastest = 0.0;
+    for (std::size_t i = 0; i < model.bodies.size(); ++i) {
+        const int r = rows.first_row[i];
+        if (!r) continue;
+        BodyMotion& u = out[i];
+        u.velocity = {glp_get_row_dual(lp, r), glp_get_row_dual(lp, r + 1)};
+        u.rotation = glp_get_row_dual(lp, r + 2) / rows.length_scale_m;
+        live_work += rows.mass_kg[i] * dot(live, u.velocity);
+        for (Vec2 v : model.bodies[i].vertices_m)
+            fastest = std::max(fastest, length(u.velocity + cross(u.rotation, v - rows.props[i].centroid_m)));
+    }
+    if (fastest > 0.0) {
+        const double scale = (live_work < 0.0 ? -1.0 : 1.0) / fastest;
+        for (BodyMotion& u : out) {
+            u.velocity = scale * u.velocity;
+            u.rotation *= scale;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options) {
+    if (!(model.settings.gravity_m_s2 > 0.0)) throw std::invalid_argument("limit analysis needs gravity (the dead load): gravity is 0");
+    const double d_length = length(options.live_load_direction);
+    if (!(d_length > 0.0)) throw std::invalid_argument("limit analysis needs a live load direction");
+    const Vec2 live = (1.0 / d_length) * options.live_load_direction;
+    const Rows rows = body_rows(model);
+    if (rows.equilibrium_rows == 0) throw std::invalid_argument("limit analysis needs at least one dynamic body");
+
+    LimitResult result;
+    const double tolerance_m = options.touch_tolerance_m > 0.0 ? options.touch_tolerance_m : 1e-6 * largest_extent_m(model);
+    result.interfaces = find_interfaces(model, tolerance_m);
+    const auto& faces = result.interfaces;
+    std::vector<bool> touched(model.bodies.size(), false);
+    for (const BlockInterface& f : faces) touched[f.body_a] = touched[f.body_b] = true;
+    for (std::uint32_t i = 0; i < model.bodies.size(); ++i)
+        if (movable(model.bodies[i]) && !touched[i]) result.unsupported.push_back(i);
+
+    const GlpkSilence silence;
+    GlpkProblem problem;
+    build_problem(problem.lp, model, faces, rows, live);
+    glp_adv_basis(problem.lp, 0);
+    result.status = solve(problem.lp);
+    if (result.status == LimitStatus::collapse && options.friction == FrictionFlow::non_associative)
+        result.status = iterate_non_associative(problem.lp, faces, rows, options, result);
+    if (result.status != LimitStatus::collapse) return result;
+
+    result.lambda = glp_get_col_prim(problem.lp, lambda_column(faces));
+    for (std::size_t k = 0; k < faces.size(); ++k) result.forces.push_back(forces_of(problem.lp, faces[k], k, rows.weight_scale_N));
+    result.mechanism = mechanism_of(problem.lp, model, rows, live);
+    result.kinematics = interface_kinematics(model, faces, result.mechanism, options.friction == FrictionFlow::associative);
+    return result;
+}
+
+}  // namespace blockdem

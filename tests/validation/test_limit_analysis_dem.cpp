@@ -1,0 +1,224 @@
+// The DEM against limit analysis (analysis/limit_analysis.hpp): on a tilting table (gravity
+// turned at a slow rate, geometry level) an assembly of dry blocks collapses when tan(tilt)
+// reaches the LP's collapse multiplier lambda (dead load g cos a, live load g sin a: the same
+// ratio as lambda m g on m g), and its blocks move as the LP's mechanism: the same interfaces
+// hinge, at the same ends. Cases: a slender block, a stack of two blocks, a semicircular arch of
+// 20 voussoirs at t/R = 0.15; the arch under its own weight, standing at t/R = 0.12 and falling
+// at t/R = 0.10 (the LP's minimum: 0.1074); and a running-bond wall with a window, against the
+// non-associative LP (disabled: slow; see its comment).
+//
+// How the DEM's collapse is read: the tilt at which some block has moved by onset_m = 1 mm (its
+// centroid plus its rotation times its bounding radius, from the settled start; before the
+// mechanism, an arch's voussoirs creep by up to 1e-4 m as joints beside forming hinges slip
+// locally, so a smaller threshold reads that creep, 5 % early), and the mechanism from
+// every block's displacement when the largest has moved by mechanism_m, classified like the LP's
+// virtual velocities (without the LP's dilation, which the DEM does not have).
+//
+// Tolerance, and why: 3 % of lambda (the issue's). The DEM is quasi-static but not exactly:
+// the tilt keeps rising while the mechanism grows from its onset to onset_m (about 0.2 s at
+// these rates, 0.02 to 0.04 deg of tilt, 0.1 to 0.5 % of lambda), the contacts are elastic
+// (kn = 1e9 N/m: joints close by m g / kn ~ 1e-6 m, a lean of 1e-5 rad, 0.01 % of lambda), and
+// a corner-to-edge contact point sits at the corner, as the LP's interface end does. What is
+// left is measured (printed) and well inside 3 %.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "analysis/limit_analysis.hpp"
+#include "scenes/assemblies.hpp"
+#include "support/world_helpers.hpp"
+
+namespace blockdem {
+namespace {
+
+using testing::rectangle_body;
+
+constexpr double deg = std::numbers::pi / 180.0;
+constexpr double g = 9.81;
+
+struct DemCollapse {
+    double tilt_deg = NAN;                 ///< the table's tilt at the onset (NaN: none)
+    std::vector<BodyMotion> displacement;  ///< [m], [rad] when the largest reached mechanism_m (empty: never)
+    double largest_m = 0.0;                ///< [m] the largest movement reached
+};
+
+// Each dynamic block's movement from its reference: centroid displacement plus rotation times
+// its bounding radius [m].
+double moved_m(const World& w, std::size_t i, const std::vector<Vec2>& p0, const std::vector<double>& a0) {
+    return length(w.bodies.position_m[i] - p0[i]) + std::abs(w.bodies.rotation_rad[i] - a0[i]) * w.bodies.bounding_radius_m[i];
+}
+
+// Settles m at start_deg (friction held), then raises the tilt at rate_deg_s for up to max_s.
+DemCollapse tilt_until_collapse(Model m, double start_deg, double rate_deg_s, double max_s, double onset_m, double mechanism_m) {
+    m.settings.duration_s = max_s;
+    m.settings.dt_s.reset();
+    m.settings.tilt_rad = start_deg * deg;
+    m.settings.tilt_rate_rad_s = rate_deg_s * deg;
+    m.settling = SettlingSettings{};
+    World w = build_world(m);
+    const std::vector<Vec2> p0 = w.bodies.position_m;
+    const std::vector<double> a0 = w.bodies.rotation_rad;
+    DemCollapse out;
+    while (w.time_s < max_s) {
+        step_begin(w);
+        step_end(w);
+        double largest = 0.0;
+        for (std::size_t i = 0; i < w.bodies.size(); ++i)
+            if (w.bodies.kind[i] == BodyKind::dynamic) largest = std::max(largest, moved_m(w, i, p0, a0));
+        out.largest_m = largest;
+        if (std::isnan(out.tilt_deg) && largest > onset_m) out.tilt_deg = tilt_at_rad(w.settings, w.time_s) / deg;
+        if (largest > mechanism_m) {
+            for (std::size_t i = 0; i < w.bodies.size(); ++i)
+                out.displacement.push_back({w.bodies.position_m[i] - p0[i], w.bodies.rotation_rad[i] - a0[i]});
+            break;
+        }
+    }
+    return out;
+}
+
+struct Comparison {
+    double lp_lambda = 0.0;
+    double dem_lambda = 0.0;
+    std::size_t interfaces = 0;
+    std::size_t mismatched = 0;   ///< interfaces whose motion differs between the LP and the DEM
+    std::size_t lp_hinges = 0;
+};
+
+// The LP (live load towards -x: a positive tilt raises +x) against the DEM, from one degree
+// below atan(lambda) at rate_deg_s.
+Comparison compare(const Model& m, const char* what, double rate_deg_s, double max_s, double onset_m, double mechanism_m) {
+    const LimitResult lp = solve_limit_analysis(m, {.live_load_direction = {-1.0, 0.0}});
+    EXPECT_EQ(lp.status, LimitStatus::collapse) << what;
+    Comparison c;
+    c.lp_lambda = lp.lambda;
+    c.interfaces = lp.interfaces.size();
+    const double lp_tilt_deg = std::atan(lp.lambda) / deg;
+    const DemCollapse dem = tilt_until_collapse(m, lp_tilt_deg - 1.0, rate_deg_s, max_s, onset_m, mechanism_m);
+    c.dem_lambda = std::tan(dem.tilt_deg * deg);
+    std::vector<InterfaceKinematics> dem_motion;
+    if (!dem.displacement.empty()) dem_motion = interface_kinematics(m, lp.interfaces, dem.displacement, false, 0.1);
+    for (std::size_t k = 0; k < lp.interfaces.size(); ++k) {
+        const InterfaceMotion l = lp.kinematics[k].motion;
+        c.lp_hinges += l == InterfaceMotion::hinge_at_end_0 || l == InterfaceMotion::hinge_at_end_1;
+        if (dem_motion.empty() || dem_motion[k].motion != l) {
+            ++c.mismatched;
+            std::printf("  %s, interface %s / %s: LP %s, DEM %s\n", what, m.bodies[lp.interfaces[k].body_a].name.c_str(),
+                        m.bodies[lp.interfaces[k].body_b].name.c_str(), to_string(l),
+                        dem_motion.empty() ? "-" : to_string(dem_motion[k].motion));
+        }
+    }
+    std::printf("%s: LP lambda = %.5f (tilt %.4f deg); DEM collapse at tilt %.4f deg, tan = %.5f (%+.2f %%); %zu interfaces, "
+                "%zu LP hinges, %zu differ in the DEM\n",
+                what, c.lp_lambda, lp_tilt_deg, dem.tilt_deg, c.dem_lambda, 100.0 * (c.dem_lambda / c.lp_lambda - 1.0),
+                c.interfaces, c.lp_hinges, c.mismatched);
+    return c;
+}
+
+Model with_base(std::vector<BodyDef> blocks, double base_width_m, double mu) {
+    std::vector<BodyDef> bodies{rectangle_body("base", BodyKind::fixed, base_width_m, 0.2, {0.0, -0.1})};
+    for (BodyDef& b : blocks) bodies.push_back(std::move(b));
+    return testing::model_with(std::move(bodies), testing::contact(1e9, mu, 0.3, 1.0), 0.0, g);
+}
+
+BodyDef block(const std::string& name, double width_m, double height_m, Vec2 centre_m) {
+    return rectangle_body(name, BodyKind::dynamic, width_m, height_m, centre_m, 0.0, 2500.0 * width_m * height_m);
+}
+
+void expect_agreement(const Comparison& c) {
+    EXPECT_NEAR(c.dem_lambda / c.lp_lambda, 1.0, 0.03);
+    EXPECT_EQ(c.mismatched, 0u);
+}
+
+TEST(LimitAnalysisDem, SlenderBlockTopplesAtTheMultiplier) {
+    const Model m = with_base({block("block", 0.2, 0.8, {0.0, 0.4})}, 2.0, 0.6);
+    const Comparison c = compare(m, "slender block 0.2 x 0.8 m", 0.25, 8.0, 1e-3, 5e-3);
+    EXPECT_NEAR(c.lp_lambda, 0.25, 1e-9);
+    expect_agreement(c);
+}
+
+TEST(LimitAnalysisDem, TwoBlockStackTopplesAsOne) {
+    const Model m = with_base({block("low", 0.3, 0.6, {0.0, 0.3}), block("high", 0.4, 0.4, {0.0, 0.8})}, 2.0, 0.8);
+    const Comparison c = compare(m, "two-block stack", 0.25, 8.0, 1e-3, 5e-3);
+    expect_agreement(c);
+}
+
+// A running-bond wall 0.8 m long, 16 courses (1.6 m), with a window 0.4 x 0.3 m and a lintel,
+// mu = 0.8. The associative LP gives lambda = 0.3738: its friction lets a joint slip only while
+// it opens by mu x the slip, even where it separates, and this wall's mechanisms open bed joints
+// obliquely (the part above a stepped crack turning about the toe), which real and DEM joints
+// do freely. The DEM collapses at tan(tilt) = 0.31849, 14.8 % lower; the non-associative LP
+// (iterated, FrictionFlow::non_associative) gives 0.32470, and the DEM is asserted within 3 % of
+// that, and below the associative value. Disabled because it is slow (35 s of CPU: the wall is
+// settled 18 deg below its collapse, since a wall settled near collapse overshoots as its
+// unloaded contacts take the load, and falls while settling); run it with
+// --gtest_also_run_disabled_tests.
+TEST(LimitAnalysisDem, DISABLED_WallWithWindow) {
+    scenes::WallSpec spec;
+    spec.origin_m = {-0.6, 0.0};
+    spec.length_m = 0.8;
+    spec.courses = 16;
+    spec.openings.push_back({.x_m = 0.2, .y_m = 0.6, .width_m = 0.4, .height_m = 0.3, .lintel_bearing_m = 0.1});
+    const Model m = with_base(scenes::as_bodies(scenes::masonry_wall(spec), {.name_prefix = "brick", .density_kg_m3 = 2500.0}),
+                              2.0, 0.8);
+    const LimitResult lp = solve_limit_analysis(m, {.live_load_direction = {-1.0, 0.0}});
+    const LimitResult na = solve_limit_analysis(m, {.live_load_direction = {-1.0, 0.0}, .friction = FrictionFlow::non_associative});
+    ASSERT_EQ(lp.status, LimitStatus::collapse);
+    ASSERT_EQ(na.status, LimitStatus::collapse);
+    const DemCollapse dem = tilt_until_collapse(m, std::atan(lp.lambda) / deg - 18.0, 1.0, 20.0, 1e-3, 5e-3);
+    const double dem_lambda = std::tan(dem.tilt_deg * deg);
+    std::printf("wall with window: LP lambda = %.5f associative, %.5f non-associative; DEM collapse at tilt %.3f deg, tan = %.5f "
+                "(%+.1f %% of the associative, %+.1f %% of the non-associative)\n",
+                lp.lambda, na.lambda, dem.tilt_deg, dem_lambda, 100.0 * (dem_lambda / lp.lambda - 1.0),
+                100.0 * (dem_lambda / na.lambda - 1.0));
+    EXPECT_NEAR(dem_lambda / na.lambda, 1.0, 0.03);
+    EXPECT_LT(dem_lambda, lp.lambda);
+}
+
+Model semicircular_arch(double thickness_over_radius, int voussoirs) {
+    scenes::ArchSpec spec;
+    spec.span_m = 2.0;
+    spec.rise_m = 1.0;
+    spec.ring_thickness_m = thickness_over_radius;
+    spec.voussoirs = voussoirs;
+    return testing::model_with(scenes::arch_bodies(scenes::masonry_arch(spec), {.name_prefix = "v", .density_kg_m3 = 2500.0},
+                                                   BodyKind::fixed),
+                               testing::contact(1e9, 0.8, 0.3, 1.0), 0.0, g);
+}
+
+TEST(LimitAnalysisDem, ArchUnderLateralLoad) {
+    const Comparison c = compare(semicircular_arch(0.15, 20), "arch t/R = 0.15, 20 voussoirs", 0.25, 8.0, 1e-3, 5e-3);
+    EXPECT_EQ(c.lp_hinges, 4u);
+    expect_agreement(c);
+}
+
+// Under its own weight (no tilt, no settling: it starts from rest as built): the crown's drop
+// after 2 s. Standing, the ring only closes its joints elastically (m g / kn ~ 1e-6 m per joint);
+// falling, it has dropped by centimetres (measured below).
+double crown_drop_m(double thickness_over_radius) {
+    Model m = semicircular_arch(thickness_over_radius, 20);
+    m.settings.duration_s = 2.0;
+    m.settings.dt_s.reset();
+    World w = build_world(m);
+    const std::size_t crown = 9;  // of 20 voussoirs, 9 and 10 meet at the crown
+    const double y0 = w.bodies.position_m[crown].y;
+    while (w.time_s < m.settings.duration_s) {
+        step_begin(w);
+        step_end(w);
+    }
+    return y0 - w.bodies.position_m[crown].y;
+}
+
+TEST(LimitAnalysisDem, ArchStandsAtTwelveAndFallsAtTenPercent) {
+    const double stands = crown_drop_m(0.12);
+    const double falls = crown_drop_m(0.10);
+    std::printf("arch of 20 voussoirs under its own weight, crown drop after 2 s: t/R = 0.12: %.3g m; t/R = 0.10: %.3g m\n", stands,
+                falls);
+    EXPECT_LT(stands, 1e-4);
+    EXPECT_GT(falls, 0.02);
+}
+
+}  // namespace
+}  // namespace blockdem
