@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/bonded_pairs.hpp"
 #include "contact/contact_table.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "world/parallel.hpp"
@@ -12,6 +13,8 @@ namespace blockdem {
 OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
     PairContact& pair = w.contacts[p];
+    // A bonded joint holds its points while it opens within what the bond carries.
+    if (pair.count > 0 && has_intact_bond(pair)) return update_bonded_pair(w, p);
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.box_m[pair.a];

@@ -33,13 +33,14 @@ struct Axis {
 }
 
 // The edge of poly that other penetrates least. Stops early once a separating edge is found
-// (separation >= 0: polygons that only touch have no point with a positive overlap either).
-Axis best_axis(const PolygonView& poly, const PolygonView& other) {
+// (separation >= gap_m; with gap 0, polygons that only touch have no point with a positive
+// overlap either).
+Axis best_axis(const PolygonView& poly, const PolygonView& other, double gap_m) {
     Axis best;
     for (std::uint32_t i = 0; i < poly.count; ++i) {
         const double s = edge_separation(poly, i, other);
         if (s > best.separation_m) best = {s, i};
-        if (s >= 0.0) break;
+        if (s >= gap_m) break;
     }
     return best;
 }
@@ -103,14 +104,14 @@ struct Reference {
 // when some edge separates the polygons.
 // separating: set to the separating edge when there is one.
 std::optional<Reference> choose_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                                          std::uint32_t& separating) {
-    const Axis on_a = best_axis(a, b);
-    if (on_a.separation_m >= 0.0) {
+                                          std::uint32_t& separating, double gap_m) {
+    const Axis on_a = best_axis(a, b, gap_m);
+    if (on_a.separation_m >= gap_m) {
         separating = make_feature(0, on_a.edge);
         return std::nullopt;
     }
-    const Axis on_b = best_axis(b, a);
-    if (on_b.separation_m >= 0.0) {
+    const Axis on_b = best_axis(b, a, gap_m);
+    if (on_b.separation_m >= gap_m) {
         separating = make_feature(1, on_b.edge);
         return std::nullopt;
     }
@@ -184,14 +185,14 @@ bool separated_by_cached_edge(const PolygonView& a, const PolygonView& b, const 
 }
 
 bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                      ContactManifold& manifold, AxisCache* cache) {
+                      ContactManifold& manifold, AxisCache* cache, double gap_m) {
     manifold.count = 0;
     // A pair kept apart by an edge last step is most likely still apart along it.
     if (cache && separated_by_cached_edge(a, b, *cache)) return false;
     std::optional<Reference> chosen = cache ? cached_reference(a, b, previous_reference, *cache) : std::nullopt;
     const bool cached = chosen.has_value();
     std::uint32_t separating = no_reference;
-    if (!cached) chosen = choose_reference(a, b, previous_reference, separating);
+    if (!cached) chosen = choose_reference(a, b, previous_reference, separating, gap_m);
     if (chosen && chosen->owner == 2) separating = previous_reference;  // last step's reference now separates
     if (!chosen || chosen->owner == 2) {
         if (cache) {
@@ -239,7 +240,7 @@ bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t 
     manifold.reference = make_feature(owner, edge);
     for (const ClipPoint& c : twice) {
         const double overlap = -dot(n, c.p - v1);
-        if (overlap <= 0.0) continue;
+        if (overlap <= -gap_m) continue;
         ContactGeometry& g = manifold.points[manifold.count++];
         g.point_m = c.p + (0.5 * overlap) * n;
         g.overlap_m = overlap;

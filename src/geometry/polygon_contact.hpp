@@ -83,8 +83,10 @@ bool separated_by_cached_edge(const PolygonView& a, const PolygonView& b, const 
 
 /// Fills manifold with the contact points of a and b. previous_reference: the reference edge
 /// chosen at the last step for this pair (no_reference if none). cache: optional, see AxisCache.
+/// gap_m: points apart by less than this still count, with a negative overlap (a bonded joint
+/// that opens within what its bond carries: contact/narrow_phase.cpp); with a gap, no cache.
 /// Returns true if they touch.
 bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                      ContactManifold& manifold, AxisCache* cache = nullptr);
+                      ContactManifold& manifold, AxisCache* cache = nullptr, double gap_m = 0.0);
 
 }  // namespace blockdem

@@ -117,6 +117,7 @@ void update_contacts_and_forces(World& w) {
     w.energy.normal_dashpot_j += contacts.normal_dashpot_j;
     w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
     w.energy.friction_j += contacts.friction_j;
+    w.energy.bond_breakage_j += contacts.bond_breakage_j;
     w.energy.elastic_j = contacts.elastic_j;
     watch_overlap(w, contacts);
 }

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "contact/bonded_pairs.hpp"
 #include "contact/narrow_phase.hpp"
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
@@ -59,6 +60,8 @@ void add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
     }
     b.bounding_radius_m.push_back(radius);
     b.least_width_m.push_back(least_width(def.vertices_m));
+    b.thickness_m.push_back(def.thickness_m);
+    b.bond_group.push_back(def.bond_group);
     const std::size_t first = b.local_vertices_m.size() - def.vertices_m.size();
     for (std::size_t k = 0; k < def.vertices_m.size(); ++k)
         b.local_normals.push_back(
@@ -132,7 +135,7 @@ std::size_t memory_bytes(const World& w) {
     const Bodies& b = w.bodies;
     std::size_t total = sizeof(World) + bytes_of(b.name) + bytes_of(b.kind) + bytes_of(b.is_static) + bytes_of(b.record) +
                         bytes_of(b.material) + bytes_of(b.mass_kg) + bytes_of(b.inv_mass_1_kg) + bytes_of(b.inertia_kg_m2) +
-                        bytes_of(b.inv_inertia_1_kg_m2) + bytes_of(b.bounding_radius_m) + bytes_of(b.least_width_m) + bytes_of(b.vertex_begin) +
+                        bytes_of(b.inv_inertia_1_kg_m2) + bytes_of(b.bounding_radius_m) + bytes_of(b.least_width_m) + bytes_of(b.thickness_m) + bytes_of(b.bond_group) + bytes_of(b.vertex_begin) +
                         bytes_of(b.vertex_count) + bytes_of(b.local_vertices_m) + bytes_of(b.world_vertices_m) + bytes_of(b.local_normals) +
                         bytes_of(b.world_normals) + bytes_of(b.box_m) + bytes_of(b.position_m) + bytes_of(b.rotation_rad) +
                         bytes_of(b.velocity_m_s) + bytes_of(b.angular_velocity_rad_s) + bytes_of(b.acceleration_m_s2) +
@@ -171,6 +174,7 @@ World build_world(const Model& model) {
     w.broad_phase_margin_m = 0.1 * smallest;
     place_driven_bodies(w, 0.0);
     check_no_initial_overlap(w);
+    bond_touching_pairs(w);
     set_time_step(w, model.settings);
     init_model_domain(w);
     initialise_energy(w);
