@@ -71,7 +71,7 @@ void InterfaceMonitor::observe(const World& w) {
     const Bodies& b = w.bodies;
     for (InterfaceState& s : states_) {
         s.touching = false;
-        s.points = 0;
+        s.points = s.bonded_points = s.broken_points = 0;
         s.normal_force_n = s.shear_force_n = s.opening_m = 0.0;
     }
     for (const PairContact& pair : w.contacts) {
@@ -88,7 +88,10 @@ void InterfaceMonitor::observe(const World& w) {
             normal_n += pair.points[p].normal_force_n;
             shear_ccw_n += pair.points[p].shear_force_n;
             centre_m += pair.points[p].point_m;
+            s.bonded_points += pair.points[p].bond == BondState::intact ? 1 : 0;
+            s.broken_points += is_broken(pair.points[p].bond) ? 1 : 0;
         }
+        if (s.broken_points > 0 && s.first_break_time_s < 0.0) s.first_break_time_s = w.time_s;
         centre_m = (1.0 / pair.count) * centre_m;
         // Both N and the shear along s = -(the contact tangent) come out the same whichever
         // body of the pair is body_a (interface_monitor.hpp).
