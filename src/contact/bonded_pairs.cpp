@@ -48,15 +48,10 @@ std::size_t bond_touching_pairs(World& w) {
     return bonded;
 }
 
-OpenedPoints update_bonded_pair(World& w, std::size_t p) {
+double bonded_gap_m(const World& w, const PairContact& pair) {
     const Bodies& b = w.bodies;
-    PairContact& pair = w.contacts[p];
     const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
-    const double gap_m = 2.0 * bond_opening_m(params) + touching_gap_m(b, pair);
-    pair.axis_cache = AxisCache{};
-    ContactManifold manifold;
-    collide_polygons(view_of(b, pair.a), view_of(b, pair.b), pair.reference, manifold, nullptr, gap_m);
-    return update_pair_geometry(pair, manifold, match_distance_m(b, pair));
+    return 2.0 * bond_opening_m(params) + touching_gap_m(b, pair);
 }
 
 }  // namespace blockdem

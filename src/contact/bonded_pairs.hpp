@@ -15,10 +15,9 @@ namespace blockdem {
 /// table is built (the start overlap check). Returns the number of bonded points.
 std::size_t bond_touching_pairs(World& w);
 
-/// The narrow phase of a pair that holds an intact bond: points apart by less than twice the
-/// bond's tensile opening (sigma_t / JKN) are kept with a negative overlap, so that the law can
-/// pull on them and decide when the bond breaks. Full separating-axis test (no axis cache: the
-/// cache is reset, so the pair starts afresh once its bonds are gone).
-OpenedPoints update_bonded_pair(World& w, std::size_t p);
+/// How far the points of a pair that holds an intact bond may open and still be kept, with a
+/// negative overlap, by the narrow phase [m]: twice the bond's tensile opening sigma_t / JKN
+/// (so that the law, not the geometry, decides when the bond breaks), plus round-off.
+double bonded_gap_m(const World& w, const PairContact& pair);
 
 }  // namespace blockdem

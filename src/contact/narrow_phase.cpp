@@ -13,13 +13,15 @@ namespace blockdem {
 OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
     PairContact& pair = w.contacts[p];
-    // A bonded joint holds its points while it opens within what the bond carries.
-    if (pair.count > 0 && has_intact_bond(pair)) return update_bonded_pair(w, p);
+    // A bonded joint holds its points while it opens by less than gap_m (bonded_pairs.hpp):
+    // no early exit on the boxes.
+    const double gap_m = pair.count > 0 && has_intact_bond(pair) ? bonded_gap_m(w, pair) : 0.0;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.box_m[pair.a];
     const Aabb& box_b = b.box_m[pair.b];
-    if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
+    if (gap_m == 0.0 &&
+        (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y)) {
         // (Reset only if set: a pair apart stays clean and its cache line is not written.)
         if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
             pair.axis_cache = AxisCache{};
@@ -52,7 +54,7 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     pair.axis_cache.turn_rad +=
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
-    collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
+    collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, gap_m);
     // Corners of one pair are at least a face apart, so 5% of the smaller body is "same place".
     const double match_distance = 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
     return update_pair_geometry(pair, manifold, match_distance);

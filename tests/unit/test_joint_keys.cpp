@@ -54,7 +54,7 @@ std::string error_of(const std::string& name, const std::string& text) {
 }
 
 TEST(JointKeys, PerLengthJointLoadsAndBondsTheTouchingBodies) {
-    const LoadedScenario s = load_scenario(testing::write_scenario("joint-keys", "good", bonded_block));
+    const LoadedScenario s = load_scenario(testing::write_scenario("joint-keys", "good", bonded_block), {});
     const ContactParameters& p = s.world.contact.at(0, 0);
     EXPECT_EQ(p.stiffness, StiffnessBasis::per_length);
     EXPECT_DOUBLE_EQ(p.kn_pa_m, 1e10);
@@ -74,7 +74,7 @@ TEST(JointKeys, PerLengthJointLoadsAndBondsTheTouchingBodies) {
 
 TEST(JointKeys, FrictionAngleGivesMu) {
     const LoadedScenario s = load_scenario(
-        testing::write_scenario("joint-keys", "angle", replace_once(bonded_block, "mu = 0.6\n", "friction_deg = 30.0\n")));
+        testing::write_scenario("joint-keys", "angle", replace_once(bonded_block, "mu = 0.6\n", "friction_deg = 30.0\n")), {});
     EXPECT_NEAR(s.world.contact.at(0, 0).mu, std::tan(30.0 * 3.14159265358979 / 180.0), 1e-12);
 }
 
@@ -116,7 +116,7 @@ stiffness = "per_point"
 kn = 1.0e8
 )";
     const std::string e = error_of("pair-basis", replace_once(pairs, "bonded = true\n", ""));
-    expect_contains(e, "contact.pairs[1].stiffness");  // (the pair table's path)
+    expect_contains(e, "contact.pairs[0].stiffness");
     expect_contains(e, "per-point stiffness given where per-length is set");
 }
 

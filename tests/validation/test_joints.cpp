@@ -19,7 +19,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <cstdio>  // MEASURE
 
 #include "support/world_helpers.hpp"
 
@@ -100,7 +99,6 @@ TEST(Joints, ColumnUnderGravityClosesEachJointBySigmaOverKn) {
         const double sigma_pa = (4 - j) * mass * g / (width * thickness);
         const double closure_m = mean_overlap(w, j, j + 1);
         EXPECT_NEAR(closure_m, sigma_pa / kn, 0.01 * sigma_pa / kn) << "joint " << j;
-        std::printf("MEASURE column joint %d closure %.6g expected %.6g rel %.3g\n", j, closure_m, sigma_pa / kn, closure_m / (sigma_pa / kn) - 1);  // MEASURE
     }
     EXPECT_LT(w.energy.balance_error(), 1e-3);
 }
@@ -120,7 +118,6 @@ TEST(Joints, BlockUnderShearDisplacesByTauOverKsBeforeSliding) {
                                w.bodies.rotation_rad[1] * 0.5 * height;
     const double expected_m = -mass * g * std::sin(10.0 * deg) / (ks * width * 1.0);  // gravity pulls toward -x
     EXPECT_NEAR(base_slip_m, expected_m, 0.01 * std::abs(expected_m));
-    std::printf("MEASURE shear %.6g expected %.6g rel %.3g\n", base_slip_m, expected_m, base_slip_m / expected_m - 1);  // MEASURE
     EXPECT_FALSE(w.contacts[0].points[0].sliding);
 }
 
@@ -159,7 +156,6 @@ TEST(Joints, DirectShearPeaksAtCohesionPlusFrictionThenResidual) {
     EXPECT_NEAR(std::abs(before_break.shear_n), discrete_n, 0.002 * discrete_n);
     EXPECT_NEAR(std::abs(before_break.shear_n), continuum_n, 0.02 * continuum_n);
     EXPECT_NEAR(residual_ratio, residual, 1e-3 * residual);
-    std::printf("MEASURE dshear peak %.6g discrete %.6g continuum %.6g residual %.6g ebal %.3g\n", std::abs(before_break.shear_n), discrete_n, continuum_n, residual_ratio, w.energy.balance_error());  // MEASURE
     EXPECT_GT(w.energy.bond_breakage_j, 0.0);
     EXPECT_LT(w.energy.balance_error(), 1e-2);
 }
@@ -190,7 +186,6 @@ TEST(Joints, DirectTensionBreaksAtTensileStrengthTimesArea) {
         step_end(w);
     }
     EXPECT_NEAR(pull_at_break, sigma_t * width * 1.0, 0.01 * sigma_t * width);
-    std::printf("MEASURE tension %.6g expected %.6g ebal %.3g\n", pull_at_break, sigma_t * width, w.energy.balance_error());  // MEASURE
     EXPECT_LT(w.energy.balance_error(), 1e-2);
 }
 
