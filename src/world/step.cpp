@@ -78,7 +78,10 @@ void watch_overlap(World& w, const ContactEnergy& contacts) {
     watch.max_overlap_pair_a = pair.a;
     watch.max_overlap_pair_b = pair.b;
     watch.max_overlap_m = deepest_m;
-    watch.max_overlap_kn_N_m = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]).kn_N_m;
+    // (A per-length joint's point stiffness, JKN L t, is what the overlap answers to.)
+    const ContactParameters& p = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
+    watch.max_overlap_kn_N_m =
+        p.stiffness == StiffnessBasis::per_length ? joint_point_of(w.bodies, pair, p).kn_N_m : p.kn_N_m;
 }
 
 // Every this many steps the stable limit of the live contacts is evaluated (about 1% of a

@@ -74,5 +74,12 @@ assert vtp and 'Name="bond"' in vtp[-1].read_text(), "no bond field in the conta
 print(f"bonded points at t = 0: {sum(int(r['bonded_points']) for r in first)}; interfaces with a broken bond: {len(broken)}")
 PY
 
+# check prints the joint per unit length and the per-point stiffness of the start contacts:
+# A running-bond bed joint overlaps half a 0.4 m brick; each of its two points carries half of
+# that: JKN 1e10 Pa/m x 0.1 m x 1 m = 1e9 N/m.
+out=$("$bin" check "$tmp/wall.toml" 2>&1)
+grep -q "per unit length of joint: kn = 1e+10 Pa/m, ks = 4e+09 Pa/m" <<< "$out" || fail "check: no per-length kn, ks: $out"
+grep -q "per-length joint: kn = 1e+09, ks = 4e+08 N/m per point" <<< "$out" || fail "check: no per-point stiffness of the start contacts"
+
 [ $failures -eq 0 ] && echo "bonded wall: restarted at T/2 gives identical files; bonds reported"
 exit $((failures > 0))
