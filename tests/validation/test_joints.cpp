@@ -3,7 +3,10 @@
 //  - a column of blocks under gravity closes each joint by sigma / kn (kn in Pa/m);
 //  - a block under a steady shear displaces by tau / ks;
 //  - direct shear of a bonded block peaks at c A + N tan(phi), then slides at N tan(phi_r);
-//  - direct tension breaks the bond at sigma_t A.
+//  - direct tension breaks the bond at sigma_t A;
+//  - a bonded cantilever of blocks cracks at its root when the discrete joint's moment capacity
+//    (two points h apart, each of area h t / 2: M = sigma_t t h^2 / 2 plus the axial force's
+//    share) is reached.
 // Tolerances, and why: the closures and displacements are those of linear springs in static
 // equilibrium, reached by damping (h = 0.5); what is left of the motion after the settling
 // time is far below 1e-4 of them, so 1% is the engineering tolerance of the issue with margin.
@@ -187,6 +190,63 @@ TEST(Joints, DirectTensionBreaksAtTensileStrengthTimesArea) {
     }
     EXPECT_NEAR(pull_at_break, sigma_t * width * 1.0, 0.01 * sigma_t * width);
     EXPECT_LT(w.energy.balance_error(), 1e-2);
+}
+
+// A cantilever of four bonded 0.5 x 0.2 m blocks (2000 kg/m^3, t = 1 m) out of a fixed wall;
+// the table's tilt falls from 89 deg (gravity along the beam, pressing it on the wall) at
+// 40 deg/s, so the bending load g cos(tilt) grows slowly against the axial g sin(tilt). The
+// root joint's two points, h apart at the top and bottom corners, carry the moment
+// M = w cos(tilt) L^2 / 2 and the compression N = w sin(tilt) L (w = rho g h t, L = 2 m): the
+// top point pulls with T = M / h - N / 2 and its bond breaks at T = sigma_t (h / 2) t. The
+// tolerance, 0.5 deg: the ramp's dynamic share (the beam's first period, 0.05 s, is 2 deg of
+// ramp; damping h = 0.5) and the joints' elastic rotation, which shortens no lever.
+TEST(Joints, BondedCantileverCracksAtTheDiscreteJointsMomentCapacity) {
+    const double length = 0.5, height = 0.2, density = 2000.0, sigma_t = 3.2e5;
+    const int blocks = 4;
+    std::vector<BodyDef> bodies{testing::rectangle_body("wall", BodyKind::fixed, 0.4, 1.0, {-0.2, 0.0})};
+    for (int i = 0; i < blocks; ++i)
+        bodies.push_back(testing::rectangle_body("block" + std::to_string(i), BodyKind::dynamic, length, height,
+                                                 {(i + 0.5) * length, 0.0}, 0.0, density * length * height));
+    for (BodyDef& b : bodies) b.bond_group = 1;
+    ContactParameters p = joint(1e10, 4e9, 0.6);
+    p.cohesion_pa = 1e6;
+    p.tensile_strength_pa = sigma_t;
+    Model m = joint_model(bodies, p, 1.6);
+    m.settings.tilt_rad = 89.0 * deg;
+    m.settings.tilt_rate_rad_s = -40.0 * deg;
+    World w = build_world(m);
+    ASSERT_EQ(load_of(w, 0, 1).intact, 2);
+    double crack_tilt_deg = NAN;
+    bool root_first = false;
+    while (w.time_s < 1.6 && std::isnan(crack_tilt_deg)) {
+        step_begin(w);
+        for (const PairContact& pair : w.contacts)
+            for (std::uint32_t k = 0; k < pair.count; ++k)
+                if (is_broken(pair.points[k].bond) && std::isnan(crack_tilt_deg)) {
+                    crack_tilt_deg = 89.0 - 40.0 * w.time_s;
+                    root_first = pair.a == 0 && pair.b == 1;
+                }
+        step_end(w);
+    }
+    // The closed form: the tilt at which T = sigma_t h t / 2 (bisection; T grows as the tilt falls).
+    const double w_n_m = density * g * height * 1.0, span = blocks * length;
+    auto pull_beyond_strength = [&](double tilt_deg) {
+        const double a = tilt_deg * deg;
+        return w_n_m * std::cos(a) * span * span / (2.0 * height) - 0.5 * w_n_m * std::sin(a) * span -
+               0.5 * sigma_t * height * 1.0;
+    };
+    double lo = 0.0, hi = 89.0;  // pull_beyond_strength(lo) > 0 > pull_beyond_strength(hi)
+    for (int i = 0; i < 60; ++i) (pull_beyond_strength(0.5 * (lo + hi)) > 0.0 ? lo : hi) = 0.5 * (lo + hi);
+    EXPECT_TRUE(root_first);
+    EXPECT_NEAR(crack_tilt_deg, lo, 0.5);
+    // The continuum's capacity sigma_t t h^2 / 6 is a third of the discrete joint's: that
+    // section would have cracked much earlier (at a steeper tilt).
+    auto continuum_beyond = [&](double tilt_deg) {
+        const double a = tilt_deg * deg;
+        return w_n_m * std::cos(a) * span * span / 2.0 - sigma_t * height * height / 6.0 -
+               w_n_m * std::sin(a) * span * height / 6.0;
+    };
+    EXPECT_GT(continuum_beyond(crack_tilt_deg + 5.0), 0.0);
 }
 
 }  // namespace
