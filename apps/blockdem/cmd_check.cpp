@@ -70,6 +70,8 @@ void print_stiffness_effects(const World& w) {
     for (std::uint32_t mi = 0; mi < m.size(); ++mi) {
         for (std::uint32_t mj = 0; mj < m.size(); ++mj) {
             if (!used[mj]) continue;
+            // (A per-length joint's point stiffness depends on the contact: the start contacts show it.)
+            if (w.contact.at(mi, mj).stiffness == StiffnessBasis::per_length) continue;
             const double kn = w.contact.at(mi, mj).kn_N_m;
             double shortest_s = INFINITY, largest_fraction = 0.0, largest_overlap_m = 0.0;
             std::string shortest_body, largest_body;
@@ -104,6 +106,15 @@ void print_contact(const World& w) {
     for (std::uint32_t i = 0; i < m.size(); ++i) {
         for (std::uint32_t j = i; j < m.size(); ++j) {
             const ContactParameters& p = w.contact.at(i, j);
+            if (p.stiffness == StiffnessBasis::per_length) {
+                fmt::print("  {} / {}: per unit length of joint: kn = {:.4g} Pa/m, ks = {:.4g} Pa/m (a point: times its "
+                           "tributary length and the thickness; see the start contacts), mu = {:.4g}, cohesion = {:.4g} "
+                           "Pa, tensile_strength = {:.4g} Pa, residual_mu = {:.4g} (bonded points only), h_n = {:.4g}, "
+                           "h_s = {:.4g}, termination = {}\n",
+                           m[i], m[j], p.kn_pa_m, p.ks_pa_m, p.mu, p.cohesion_pa, p.tensile_strength_pa,
+                           residual_friction(p), p.h_n, p.h_s, to_string(p.termination));
+                continue;
+            }
             fmt::print("  {} / {}: kn = {:.4g} N/m, ks = {:.4g} N/m, mu = {:.4g}, h_n = {:.4g} (paper e = {:.4g}, "
                        "rebound e = {:.4g}), h_s = {:.4g}, termination = {}\n",
                        m[i], m[j], p.kn_N_m, p.ks_N_m, p.mu, p.h_n, p.h_n < 1.0 ? restitution_paper(p.h_n) : 0.0,
@@ -138,8 +149,11 @@ void print_start_contacts(const World& w, std::size_t shown = 20) {
         if (b.kind[p.a] != BodyKind::dynamic && b.kind[p.b] != BodyKind::dynamic) continue;
         if (++pairs > shown) continue;
         const double reduced_mass_kg = 1.0 / (b.inv_mass_1_kg[p.a] + b.inv_mass_1_kg[p.b]);
-        fmt::print("  {} / {}: {} point{}, M = {:.4g} kg; C_n = {:.4g}, C_s = {:.4g} N s/m per point\n", b.name[p.a],
-                   b.name[p.b], count, count == 1 ? "" : "s", reduced_mass_kg, p.cn_N_s_m, p.cs_N_s_m);
+        const bool per_length = w.contact.at(b.material[p.a], b.material[p.b]).stiffness == StiffnessBasis::per_length;
+        fmt::print("  {} / {}: {} point{}, M = {:.4g} kg; C_n = {:.4g}, C_s = {:.4g} N s/m per point{}\n", b.name[p.a],
+                   b.name[p.b], count, count == 1 ? "" : "s", reduced_mass_kg, p.cn_N_s_m, p.cs_N_s_m,
+                   per_length ? fmt::format("; per-length joint: kn = {:.4g}, ks = {:.4g} N/m per point", p.kn_N_m, p.ks_N_m)
+                              : "");
     }
     if (pairs == 0) fmt::print("  none\n");
     if (pairs > shown) fmt::print("  ... and {} more pairs\n", pairs - shown);

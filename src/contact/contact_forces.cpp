@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "laws/linear_spring_dashpot.hpp"
+#include "laws/mohr_coulomb_joint.hpp"
 #include "world/parallel.hpp"
 
 namespace blockdem {
@@ -14,6 +15,60 @@ ContactParameters softened(ContactParameters p, double scale) {
     return p;
 }
 
+// The relative velocity of b's and a's material points at x.
+Vec2 relative_velocity(const Bodies& b, std::uint32_t ia, std::uint32_t ib, Vec2 x) {
+    const Vec2 ra = x - b.position_m[ia];
+    const Vec2 rb = x - b.position_m[ib];
+    return (b.velocity_m_s[ib] + cross(b.angular_velocity_rad_s[ib], rb)) -
+           (b.velocity_m_s[ia] + cross(b.angular_velocity_rad_s[ia], ra));
+}
+
+// The per-length joint at every point of one pair (laws/mohr_coulomb_joint.hpp): each point
+// with its own tributary length, stiffness and dashpots. Kept apart from pair_law so that the
+// per-point law's loop is what it was.
+ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double dt_s,
+                             PairForces& out) {
+    ContactEnergy energy;
+    const std::uint32_t ia = pair.a;
+    const std::uint32_t ib = pair.b;
+    const ContactParameters& params = stored;
+    const JointPoint joint = joint_point_of(b, pair, stored);
+    const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
+    ContactParameters point_params = params;
+    point_params.kn_N_m = joint.kn_N_m;
+    point_params.ks_N_m = joint.ks_N_m;
+    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / pair.count);
+    const Vec2 n = pair.normal;
+    const Vec2 t = perp(n);
+    double deepest_m = 0.0;
+    for (std::uint32_t k = 0; k < pair.count; ++k) {
+        ContactPoint& point = pair.points[k];
+        const Vec2 relative = relative_velocity(b, ia, ib, point.point_m);
+        const ContactKinematics kin{point.overlap_m, dot(relative, n), dot(relative, t)};
+        const JointForce j = mohr_coulomb_joint(params, joint, dash, kin, point.history(), point.bond, dt_s);
+        const ContactForce& f = j.force;
+        point.normal_force_n = f.normal_n;
+        point.shear_spring_n = f.shear_spring_n;
+        point.shear_force_n = f.shear_n;
+        point.normal_dashpot_n = f.normal_dashpot_n;
+        point.shear_dashpot_n = f.shear_dashpot_n;
+        point.sliding = f.sliding;
+        point.bond = j.bond;
+        const Vec2 on_b = f.normal_n * n + f.shear_n * t;
+        out.on_b_n[k] = on_b;
+        out.torque_on_b_n_m[k] = cross(point.point_m - b.position_m[ib], on_b);
+        out.torque_on_a_n_m[k] = cross(point.point_m - b.position_m[ia], on_b);
+        energy.normal_dashpot_j += f.normal_dashpot_work_j;
+        energy.shear_dashpot_j += f.shear_dashpot_work_j;
+        energy.friction_j += f.friction_work_j;
+        energy.bond_breakage_j += j.bond_breakage_j;
+        energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond);
+        deepest_m = std::max(deepest_m, point.overlap_m);
+    }
+    energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
+    return energy;
+}
+
 // The law at every point of one pair: updates the points' forces and history, and writes what
 // they add to the two bodies into the pair's own slot (no shared sums: parallel.hpp, rule 1).
 // Returns the pair's share of the ledger: this step's dissipation and the springs' energy now.
@@ -23,7 +78,9 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
     if (pair.count == 0) return energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
-    const ContactParameters params = softened(contact.at(b.material[ia], b.material[ib]), pair.stiffness_scale);
+    const ContactParameters& stored = contact.at(b.material[ia], b.material[ib]);
+    if (stored.stiffness == StiffnessBasis::per_length) return joint_pair_law(pair, b, stored, dt_s, out);
+    const ContactParameters params = softened(stored, pair.stiffness_scale);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
     const Vec2 n = pair.normal;
@@ -86,6 +143,14 @@ ContactEnergy opened_points_work(const World& w, const PairContact& pair, const 
 
 }  // namespace
 
+JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p) {
+    const double thickness_m = std::min(b.thickness_m[pair.a], b.thickness_m[pair.b]);
+    const double least_width_m = std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
+    const double tributary_m = tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m);
+    // (The softening of a vanishing overlap applies as to a per-point contact: polygon_contact.hpp.)
+    return joint_point(p, tributary_m * pair.stiffness_scale, thickness_m);
+}
+
 void index_pairs_by_body(World& w) {
     const std::size_t n = w.bodies.size();
     w.body_pair_start.assign(n + 1, 0);
@@ -145,9 +210,16 @@ double contact_elastic_energy(const World& w) {
     return deterministic_sum(static_cast<std::ptrdiff_t>(w.contacts.size()), [&](std::ptrdiff_t p) {
         const PairContact& pair = w.contacts[p];
         if (pair.count == 0) return 0.0;
-        const ContactParameters params =
-            softened(w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]), pair.stiffness_scale);
+        const ContactParameters& stored = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
         double energy = 0.0;
+        if (stored.stiffness == StiffnessBasis::per_length) {
+            const JointPoint joint = joint_point_of(w.bodies, pair, stored);
+            for (std::uint32_t k = 0; k < pair.count; ++k)
+                energy += joint_elastic_energy(joint, pair.points[k].overlap_m, pair.points[k].shear_spring_n,
+                                               pair.points[k].bond);
+            return energy;
+        }
+        const ContactParameters params = softened(stored, pair.stiffness_scale);
         for (std::uint32_t k = 0; k < pair.count; ++k)
             energy += contact_elastic_energy(params, pair.points[k].overlap_m, pair.points[k].shear_spring_n);
         return energy;

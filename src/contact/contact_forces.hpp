@@ -24,6 +24,7 @@ struct ContactEnergy {
     double normal_dashpot_j = 0.0;  ///< [J] dissipated by the normal dashpots this step
     double shear_dashpot_j = 0.0;   ///< [J] dissipated by the shear dashpots this step
     double friction_j = 0.0;        ///< [J] dissipated by sliding this step
+    double bond_breakage_j = 0.0;   ///< [J] released by bonds that broke this step
     double elastic_j = 0.0;         ///< [J] stored in the springs after this step's update
     /// The deepest overlap this step, as a fraction of the least width of the thinner body of
     /// its pair, and that pair (penetration check, world/step.cpp).
@@ -33,6 +34,7 @@ struct ContactEnergy {
         normal_dashpot_j += o.normal_dashpot_j;
         shear_dashpot_j += o.shear_dashpot_j;
         friction_j += o.friction_j;
+        bond_breakage_j += o.bond_breakage_j;
         elastic_j += o.elastic_j;
         // (Strictly greater: of equal depths the first pair in table order is kept, whatever
         // the thread count.)
@@ -60,6 +62,10 @@ void sum_body_force(World& w, std::size_t i);
 /// Lists each body's pairs in table order (World::body_pair_start/entries) and sizes the force
 /// slots; called whenever the table's pairs change (a broad-phase rebuild).
 void index_pairs_by_body(World& w);
+
+/// The stiffness and joint area of each point of a pair with per-length stiffness (its points
+/// share one tributary length: laws/mohr_coulomb_joint.hpp), softened as the pair is.
+JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p);
 
 /// Elastic energy stored in all contact springs [J].
 double contact_elastic_energy(const World& w);

@@ -10,6 +10,7 @@
 #include "broad_phase/grid_broad_phase.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "laws/linear_spring_dashpot.hpp"
+#include "laws/mohr_coulomb_joint.hpp"
 
 namespace blockdem {
 
@@ -24,6 +25,7 @@ struct ContactPoint {
     double normal_dashpot_n = 0.0; ///< [N] the normal dashpot's part of normal_force_n (history)
     double shear_dashpot_n = 0.0;  ///< [N] the shear dashpot's part of shear_force_n (history)
     bool sliding = false;
+    BondState bond = BondState::none;  ///< the point's bond (history; laws/mohr_coulomb_joint.hpp)
 
     /// What the contact law carries over to the next step (laws/linear_spring_dashpot.hpp).
     ContactHistory history() const { return {shear_spring_n, normal_dashpot_n, shear_dashpot_n}; }
@@ -31,6 +33,7 @@ struct ContactPoint {
         shear_spring_n = old.shear_spring_n;
         normal_dashpot_n = old.normal_dashpot_n;
         shear_dashpot_n = old.shear_dashpot_n;
+        bond = old.bond;
     }
 };
 
@@ -81,6 +84,14 @@ struct OpenedPoints {
 /// Updates a pair with this step's geometry: matched points keep their shear history. A point
 /// matches last step's point with the same feature id, or else an unmatched old point closer
 /// than match_distance_m (see the .cpp for why). Returns the old points that opened.
+/// True while some point of the pair holds an intact bond (the narrow phase then keeps points
+/// that opened slightly: contact/narrow_phase.cpp).
+inline bool has_intact_bond(const PairContact& pair) {
+    for (std::uint32_t k = 0; k < pair.count; ++k)
+        if (pair.points[k].bond == BondState::intact) return true;
+    return false;
+}
+
 OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m);
 
 }  // namespace blockdem

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/bonded_pairs.hpp"
 #include "contact/contact_table.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "geometry/rounded_contact.hpp"
@@ -17,11 +18,15 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     // that moves them is their bodies'.
     const std::uint32_t part_a = pair.part_a;
     const std::uint32_t part_b = pair.part_b;
+    // A bonded joint holds its points while it opens by less than gap_m (bonded_pairs.hpp):
+    // no early exit on the boxes.
+    const double gap_m = pair.count > 0 && has_intact_bond(pair) ? bonded_gap_m(w, pair) : 0.0;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.part_box_m[part_a];
     const Aabb& box_b = b.part_box_m[part_b];
-    if (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y) {
+    if (gap_m == 0.0 &&
+        (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y)) {
         // (Reset only if set: a pair apart stays clean and its cache line is not written.)
         if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
             pair.axis_cache = AxisCache{};
@@ -58,7 +63,7 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
         collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache);
     else
-        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache);
+        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, gap_m);
     // Corners of one pair are at least a face apart, so 5% of the smaller part is "same place".
     const double match_distance = 0.05 * std::min(b.part_radius_m[part_a], b.part_radius_m[part_b]);
     return update_pair_geometry(pair, manifold, match_distance);

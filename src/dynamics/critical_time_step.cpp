@@ -7,6 +7,7 @@
 
 #include "geometry/polygon_contact.hpp"
 #include "laws/linear_spring_dashpot.hpp"
+#include "laws/mohr_coulomb_joint.hpp"
 
 namespace blockdem {
 
@@ -44,11 +45,20 @@ void add_direction(StabilityRows& rows, const Bodies& b, const StiffnessPoint& p
 }
 
 // The point's stiffness and damping as the law applies them (contact_forces.cpp): the pair's
-// reduced mass shared among its points.
+// reduced mass shared among its points; a per-length joint's point with its tributary length
+// (the pair's two points, first and second, or its one).
 StiffnessPoint stiffness_point(const World& w, std::uint32_t a, std::uint32_t b, Vec2 point, Vec2 normal,
-                               std::uint32_t points_in_pair, double stiffness_scale) {
+                               std::uint32_t points_in_pair, double stiffness_scale, Vec2 first_m, Vec2 second_m) {
     const Bodies& bodies = w.bodies;
     ContactParameters params = w.contact.at(bodies.material[a], bodies.material[b]);
+    if (params.stiffness == StiffnessBasis::per_length) {
+        const double least_width_m = std::min(bodies.least_width_m[a], bodies.least_width_m[b]);
+        const JointPoint joint =
+            joint_point(params, tributary_length_m(points_in_pair, first_m, second_m, least_width_m),
+                        std::min(bodies.thickness_m[a], bodies.thickness_m[b]));
+        params.kn_N_m = joint.kn_N_m;
+        params.ks_N_m = joint.ks_N_m;
+    }
     params.kn_N_m *= stiffness_scale;
     params.ks_N_m *= stiffness_scale;
     const double reduced_mass = 1.0 / (bodies.inv_mass_1_kg[a] + bodies.inv_mass_1_kg[b]);
@@ -62,7 +72,14 @@ void add_landing(const World& w, std::uint32_t i, std::vector<StiffnessPoint>& o
     const Bodies& b = w.bodies;
     ContactParameters stiffest{};
     for (std::uint32_t other = 0; other < w.contact.materials.size(); ++other) {
-        const ContactParameters& p = w.contact.at(b.material[i], other);
+        ContactParameters p = w.contact.at(b.material[i], other);
+        if (p.stiffness == StiffnessBasis::per_length) {
+            // Flat on two corners, each carrying at most the body's radius of face (more than
+            // half of any face: an upper bound, so a safe step).
+            const JointPoint joint = joint_point(p, b.bounding_radius_m[i], b.thickness_m[i]);
+            p.kn_N_m = joint.kn_N_m;
+            p.ks_N_m = joint.ks_N_m;
+        }
         stiffest.kn_N_m = std::max(stiffest.kn_N_m, p.kn_N_m);
         stiffest.ks_N_m = std::max(stiffest.ks_N_m, p.ks_N_m);
         stiffest.h_n = std::max(stiffest.h_n, p.h_n);
@@ -115,7 +132,7 @@ CriticalTimeStep live_time_step(const World& w, StabilityRows& rows) {
     for (const PairContact& pair : w.contacts)
         for (std::uint32_t k = 0; k < pair.count; ++k)
             rows.add(w.bodies, stiffness_point(w, pair.a, pair.b, pair.points[k].point_m, pair.normal, pair.count,
-                                               pair.stiffness_scale));
+                                               pair.stiffness_scale, pair.points[0].point_m, pair.points[1].point_m));
     return rows.limit(w.bodies);
 }
 
@@ -143,7 +160,8 @@ std::vector<StiffnessPoint> start_stiffness_points(const World& w) {
         touches[pair.a] = touches[pair.b] = 1;
         for (std::uint32_t k = 0; k < manifold.count; ++k)
             points.push_back(
-                stiffness_point(w, pair.a, pair.b, manifold.points[k].point_m, manifold.normal, manifold.count, 1.0));
+                stiffness_point(w, pair.a, pair.b, manifold.points[k].point_m, manifold.normal, manifold.count, 1.0,
+                                manifold.points[0].point_m, manifold.points[1].point_m));
     }
     for (std::uint32_t i = 0; i < b.size(); ++i)
         if (b.kind[i] == BodyKind::dynamic && !touches[i]) add_landing(w, i, points);

@@ -33,13 +33,14 @@ struct Axis {
 }
 
 // The edge of poly that other penetrates least. Stops early once a separating edge is found
-// (separation >= 0: polygons that only touch have no point with a positive overlap either).
-Axis best_axis(const PolygonView& poly, const PolygonView& other) {
+// (separation >= gap_m; with gap 0, polygons that only touch have no point with a positive
+// overlap either).
+Axis best_axis(const PolygonView& poly, const PolygonView& other, double gap_m) {
     Axis best;
     for (std::uint32_t i = 0; i < poly.count; ++i) {
         const double s = edge_separation(poly, i, other);
         if (s > best.separation_m) best = {s, i};
-        if (s >= 0.0) break;
+        if (s >= gap_m) break;
     }
     return best;
 }
@@ -103,14 +104,14 @@ struct Reference {
 // when some edge separates the polygons.
 // separating: set to the separating edge when there is one.
 std::optional<Reference> choose_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                                          std::uint32_t& separating) {
-    const Axis on_a = best_axis(a, b);
-    if (on_a.separation_m >= 0.0) {
+                                          std::uint32_t& separating, double gap_m) {
+    const Axis on_a = best_axis(a, b, gap_m);
+    if (on_a.separation_m >= gap_m) {
         separating = make_feature(0, on_a.edge);
         return std::nullopt;
     }
-    const Axis on_b = best_axis(b, a);
-    if (on_b.separation_m >= 0.0) {
+    const Axis on_b = best_axis(b, a, gap_m);
+    if (on_b.separation_m >= gap_m) {
         separating = make_feature(1, on_b.edge);
         return std::nullopt;
     }
@@ -149,14 +150,14 @@ double largest_other_separation(const PolygonView& a, const PolygonView& b, std:
 // so it is the reference. Returns nullopt when the full test is needed, and a reference with owner 2
 // when the reference edge now separates the polygons.
 std::optional<Reference> cached_reference(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                                          const AxisCache& cache) {
+                                          const AxisCache& cache, double gap_m) {
     if (previous_reference == no_reference || !(cache.others_max_separation_m < INFINITY)) return std::nullopt;
     const Reference r{feature_owner(previous_reference), feature_vertex(previous_reference)};
     const PolygonView& ref = r.owner == 0 ? a : b;
     const PolygonView& inc = r.owner == 0 ? b : a;
     if (r.edge >= ref.count) return std::nullopt;
     const double separation = edge_separation(ref, r.edge, inc);
-    if (separation >= 0.0) return Reference{2, 0};  // touching counts as apart, as in the full test
+    if (separation >= gap_m) return Reference{2, 0};  // touching counts as apart, as in the full test
     // The incident edge cannot have changed while the bodies have turned, relative to each
     // other, by less than half its margin (each dot product moves by at most that angle; the
     // 1e-12 covers the round-off of the turned normals).
@@ -167,31 +168,32 @@ std::optional<Reference> cached_reference(const PolygonView& a, const PolygonVie
     }
     // Every other edge separates by at most bound. The full test keeps last step's edge when it
     // is within the tolerance of the best, and the tolerance only grows as the best falls, so
-    // meeting it against bound (>= the best, < 0: no edge even touches) is enough.
+    // meeting it against bound (>= the best, < gap: no edge separates) is enough (x - tol(x)
+    // grows with x).
     const double bound = std::max(edge_separation(inc, i1, ref), cache.others_max_separation_m + cache.drift_m);
-    if (bound < 0.0 && separation >= bound - reference_tolerance(bound)) return Reference{r.owner, r.edge, i1};
+    if (bound < gap_m && separation >= bound - reference_tolerance(bound)) return Reference{r.owner, r.edge, i1};
     return std::nullopt;
 }
 
 }  // namespace
 
-bool separated_by_cached_edge(const PolygonView& a, const PolygonView& b, const AxisCache& cache) {
+bool separated_by_cached_edge(const PolygonView& a, const PolygonView& b, const AxisCache& cache, double gap_m) {
     if (cache.separating == no_reference) return false;
     const std::uint32_t owner = feature_owner(cache.separating);
     const std::uint32_t edge = feature_vertex(cache.separating);
     const PolygonView& poly = owner == 0 ? a : b;
-    return edge < poly.count && edge_separation(poly, edge, owner == 0 ? b : a) >= 0.0;
+    return edge < poly.count && edge_separation(poly, edge, owner == 0 ? b : a) >= gap_m;
 }
 
 bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                      ContactManifold& manifold, AxisCache* cache) {
+                      ContactManifold& manifold, AxisCache* cache, double gap_m) {
     manifold.count = 0;
     // A pair kept apart by an edge last step is most likely still apart along it.
-    if (cache && separated_by_cached_edge(a, b, *cache)) return false;
-    std::optional<Reference> chosen = cache ? cached_reference(a, b, previous_reference, *cache) : std::nullopt;
+    if (cache && separated_by_cached_edge(a, b, *cache, gap_m)) return false;
+    std::optional<Reference> chosen = cache ? cached_reference(a, b, previous_reference, *cache, gap_m) : std::nullopt;
     const bool cached = chosen.has_value();
     std::uint32_t separating = no_reference;
-    if (!cached) chosen = choose_reference(a, b, previous_reference, separating);
+    if (!cached) chosen = choose_reference(a, b, previous_reference, separating, gap_m);
     if (chosen && chosen->owner == 2) separating = previous_reference;  // last step's reference now separates
     if (!chosen || chosen->owner == 2) {
         if (cache) {
@@ -239,7 +241,7 @@ bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t 
     manifold.reference = make_feature(owner, edge);
     for (const ClipPoint& c : twice) {
         const double overlap = -dot(n, c.p - v1);
-        if (overlap <= 0.0) continue;
+        if (overlap <= -gap_m) continue;
         ContactGeometry& g = manifold.points[manifold.count++];
         g.point_m = c.p + (0.5 * overlap) * n;
         g.overlap_m = overlap;

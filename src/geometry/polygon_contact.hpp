@@ -79,12 +79,16 @@ struct AxisCache {
 
 /// True if the edge that separated a and b last step (cache.separating) still separates them:
 /// collide_polygons would then return no points and change nothing.
-bool separated_by_cached_edge(const PolygonView& a, const PolygonView& b, const AxisCache& cache);
+/// (gap_m: as in collide_polygons.)
+bool separated_by_cached_edge(const PolygonView& a, const PolygonView& b, const AxisCache& cache, double gap_m = 0.0);
 
 /// Fills manifold with the contact points of a and b. previous_reference: the reference edge
 /// chosen at the last step for this pair (no_reference if none). cache: optional, see AxisCache.
+/// gap_m: points apart by less than this still count, with a negative overlap (a bonded joint
+/// that opens within what its bond carries: contact/bonded_pairs.hpp). The cache holds geometry
+/// only, so it serves whatever gap a pair has from step to step.
 /// Returns true if they touch.
 bool collide_polygons(const PolygonView& a, const PolygonView& b, std::uint32_t previous_reference,
-                      ContactManifold& manifold, AxisCache* cache = nullptr);
+                      ContactManifold& manifold, AxisCache* cache = nullptr, double gap_m = 0.0);
 
 }  // namespace blockdem

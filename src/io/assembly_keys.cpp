@@ -172,7 +172,8 @@ std::vector<BodyDef> read_arch(TableReader& t, const scenes::BlockStyle& style) 
     return scenes::arch_bodies(scenes::masonry_arch(spec), style, abutments);
 }
 
-std::vector<BodyDef> read_assembly(TableReader t) {
+// group: the assembly's bond group, used when it has bonded = true (model.hpp, BodyDef).
+std::vector<BodyDef> read_assembly(TableReader t, std::uint32_t group) {
     const std::string type = t.choice("type", {"column", "wall", "rock_mass", "voronoi", "arch"}, "");
     const scenes::BlockStyle style = read_style(t);
     std::vector<scenes::Polygon> polygons;
@@ -188,6 +189,10 @@ std::vector<BodyDef> read_assembly(TableReader t) {
     }
     if (type != "arch") bodies = scenes::as_bodies(polygons, style);
     for (BodyDef& b : bodies) b.assembly = style.name_prefix;  // the collapse summary's group
+    // Bonded: its blocks to each other and to its own fixed or driven zone blocks, where they
+    // touch at the start (contact/bonded_pairs.hpp).
+    if (t.boolean_or("bonded", false))
+        for (BodyDef& b : bodies) b.bond_group = group;
     // Boundary blocks: those whose centroid lies in a zone move with the table (or stay fixed).
     for (const char* key : {"driven_zone", "fixed_zone"})
         if (t.has(key) && scenes::set_kind_inside(bodies, t.vec2_list(key), key[0] == 'd' ? BodyKind::driven : BodyKind::fixed) == 0)
@@ -212,8 +217,10 @@ SettlingSettings read_settling(TableReader t) {
 void read_assemblies(TableReader& top, Model& model) {
     std::set<std::string> names;
     for (const BodyDef& b : model.bodies) names.insert(b.name);
+    // Bond groups: 1 for the [[bodies]] with bonded = true, 2, 3, ... for the assemblies.
+    std::uint32_t group = 1;
     for (const TableReader& t : top.table_array("assemblies")) {
-        for (BodyDef& b : read_assembly(t)) {
+        for (BodyDef& b : read_assembly(t, ++group)) {
             if (!names.insert(b.name).second)
                 t.fail("name", fmt::format("the generated block '{}' has the name of another body; choose another name", b.name));
             model.bodies.push_back(std::move(b));

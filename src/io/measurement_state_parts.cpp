@@ -38,6 +38,7 @@ constexpr NumberField number_fields[] = {
     {"peak_abs_slip_m", &InterfaceState::peak_abs_slip_m},
     {"peak_opening_m", &InterfaceState::peak_opening_m},
     {"first_touch_time_s", &InterfaceState::first_touch_time_s},
+    {"first_break_time_s", &InterfaceState::first_break_time_s},
 };
 
 // Reads only the row count, before the writer (and so the part) exists.
@@ -118,6 +119,8 @@ void InterfacesStatePart::restore_state(const StateGroup& g) {
         list[k].touching = touching[k] != 0;
     }
     for (const NumberField& f : number_fields) {
+        // (A state written before bonds existed has no first_break_time_s: nothing broke then.)
+        if (!g.has(f.name) && f.field == &InterfaceState::first_break_time_s) continue;
         const std::vector<double> values = g.doubles(f.name, n);
         for (std::size_t k = 0; k < list.size(); ++k) list[k].*f.field = values[k];
     }

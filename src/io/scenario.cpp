@@ -75,20 +75,73 @@ SimulationSettings read_settings(TableReader t) {
 // Damping: h_n directly, or e with e_meaning = "paper" (default) or "rebound"; termination =
 // "no_tension" (default) or "zero_overlap" (laws/contact_parameters.hpp).
 // base_meaning: the e_meaning a pair inherits from [contact].
+// The joint keys (laws/mohr_coulomb_joint.hpp): strengths per unit area of joint, so only
+// with stiffness = "per_length"; a table that switches to per-point drops the inherited ones.
+void read_joint_keys(TableReader& t, ContactParameters& p) {
+    const char* keys[] = {"cohesion", "tensile_strength", "residual_mu"};
+    if (p.stiffness == StiffnessBasis::per_point) {
+        p.cohesion_pa = p.tensile_strength_pa = 0.0;
+        p.residual_mu = -1.0;
+        for (const char* key : keys)
+            if (t.has(key))
+                t.fail(key, fmt::format("is a joint property and needs per-length stiffness, but per-point is set here "
+                                        "(kn, ks in N/m): set stiffness = \"per_length\" and give kn, ks in Pa/m "
+                                        "(docs/scenario.md, [contact])"));
+        return;
+    }
+    for (auto [key, field] : {std::pair{"cohesion", &p.cohesion_pa}, std::pair{"tensile_strength", &p.tensile_strength_pa}})
+        if (auto value = t.optional_number(key)) {
+            if (!(*value >= 0.0)) t.fail(key, fmt::format("is a strength [Pa] and must be >= 0, got {}", *value));
+            *field = *value;
+        }
+    if (auto residual = t.optional_number("residual_mu")) {
+        if (!(*residual >= 0.0)) t.fail("residual_mu", fmt::format("must be >= 0, got {}", *residual));
+        p.residual_mu = *residual;
+    }
+    if (p.residual_mu > p.mu)
+        t.fail(t.has("residual_mu") ? "residual_mu" : "mu",
+               fmt::format("the residual friction residual_mu = {} is above the peak friction mu = {}: a joint cannot "
+                           "be stronger once broken",
+                           p.residual_mu, p.mu));
+}
+
 ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_mu,
                                           bool require_stiffness, const std::string& base_meaning = "paper") {
     ContactParameters p = base;
+    const std::string basis = t.choice("stiffness", {"per_point", "per_length"}, to_string(base.stiffness));
+    p.stiffness = basis == "per_length" ? StiffnessBasis::per_length : StiffnessBasis::per_point;
+    // kn and ks in the table's own basis: a table that changes the basis it inherits must give
+    // both (a number in N/m read as Pa/m, or the reverse, would be off by the joint's area).
+    if (p.stiffness != base.stiffness && !require_stiffness && !(t.has("kn") && t.has("ks")))
+        t.fail("stiffness", fmt::format("{} stiffness given where {} is set in [contact]: give this table's own kn and ks "
+                                        "in {}",
+                                        p.stiffness == StiffnessBasis::per_length ? "per-length" : "per-point",
+                                        base.stiffness == StiffnessBasis::per_length ? "per-length" : "per-point",
+                                        p.stiffness == StiffnessBasis::per_length ? "Pa/m" : "N/m"));
     auto stiffness = [&](const char* key, double fallback) {
         return require_stiffness ? t.positive(key) : t.optional_positive(key).value_or(fallback);
     };
-    p.kn_N_m = stiffness("kn", base.kn_N_m);
-    p.ks_N_m = stiffness("ks", base.ks_N_m);
-    if (auto mu = t.optional_number("mu")) {
+    if (p.stiffness == StiffnessBasis::per_length) {
+        p.kn_pa_m = stiffness("kn", base.kn_pa_m);
+        p.ks_pa_m = stiffness("ks", base.ks_pa_m);
+    } else {
+        p.kn_N_m = stiffness("kn", base.kn_N_m);
+        p.ks_N_m = stiffness("ks", base.ks_N_m);
+    }
+    const auto mu = t.optional_number("mu");
+    const auto friction_deg = t.optional_number("friction_deg");
+    if (mu && friction_deg) t.fail("friction_deg", "give either mu or friction_deg (mu = tan(friction_deg)), not both");
+    if (mu) {
         if (*mu < 0.0) t.fail("mu", fmt::format("must be >= 0, got {}", *mu));
         p.mu = *mu;
+    } else if (friction_deg) {
+        if (!(*friction_deg >= 0.0 && *friction_deg < 90.0))
+            t.fail("friction_deg", fmt::format("must lie in [0, 90) degrees, got {}", *friction_deg));
+        p.mu = std::tan(*friction_deg * pi / 180.0);
     } else if (require_mu) {
         t.fail_missing("mu");
     }
+    read_joint_keys(t, p);
     // (Read before e: the rebound meaning of e depends on when the contact ends.)
     const std::string termination = t.choice("termination", {"no_tension", "zero_overlap"}, to_string(base.termination));
     p.termination = termination == "zero_overlap" ? ContactTermination::zero_overlap : ContactTermination::no_tension;
@@ -192,6 +245,9 @@ void derive_stiffness(MaterialPairs& pairs, const std::vector<ElasticMaterial>& 
             origin.rule = block_joint_stiffness(origin.a, origin.b);
             pairs.parameters[i * n + j].kn_N_m = origin.rule.kn_N_m;
             pairs.parameters[i * n + j].ks_N_m = origin.rule.ks_N_m;
+            // Per length, the rule's joint stiffness per unit area is kn and ks themselves.
+            pairs.parameters[i * n + j].kn_pa_m = origin.rule.kn_per_area_pa_m;
+            pairs.parameters[i * n + j].ks_pa_m = origin.rule.ks_per_area_pa_m;
         }
     }
 }
@@ -221,6 +277,20 @@ std::vector<ElasticMaterial> read_materials(TableReader& t, const std::optional<
         m.reject_unknown_keys();
     }
     return out;
+}
+
+// Bonds carry cohesion and tension per unit area of joint: a bonded body's pairs within its
+// group need per-length stiffness.
+void check_bonds_have_joints(TableReader contact, const Model& model) {
+    for (const BodyDef& a : model.bodies) {
+        if (a.bond_group == 0) continue;
+        const ContactParameters& p = model.contact.at(model.contact.id(a.material), model.contact.id(a.material));
+        if (p.stiffness == StiffnessBasis::per_length) continue;
+        contact.fail("stiffness", fmt::format("body '{}' is bonded (bonded = true{}) but per-point stiffness is set for "
+                                              "material '{}': bonds need stiffness = \"per_length\" (kn, ks in Pa/m)",
+                                              a.name, a.assembly.empty() ? "" : fmt::format(", assembly '{}'", a.assembly),
+                                              a.material));
+    }
 }
 
 MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
@@ -329,6 +399,9 @@ BodyDef read_body(TableReader t) {
     b.velocity_m_s = t.optional_vec2("velocity").value_or(Vec2{});
     b.angular_velocity_rad_s = t.number_or("angular_velocity", 0.0);
     b.record = t.boolean_or("record", true);
+    // Every [[bodies]] entry with bonded = true is bonded to the others where they touch at the
+    // start (one group: contact/bonded_pairs.hpp).
+    if (t.boolean_or("bonded", false)) b.bond_group = 1;
     t.reject_unknown_keys();
     return b;
 }
@@ -424,6 +497,7 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     check_domain_contains_bodies(top.table("simulation"), model);
     if (auto outcomes = top.optional_table("outcomes")) model.settings.outcomes = read_outcome_thresholds(*outcomes);
     model.contact = read_contact(top.table("contact"), model.bodies);
+    check_bonds_have_joints(top.table("contact"), model);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
     top.allow({"title", "description", "output", "sensors"});  // read by load_scenario: not physics
     top.reject_unknown_keys();

@@ -357,6 +357,7 @@ void write_contacts(StateGroup g, const std::vector<PairContact>& c) {
     g.write("point_normal_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.normal_dashpot_n; }), 2);
     g.write("point_shear_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_dashpot_n; }), 2);
     g.write("point_sliding", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.sliding); }), 2);
+    g.write("point_bond", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.bond); }), 2);
 }
 
 std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_count) {
@@ -378,13 +379,18 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
     // (Files written before bodies had parts: every body was convex, one part with the body's id.)
     const std::vector<std::uint32_t> part_a = g.has("part_a") ? g.indices("part_a", n) : a;
     const std::vector<std::uint32_t> part_b = g.has("part_b") ? g.indices("part_b", n) : b;
+    // (Files written before bonds existed have no bond column: no point was bonded then.)
+    const std::vector<std::uint8_t> bond =
+        g.has("point_bond") ? g.flags("point_bond", 2 * n, 2) : std::vector<std::uint8_t>(2 * a.size(), 0);
     std::vector<PairContact> out(a.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         PairContact& p = out[i];
         // The table is sorted by (part_a, part_b), with a < b: the merge and the force sums rely on it.
         const bool sorted = i == 0 || out[i - 1].part_a < part_a[i] ||
                             (out[i - 1].part_a == part_a[i] && out[i - 1].part_b < part_b[i]);
-        if (a[i] >= b[i] || b[i] >= body_count || count[i] > 2 || !sorted)
+        const bool bonds_valid = bond[2 * i] <= std::uint8_t(BondState::broken_shear) &&
+                                 bond[2 * i + 1] <= std::uint8_t(BondState::broken_shear);
+        if (a[i] >= b[i] || b[i] >= body_count || count[i] > 2 || !sorted || !bonds_valid)
             throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: pair {} is not a "
                                                                "valid entry of the contact table", g.path(), i + 1));
         p.a = a[i];
@@ -399,7 +405,7 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
         for (std::size_t k = 0; k < 2; ++k) {
             const std::size_t j = 2 * i + k;
             p.points[k] = {feature[j], point[j], overlap[j], normal_force[j], spring[j], shear[j], normal_dashpot[j],
-                           shear_dashpot[j], sliding[j] != 0};
+                           shear_dashpot[j], sliding[j] != 0, static_cast<BondState>(bond[j])};
         }
     }
     return out;
@@ -418,6 +424,7 @@ void write_energy(StateGroup g, const EnergyLedger& e) {
     g.set("peak_scale_j", e.peak_scale_j);
     g.set("removed_j", e.removed_j);
     g.set("tilt_work_j", e.tilt_work_j);
+    g.set("bond_breakage_j", e.bond_breakage_j);
 }
 
 EnergyLedger read_energy(const StateGroup& g) {
@@ -434,6 +441,7 @@ EnergyLedger read_energy(const StateGroup& g) {
     e.peak_scale_j = g.number("peak_scale_j");
     e.removed_j = g.number("removed_j");
     e.tilt_work_j = g.number("tilt_work_j");
+    e.bond_breakage_j = g.has("bond_breakage_j") ? g.number("bond_breakage_j") : 0.0;
     return e;
 }
 

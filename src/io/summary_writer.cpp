@@ -188,6 +188,7 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
                      {"normal_dashpot_dissipated", e.normal_dashpot_j},
                      {"shear_dashpot_dissipated", e.shear_dashpot_j},
                      {"friction_dissipated", e.friction_j},
+                     {"bond_breakage_dissipated", e.bond_breakage_j},
                      {"table_work", e.table_work_j},
                      {"removed_with_bodies_leaving", e.removed_j},
                      {"tilt_work", e.tilt_work_j},

@@ -148,6 +148,8 @@ std::string vtk_contacts_polydata(const World& w) {
     real("shear_force_n", [&](std::size_t k) { return points[k]->shear_force_n; });
     real("overlap_m", [&](std::size_t k) { return points[k]->overlap_m; });
     integer("sliding", [&](std::size_t k) { return points[k]->sliding ? 1 : 0; });
+    // 0 no bond, 1 intact, 2 broken in tension, 3 broken in shear (laws/mohr_coulomb_joint.hpp).
+    integer("bond", [&](std::size_t k) { return static_cast<int>(points[k]->bond); });
     integer("body_a", [&](std::size_t k) { return pair_of[k]->a; });
     integer("body_b", [&](std::size_t k) { return pair_of[k]->b; });
     data_array(out, "Float64", "normal", 3, n, [&](Buffer& o, std::size_t k) { vec3(o, pair_of[k]->normal); });

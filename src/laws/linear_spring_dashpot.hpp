@@ -66,6 +66,38 @@ inline ContactHistory history_of(const ContactForce& f) {
     return {f.shear_spring_n, f.normal_dashpot_n, f.shear_dashpot_n};
 }
 
+/// The shear half of the law: the Coulomb slider capped at limit_n [N] and the shear dashpot.
+/// Sets f's shear forces, sliding, and the friction and shear dashpot work. (Shared with the
+/// joint law, laws/mohr_coulomb_joint.hpp; inlined, so the point law costs what it did.)
+[[gnu::always_inline]] inline void coulomb_slider(double ks_N_m, double cs_N_s_m, double limit_n,
+                                                  double tangential_speed_m_s, const ContactHistory& previous,
+                                                  double dt_s, ContactForce& f) {
+    // Coulomb slider: if the cap fell below last step's spring force (the normal force
+    // dropped), the spring first relaxes to the cap, then takes this step's slip increment.
+    // (A pulling point holds nothing in shear: its spring relaxes to zero, the excess to friction.)
+    const double last_n = previous.shear_spring_n;
+    const double capped_last_n = std::clamp(last_n, -limit_n, limit_n);
+    const double increment_m = tangential_speed_m_s * dt_s;
+    const double trial_spring_n = capped_last_n - ks_N_m * increment_m;
+    if (std::abs(trial_spring_n) > limit_n || capped_last_n != last_n) {
+        f.sliding = true;
+        f.shear_spring_n = std::clamp(trial_spring_n, -limit_n, limit_n);
+        f.shear_n = f.shear_spring_n;
+        // What the spring does not store of its trapezoidal work is lost to friction (>= 0:
+        // the force stays on the side of the slip).
+        const double work_on_bodies_j = 0.5 * (last_n + f.shear_spring_n) * increment_m;
+        const double stored_change_j =
+            ks_N_m > 0.0 ? 0.5 * (f.shear_spring_n * f.shear_spring_n - last_n * last_n) / ks_N_m : 0.0;
+        f.friction_work_j = -work_on_bodies_j - stored_change_j;
+    } else {
+        f.shear_spring_n = trial_spring_n;
+        const double dashpot_n = -cs_N_s_m * tangential_speed_m_s;
+        f.shear_n = std::clamp(trial_spring_n + dashpot_n, -limit_n, limit_n);
+        f.shear_dashpot_n = f.shear_n - trial_spring_n;
+    }
+    f.shear_dashpot_work_j = -0.5 * (previous.shear_dashpot_n + f.shear_dashpot_n) * tangential_speed_m_s * dt_s;
+}
+
 /// Advances one contact point by dt from its history (zero for a new contact). Returns the
 /// forces on b and the dissipation over the interval that ends now.
 ///
@@ -89,31 +121,7 @@ inline ContactForce linear_spring_dashpot(const ContactParameters& p, const Dash
     f.normal_dashpot_n = f.normal_n - spring_n;
     f.normal_dashpot_work_j = -0.5 * (previous.normal_dashpot_n + f.normal_dashpot_n) * k.normal_speed_m_s * dt_s;
 
-    // Coulomb slider: if the cap fell below last step's spring force (the normal force
-    // dropped), the spring first relaxes to the cap, then takes this step's slip increment.
-    // (A pulling point holds nothing in shear: its spring relaxes to zero, the excess to friction.)
-    const double limit_n = p.mu * std::max(0.0, f.normal_n);
-    const double last_n = previous.shear_spring_n;
-    const double capped_last_n = std::clamp(last_n, -limit_n, limit_n);
-    const double increment_m = k.tangential_speed_m_s * dt_s;
-    const double trial_spring_n = capped_last_n - p.ks_N_m * increment_m;
-    if (std::abs(trial_spring_n) > limit_n || capped_last_n != last_n) {
-        f.sliding = true;
-        f.shear_spring_n = std::clamp(trial_spring_n, -limit_n, limit_n);
-        f.shear_n = f.shear_spring_n;
-        // What the spring does not store of its trapezoidal work is lost to friction (>= 0:
-        // the force stays on the side of the slip).
-        const double work_on_bodies_j = 0.5 * (last_n + f.shear_spring_n) * increment_m;
-        const double stored_change_j =
-            p.ks_N_m > 0.0 ? 0.5 * (f.shear_spring_n * f.shear_spring_n - last_n * last_n) / p.ks_N_m : 0.0;
-        f.friction_work_j = -work_on_bodies_j - stored_change_j;
-    } else {
-        f.shear_spring_n = trial_spring_n;
-        const double dashpot_n = -c.cs_N_s_m * k.tangential_speed_m_s;
-        f.shear_n = std::clamp(trial_spring_n + dashpot_n, -limit_n, limit_n);
-        f.shear_dashpot_n = f.shear_n - trial_spring_n;
-    }
-    f.shear_dashpot_work_j = -0.5 * (previous.shear_dashpot_n + f.shear_dashpot_n) * k.tangential_speed_m_s * dt_s;
+    coulomb_slider(p.ks_N_m, c.cs_N_s_m, p.mu * std::max(0.0, f.normal_n), k.tangential_speed_m_s, previous, dt_s, f);
     return f;
 }
 

@@ -26,9 +26,10 @@ struct EnergyLedger {
     // (Last, so that code filling the ledger in order, e.g. the energy tests, is unchanged.)
     double removed_j = 0.0;          ///< [J] kinetic + gravitational energy of bodies taken out of the model, at removal
     double tilt_work_j = 0.0;        ///< [J] work done on the bodies by gravity turning (tilt_rate), so far
+    double bond_breakage_j = 0.0;    ///< [J] released by bonds that broke, so far (laws/mohr_coulomb_joint.hpp)
 
     double stored_j() const { return kinetic_j + gravitational_j + elastic_j; }
-    double dissipated_j() const { return normal_dashpot_j + shear_dashpot_j + friction_j; }
+    double dissipated_j() const { return normal_dashpot_j + shear_dashpot_j + friction_j + bond_breakage_j; }
     double residual_j() const { return stored_j() + dissipated_j() + removed_j - table_work_j - tilt_work_j - initial_j; }
     /// The largest term of the balance now [J]; gravitational energy counts by its change since t = 0
     /// (with what the bodies taken out carried away, so that a removal does not look like a change).

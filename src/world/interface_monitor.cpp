@@ -85,7 +85,7 @@ void InterfaceMonitor::observe(const World& w) {
     normal_now_.assign(states_.size(), Vec2{});
     for (InterfaceState& s : states_) {
         s.touching = false;
-        s.points = 0;
+        s.points = s.bonded_points = s.broken_points = 0;
         s.normal_force_n = s.shear_force_n = s.opening_m = 0.0;
     }
     for (const PairContact& pair : w.contacts) {
@@ -104,7 +104,10 @@ void InterfaceMonitor::observe(const World& w) {
             s.normal_force_n += pair.points[p].normal_force_n;
             shear_ccw_sum_n_[k] += pair.points[p].shear_force_n;
             centre_sum_m_[k] += pair.points[p].point_m;
+            s.bonded_points += pair.points[p].bond == BondState::intact ? 1 : 0;
+            s.broken_points += is_broken(pair.points[p].bond) ? 1 : 0;
         }
+        if (s.broken_points > 0 && s.first_break_time_s < 0.0) s.first_break_time_s = w.time_s;
         s.points += pair.count;
         // (The first part pair's normal: the parts of one interface face the same way.)
         if (!s.touching) normal_now_[k] = s.body_a != pair.a ? -pair.normal : pair.normal;

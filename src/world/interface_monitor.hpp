@@ -15,6 +15,10 @@
 //                   (body_b's when equal) from the line of the longer one, measured along the
 //                   longer edge's outward normal, and 0 when both corners touch (a rocking block
 //                   lifts one corner: the opening is that corner's height);
+//   bonded_points, broken_points: the active points whose bond is intact, and whose bond has
+//                   broken (laws/mohr_coulomb_joint.hpp); first_break_time_s: when the first
+//                   broken point was seen (a broken point that opens is dropped with its
+//                   history, so the counts are of the points in contact now);
 //   slip_m          accumulated slip: the integral over the time in contact of body_b's velocity
 //                   relative to body_a at the centre of the active points, along s. It holds the
 //                   elastic shear deformation of the contacts as well as sliding; it stops
@@ -47,6 +51,9 @@ struct InterfaceState {
     double peak_abs_slip_m = 0.0;     ///< [m]
     double peak_opening_m = 0.0;      ///< [m]
     double first_touch_time_s = -1.0; ///< [s] -1: never touched
+    std::uint32_t bonded_points = 0;  ///< points whose bond is intact now
+    std::uint32_t broken_points = 0;  ///< points whose bond has broken, among the active ones now
+    double first_break_time_s = -1.0; ///< [s] when a broken bond was first seen here; -1: never
 };
 
 /// Which interfaces a run follows.

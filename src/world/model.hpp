@@ -37,6 +37,9 @@ struct BodyDef {
     double angular_velocity_rad_s = 0.0;     ///< [rad/s] initial, counter-clockwise
     bool record = true;                      ///< write this body to history.csv
     std::string assembly;                    ///< name of the [[assemblies]] entry that made it ("" for [[bodies]])
+    /// Bodies with the same nonzero group are bonded where they touch at the start (a bonded
+    /// assembly, or [[bodies]] with bonded = true: docs/scenario.md); 0: no bonds.
+    std::uint32_t bond_group = 0;
 };
 
 /// Contact parameters for every pair of materials (symmetric).

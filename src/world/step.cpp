@@ -102,7 +102,10 @@ void watch_overlap(World& w, const ContactEnergy& contacts) {
     watch.max_overlap_pair_a = pair.a;
     watch.max_overlap_pair_b = pair.b;
     watch.max_overlap_m = deepest_m;
-    watch.max_overlap_kn_N_m = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]).kn_N_m;
+    // (A per-length joint's point stiffness, JKN L t, is what the overlap answers to.)
+    const ContactParameters& p = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
+    watch.max_overlap_kn_N_m =
+        p.stiffness == StiffnessBasis::per_length ? joint_point_of(w.bodies, pair, p).kn_N_m : p.kn_N_m;
 }
 
 // Every this many steps the stable limit of the live contacts is evaluated (about 1% of a
@@ -141,6 +144,7 @@ void update_contacts_and_forces(World& w) {
     w.energy.normal_dashpot_j += contacts.normal_dashpot_j;
     w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
     w.energy.friction_j += contacts.friction_j;
+    w.energy.bond_breakage_j += contacts.bond_breakage_j;
     w.energy.elastic_j = contacts.elastic_j;
     watch_overlap(w, contacts);
 }

@@ -31,6 +31,8 @@ struct Bodies {
     std::vector<double> inv_inertia_1_kg_m2;    ///< [1/(kg m^2)], 0 for static bodies
     std::vector<double> bounding_radius_m;      ///< [m] largest centroid-to-corner distance
     std::vector<double> least_width_m;          ///< [m] least width of its thinnest part (overlaps are judged against it)
+    std::vector<double> thickness_m;            ///< [m] out of plane (a per-length joint's area)
+    std::vector<std::uint32_t> bond_group;      ///< bodies of one nonzero group are bonded where they touch at the start
     std::vector<std::uint32_t> vertex_begin;    ///< first corner of the outline in the vertex arrays
     std::vector<std::uint32_t> vertex_count;    ///< corners of the outline
     /// [m] corners relative to the centroid at rotation 0: every body's outline, in body order,

@@ -48,7 +48,7 @@ assert len(rows) == 2001, len(rows)   # 2 s at 1 ms, both ends
 lvdt_final = rows[-1][7]
 ilines = (run / "interfaces.csv").read_text().splitlines()
 assert ilines[0].startswith("#"), ilines[0]
-assert ilines[1] == "t,body_a,body_b,normal_force_n,shear_force_n,points,opening_m,slip_m", ilines[1]
+assert ilines[1] == "t,body_a,body_b,normal_force_n,shear_force_n,points,opening_m,slip_m,bonded_points,broken_points", ilines[1]
 last = ilines[-1].split(",")
 assert last[1:3] == ["table", "block"], last
 assert abs(float(last[3]) - 9.81) < 0.5, last          # the block's weight, give or take its rattle

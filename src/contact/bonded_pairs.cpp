@@ -1,0 +1,57 @@
+#include "contact/bonded_pairs.hpp"
+
+#include <algorithm>
+
+#include "contact/contact_table.hpp"
+#include "geometry/polygon_contact.hpp"
+#include "laws/mohr_coulomb_joint.hpp"
+
+namespace blockdem {
+namespace {
+
+PolygonView view_of(const Bodies& b, std::uint32_t i) {
+    return {&b.world_vertices_m[b.vertex_begin[i]], &b.world_normals[b.vertex_begin[i]], b.vertex_count[i]};
+}
+
+// Corners of one pair are at least a face apart, so 5% of the smaller body is "same place"
+// (as in narrow_phase.cpp).
+double match_distance_m(const Bodies& b, const PairContact& pair) {
+    return 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
+}
+
+// What "touching" means at the start: apart by no more than round-off of the body size (the
+// start overlap check allows as much the other way).
+double touching_gap_m(const Bodies& b, const PairContact& pair) {
+    return 1e-9 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
+}
+
+}  // namespace
+
+std::size_t bond_touching_pairs(World& w) {
+    const Bodies& b = w.bodies;
+    std::size_t bonded = 0;
+    for (PairContact& pair : w.contacts) {
+        const std::uint32_t group = b.bond_group[pair.a];
+        if (group == 0 || b.bond_group[pair.b] != group) continue;
+        if (b.is_static[pair.a] && b.is_static[pair.b]) continue;  // nothing moves between them
+        // (The scenario reader allows bonds only with per-length stiffness.)
+        if (w.contact.at(b.material[pair.a], b.material[pair.b]).stiffness != StiffnessBasis::per_length) continue;
+        ContactManifold manifold;
+        if (!collide_polygons(view_of(b, pair.a), view_of(b, pair.b), no_reference, manifold, nullptr,
+                              touching_gap_m(b, pair)))
+            continue;
+        pair.axis_cache = AxisCache{};
+        update_pair_geometry(pair, manifold, match_distance_m(b, pair));
+        for (std::uint32_t k = 0; k < pair.count; ++k) pair.points[k].bond = BondState::intact;
+        bonded += pair.count;
+    }
+    return bonded;
+}
+
+double bonded_gap_m(const World& w, const PairContact& pair) {
+    const Bodies& b = w.bodies;
+    const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
+    return 2.0 * bond_opening_m(params) + touching_gap_m(b, pair);
+}
+
+}  // namespace blockdem

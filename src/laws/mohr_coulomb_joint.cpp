@@ -1,0 +1,78 @@
+#include "laws/mohr_coulomb_joint.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace blockdem {
+
+JointPoint joint_point(const ContactParameters& p, double tributary_length_m, double thickness_m) {
+    const double area_m2 = tributary_length_m * thickness_m;
+    return {p.kn_pa_m * area_m2, p.ks_pa_m * area_m2, area_m2};
+}
+
+double tributary_length_m(std::uint32_t points, Vec2 first_m, Vec2 second_m, double least_width_m) {
+    if (points == 2) return 0.5 * length(second_m - first_m);
+    return corner_length_fraction * least_width_m;
+}
+
+namespace {
+
+// The dry point: no tension, the given friction (linear_spring_dashpot.hpp with the point's
+// own stiffness; the spring pushes only while the overlap lasts).
+ContactForce dry_point(const ContactParameters& p, double friction, const JointPoint& point, const DashpotCoefficients& c,
+                       const ContactKinematics& k, const ContactHistory& previous, double dt_s) {
+    ContactParameters dry = p;
+    dry.kn_N_m = point.kn_N_m;
+    dry.ks_N_m = point.ks_N_m;
+    dry.mu = friction;
+    ContactKinematics closed = k;
+    closed.overlap_m = std::max(0.0, k.overlap_m);
+    return linear_spring_dashpot(dry, c, closed, previous, dt_s);
+}
+
+}  // namespace
+
+JointForce mohr_coulomb_joint(const ContactParameters& p, const JointPoint& point, const DashpotCoefficients& c,
+                              const ContactKinematics& k, const ContactHistory& previous, BondState bond, double dt_s) {
+    JointForce out;
+    out.bond = bond;
+    if (bond != BondState::intact) {
+        out.force = dry_point(p, bond == BondState::none ? p.mu : residual_friction(p), point, c, k, previous, dt_s);
+        return out;
+    }
+    ContactForce& f = out.force;
+    const double spring_n = point.kn_N_m * k.overlap_m;
+    f.normal_n = spring_n - c.cn_N_s_m * k.normal_speed_m_s;  // a bond pulls
+    f.normal_dashpot_n = f.normal_n - spring_n;
+    f.normal_dashpot_work_j = -0.5 * (previous.normal_dashpot_n + f.normal_dashpot_n) * k.normal_speed_m_s * dt_s;
+    const bool tension_failure = f.normal_n < -p.tensile_strength_pa * point.area_m2;
+    if (!tension_failure) {
+        const double strength_n = std::max(0.0, p.cohesion_pa * point.area_m2 + p.mu * f.normal_n);
+        coulomb_slider(point.ks_N_m, c.cs_N_s_m, strength_n, k.tangential_speed_m_s, previous, dt_s, f);
+        if (!f.sliding) return out;  // the bond holds
+    }
+    // The bond breaks: this step the point is already the dry one with the residual friction.
+    // Released: the normal spring's tension energy (the dry point keeps none) and all that the
+    // dry slider dissipates this step (the shear spring dropping from last step's force to the
+    // residual cap); booked once, as breakage, not as friction.
+    out.bond = tension_failure ? BondState::broken_tension : BondState::broken_shear;
+    const ContactForce dry = dry_point(p, residual_friction(p), point, c, k, previous, dt_s);
+    const double closed_m = std::max(0.0, k.overlap_m);
+    const double normal_release_j = 0.5 * point.kn_N_m * (k.overlap_m * k.overlap_m - closed_m * closed_m);
+    out.bond_breakage_j = normal_release_j + dry.friction_work_j;
+    f = dry;
+    f.friction_work_j = 0.0;
+    return out;
+}
+
+double joint_elastic_energy(const JointPoint& point, double overlap_m, double shear_spring_n, BondState bond) {
+    const double normal_m = bond == BondState::intact ? overlap_m : std::max(0.0, overlap_m);
+    const double shear_j = point.ks_N_m > 0.0 ? 0.5 * shear_spring_n * shear_spring_n / point.ks_N_m : 0.0;
+    return 0.5 * point.kn_N_m * normal_m * normal_m + shear_j;
+}
+
+double bond_opening_m(const ContactParameters& p) {
+    return p.kn_pa_m > 0.0 ? p.tensile_strength_pa / p.kn_pa_m : 0.0;
+}
+
+}  // namespace blockdem

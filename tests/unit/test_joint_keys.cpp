@@ -1,0 +1,124 @@
+// The joint keys of [contact] and [[contact.pairs]] (stiffness = "per_length", cohesion,
+// tensile_strength, residual_mu, friction_deg), bonded = true, and their bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "io/scenario.hpp"
+#include "support/scenario_text.hpp"
+
+namespace blockdem {
+namespace {
+
+using testing::expect_contains;
+using testing::replace_once;
+
+// A block bonded to a fixed base, both 1 m wide, with a per-length joint.
+const char* bonded_block = R"(
+[simulation]
+duration = 0.01
+
+[contact]
+stiffness = "per_length"
+kn = 1.0e10
+ks = 4.0e9
+mu = 0.6
+cohesion = 2.0e5
+tensile_strength = 1.0e5
+residual_mu = 0.5
+e = 0.5
+
+[[bodies]]
+name = "base"
+kind = "fixed"
+shape = "rectangle"
+width = 1.0
+height = 0.2
+center = [0.0, -0.1]
+bonded = true
+
+[[bodies]]
+name = "block"
+shape = "rectangle"
+width = 1.0
+height = 0.5
+center = [0.0, 0.25]
+density = 2000.0
+thickness = 0.5
+bonded = true
+)";
+
+std::string error_of(const std::string& name, const std::string& text) {
+    return testing::scenario_error("joint-keys", name, text);
+}
+
+TEST(JointKeys, PerLengthJointLoadsAndBondsTheTouchingBodies) {
+    const LoadedScenario s = load_scenario(testing::write_scenario("joint-keys", "good", bonded_block), {});
+    const ContactParameters& p = s.world.contact.at(0, 0);
+    EXPECT_EQ(p.stiffness, StiffnessBasis::per_length);
+    EXPECT_DOUBLE_EQ(p.kn_pa_m, 1e10);
+    EXPECT_DOUBLE_EQ(p.ks_pa_m, 4e9);
+    EXPECT_DOUBLE_EQ(p.cohesion_pa, 2e5);
+    EXPECT_DOUBLE_EQ(p.tensile_strength_pa, 1e5);
+    EXPECT_DOUBLE_EQ(residual_friction(p), 0.5);
+    ASSERT_EQ(s.world.contacts.size(), 1u);
+    const PairContact& pair = s.world.contacts[0];
+    ASSERT_EQ(pair.count, 2u);
+    for (std::uint32_t k = 0; k < 2; ++k) EXPECT_EQ(pair.points[k].bond, BondState::intact);
+    // The stable step follows the points' stiffness, JKN x 0.5 m x 0.5 m: 2.5e9 N/m each on a
+    // 500 kg block; without bonds (nothing touching) it would be the landing's.
+    EXPECT_GT(s.world.critical_dt_s, 0.0);
+    EXPECT_LT(s.world.critical_dt_s, 2.0 * std::sqrt(500.0 / 2.5e9));
+}
+
+TEST(JointKeys, FrictionAngleGivesMu) {
+    const LoadedScenario s = load_scenario(
+        testing::write_scenario("joint-keys", "angle", replace_once(bonded_block, "mu = 0.6\n", "friction_deg = 30.0\n")), {});
+    EXPECT_NEAR(s.world.contact.at(0, 0).mu, std::tan(30.0 * 3.14159265358979 / 180.0), 1e-12);
+}
+
+TEST(JointKeys, JointPropertyWithPerPointStiffnessIsRefusedNamingTheKey) {
+    const std::string text = replace_once(bonded_block, "stiffness = \"per_length\"\n", "");
+    const std::string e = error_of("per-point", replace_once(text, "bonded = true\n", ""));
+    expect_contains(e, "contact.cohesion");
+    expect_contains(e, "needs per-length stiffness, but per-point is set");
+}
+
+TEST(JointKeys, NegativeStrengthsAreRefused) {
+    expect_contains(error_of("neg-c", replace_once(bonded_block, "cohesion = 2.0e5", "cohesion = -1.0")),
+                    "contact.cohesion");
+    const std::string e = error_of("neg-t", replace_once(bonded_block, "tensile_strength = 1.0e5", "tensile_strength = -1.0"));
+    expect_contains(e, "contact.tensile_strength");
+    expect_contains(e, "must be >= 0");
+}
+
+TEST(JointKeys, ResidualAbovePeakFrictionIsRefused) {
+    const std::string e = error_of("residual", replace_once(bonded_block, "residual_mu = 0.5", "residual_mu = 0.7"));
+    expect_contains(e, "contact.residual_mu");
+    expect_contains(e, "above the peak friction");
+}
+
+TEST(JointKeys, BondsNeedPerLengthStiffness) {
+    std::string text = replace_once(bonded_block, "stiffness = \"per_length\"\n", "");
+    for (const char* key : {"cohesion = 2.0e5\n", "tensile_strength = 1.0e5\n", "residual_mu = 0.5\n"})
+        text = replace_once(text, key, "");
+    const std::string e = error_of("bonded-per-point", text);
+    expect_contains(e, "contact.stiffness");
+    expect_contains(e, "body 'base' is bonded");
+}
+
+TEST(JointKeys, PairChangingTheBasisMustGiveItsOwnStiffness) {
+    const std::string pairs = std::string(bonded_block) + R"(
+[[contact.pairs]]
+materials = ["default", "default"]
+stiffness = "per_point"
+kn = 1.0e8
+)";
+    const std::string e = error_of("pair-basis", replace_once(pairs, "bonded = true\n", ""));
+    expect_contains(e, "contact.pairs[0].stiffness");
+    expect_contains(e, "per-point stiffness given where per-length is set");
+}
+
+}  // namespace
+}  // namespace blockdem
