@@ -10,10 +10,13 @@
 #include "analysis/limit_analysis.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include <glpk.h>
 
@@ -143,25 +146,49 @@ std::vector<Vec2> body_centroids_m(const Model& model) {
     return out;
 }
 
+// Sort and sweep: the bodies in order of their boxes' low end along the longer axis of the
+// model; a body is tested only against those whose boxes start before its own ends. A wall of
+// n x m bricks tests each brick against about the bricks of its column band, not all N
+// (O(N log N + N k); 1e4 bricks: milliseconds, docs/limit_analysis.md).
 std::vector<BlockInterface> find_interfaces(const Model& model, double tolerance_m) {
-    std::vector<Box> boxes;
-    for (const BodyDef& b : model.bodies) boxes.push_back(bounding_box(b.vertices_m));
-    std::vector<BlockInterface> out;
     const auto& bodies = model.bodies;
-    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
-        for (std::uint32_t j = i + 1; j < bodies.size(); ++j) {
+    std::vector<Box> boxes;
+    Box all;
+    for (const BodyDef& b : bodies) {
+        boxes.push_back(bounding_box(b.vertices_m));
+        all.lo = {std::min(all.lo.x, boxes.back().lo.x), std::min(all.lo.y, boxes.back().lo.y)};
+        all.hi = {std::max(all.hi.x, boxes.back().hi.x), std::max(all.hi.y, boxes.back().hi.y)};
+    }
+    const bool along_x = bodies.empty() || all.hi.x - all.lo.x >= all.hi.y - all.lo.y;
+    auto low = [&](std::uint32_t i) { return along_x ? boxes[i].lo.x : boxes[i].lo.y; };
+    auto high = [&](std::uint32_t i) { return along_x ? boxes[i].hi.x : boxes[i].hi.y; };
+    std::vector<std::uint32_t> order(bodies.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return low(a) < low(b) || (low(a) == low(b) && a < b); });
+
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (std::size_t p = 0; p < order.size(); ++p) {
+        for (std::size_t q = p + 1; q < order.size() && low(order[q]) <= high(order[p]) + tolerance_m; ++q) {
+            const std::uint32_t i = std::min(order[p], order[q]);
+            const std::uint32_t j = std::max(order[p], order[q]);
             if (!movable(bodies[i]) && !movable(bodies[j])) continue;
-            if (!boxes_touch(boxes[i], boxes[j], tolerance_m)) continue;
-            const auto& a = bodies[i].vertices_m;
-            const auto& b = bodies[j].vertices_m;
-            const double mu = model.contact.at(model.contact.id(bodies[i].material), model.contact.id(bodies[j].material)).mu;
-            for (std::size_t e = 0; e < a.size(); ++e) {
-                for (std::size_t f = 0; f < b.size(); ++f) {
-                    BlockInterface face{i, j, {}, {}, mu};
-                    if (common_segment(a[e], a[(e + 1) % a.size()], b[f], b[(f + 1) % b.size()], tolerance_m, face.end_m,
-                                       face.normal))
-                        out.push_back(face);
-                }
+            if (boxes_touch(boxes[i], boxes[j], tolerance_m)) pairs.emplace_back(i, j);
+        }
+    }
+    // The pairs in the order of the bodies (as a pairwise loop gives them): the LP, its
+    // mechanism and the printed interfaces do not depend on the sweep.
+    std::sort(pairs.begin(), pairs.end());
+
+    std::vector<BlockInterface> out;
+    for (auto [i, j] : pairs) {
+        const auto& a = bodies[i].vertices_m;
+        const auto& b = bodies[j].vertices_m;
+        const double mu = model.contact.at(model.contact.id(bodies[i].material), model.contact.id(bodies[j].material)).mu;
+        for (std::size_t e = 0; e < a.size(); ++e) {
+            for (std::size_t f = 0; f < b.size(); ++f) {
+                BlockInterface face{i, j, {}, {}, mu};
+                if (common_segment(a[e], a[(e + 1) % a.size()], b[f], b[(f + 1) % b.size()], tolerance_m, face.end_m, face.normal))
+                    out.push_back(face);
             }
         }
     }
@@ -228,15 +255,24 @@ Rows body_rows(const Model& model) {
     return r;
 }
 
+// The unknowns at an interface end. Associative friction needs no friction rows: the end's force
+// is a non-negative sum of the two edges of its friction cone, n + mu t and n - mu t (Livesley
+// 1978), which leaves only the equilibrium rows (3 per body instead of 3 per body plus 4 per
+// interface: the simplex's basis is 4 to 5 times smaller on a wall). Non-associative friction
+// changes the friction rows into shear capacities, so it keeps n >= 0, a free s and the rows.
+enum class Formulation { cone_edges, normal_and_shear };
+
 // The friction rows of interface k's end j (1-based): s - mu n <= 0, then -s - mu n <= 0.
 int friction_row(const Rows& rows, std::size_t k, int j) { return rows.equilibrium_rows + static_cast<int>(4 * k) + 2 * j + 1; }
 
 int lambda_column(const std::vector<BlockInterface>& faces) { return static_cast<int>(4 * faces.size()) + 1; }
 
 // Rows, columns, bounds and the matrix of the associative LP.
-void build_problem(glp_prob* lp, const Model& model, const std::vector<BlockInterface>& faces, const Rows& rows, Vec2 live) {
+void build_problem(glp_prob* lp, const Model& model, const std::vector<BlockInterface>& faces, const Rows& rows, Vec2 live,
+                   Formulation formulation) {
+    const bool cone = formulation == Formulation::cone_edges;
     glp_set_obj_dir(lp, GLP_MAX);
-    glp_add_rows(lp, rows.equilibrium_rows + static_cast<int>(4 * faces.size()));
+    glp_add_rows(lp, rows.equilibrium_rows + (cone ? 0 : static_cast<int>(4 * faces.size())));
     const int lambda = lambda_column(faces);
     glp_add_cols(lp, lambda);
     Triplets m;
@@ -257,20 +293,24 @@ void build_problem(glp_prob* lp, const Model& model, const std::vector<BlockInte
         for (int j = 0; j < 2; ++j) {
             const int cn = normal_column(k, j);
             const int cs = cn + 1;
+            // Either n and s, or the two edges of the friction cone (n + mu t, n - mu t).
+            const Vec2 first = cone ? f.normal + f.mu * t : f.normal;
+            const Vec2 second = cone ? f.normal - f.mu * t : t;
             glp_set_col_bnds(lp, cn, GLP_LO, 0.0, 0.0);
-            glp_set_col_bnds(lp, cs, GLP_FR, 0.0, 0.0);
-            // On b: +n normal + s t at end j; on a: the opposite.
+            glp_set_col_bnds(lp, cs, cone ? GLP_LO : GLP_FR, 0.0, 0.0);
+            // On b: the force at end j; on a: the opposite.
             for (auto [body, sign] : {std::pair{f.body_b, 1.0}, std::pair{f.body_a, -1.0}}) {
                 const int r = rows.first_row[body];
                 if (!r) continue;
                 const Vec2 arm = (1.0 / rows.length_scale_m) * (f.end_m[j] - rows.props[body].centroid_m);
-                m.add(r, cn, sign * f.normal.x);
-                m.add(r + 1, cn, sign * f.normal.y);
-                m.add(r + 2, cn, sign * cross(arm, f.normal));
-                m.add(r, cs, sign * t.x);
-                m.add(r + 1, cs, sign * t.y);
-                m.add(r + 2, cs, sign * cross(arm, t));
+                m.add(r, cn, sign * first.x);
+                m.add(r + 1, cn, sign * first.y);
+                m.add(r + 2, cn, sign * cross(arm, first));
+                m.add(r, cs, sign * second.x);
+                m.add(r + 1, cs, sign * second.y);
+                m.add(r + 2, cs, sign * cross(arm, second));
             }
+            if (cone) continue;
             const int rf = friction_row(rows, k, j);
             glp_set_row_bnds(lp, rf, GLP_UP, 0.0, 0.0);
             glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, 0.0);
@@ -344,11 +384,18 @@ LimitStatus iterate_non_associative(glp_prob* lp, const std::vector<BlockInterfa
     return LimitStatus::collapse;
 }
 
-InterfaceForces forces_of(glp_prob* lp, const BlockInterface& face, std::size_t k, double weight_scale_N) {
+InterfaceForces forces_of(glp_prob* lp, const BlockInterface& face, std::size_t k, double weight_scale_N, Formulation formulation) {
     InterfaceForces forces;
     for (int j = 0; j < 2; ++j) {
-        forces.normal_N[j] = std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))) * weight_scale_N;
-        forces.shear_N[j] = glp_get_col_prim(lp, normal_column(k, j) + 1) * weight_scale_N;
+        const double first = glp_get_col_prim(lp, normal_column(k, j));
+        const double second = glp_get_col_prim(lp, normal_column(k, j) + 1);
+        if (formulation == Formulation::cone_edges) {
+            forces.normal_N[j] = std::max(0.0, first + second) * weight_scale_N;
+            forces.shear_N[j] = face.mu * (first - second) * weight_scale_N;
+        } else {
+            forces.normal_N[j] = std::max(0.0, first) * weight_scale_N;
+            forces.shear_N[j] = second * weight_scale_N;
+        }
     }
     const double total = forces.normal_N[0] + forces.normal_N[1];
     forces.thrust_fraction = total > 0.0 ? forces.normal_N[1] / total : std::numeric_limits<double>::quiet_NaN();
@@ -395,7 +442,10 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
 
     LimitResult result;
     const double tolerance_m = options.touch_tolerance_m > 0.0 ? options.touch_tolerance_m : 1e-6 * largest_extent_m(model);
+    const auto search_start = std::chrono::steady_clock::now();
     result.interfaces = find_interfaces(model, tolerance_m);
+    const auto lp_start = std::chrono::steady_clock::now();
+    result.interface_search_s = std::chrono::duration<double>(lp_start - search_start).count();
     const auto& faces = result.interfaces;
     std::vector<bool> touched(model.bodies.size(), false);
     for (const BlockInterface& f : faces) touched[f.body_a] = touched[f.body_b] = true;
@@ -404,15 +454,18 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
 
     const GlpkSilence silence;
     GlpkProblem problem;
-    build_problem(problem.lp, model, faces, rows, live);
+    const Formulation formulation =
+        options.friction == FrictionFlow::associative ? Formulation::cone_edges : Formulation::normal_and_shear;
+    build_problem(problem.lp, model, faces, rows, live, formulation);
     glp_adv_basis(problem.lp, 0);
     result.status = solve(problem.lp);
     if (result.status == LimitStatus::collapse && options.friction == FrictionFlow::non_associative)
         result.status = iterate_non_associative(problem.lp, faces, rows, options, result);
+    result.lp_solve_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - lp_start).count();
     if (result.status != LimitStatus::collapse) return result;
 
     result.lambda = glp_get_col_prim(problem.lp, lambda_column(faces));
-    for (std::size_t k = 0; k < faces.size(); ++k) result.forces.push_back(forces_of(problem.lp, faces[k], k, rows.weight_scale_N));
+    for (std::size_t k = 0; k < faces.size(); ++k) result.forces.push_back(forces_of(problem.lp, faces[k], k, rows.weight_scale_N, formulation));
     result.mechanism = mechanism_of(problem.lp, model, rows, live);
     result.kinematics = interface_kinematics(model, faces, result.mechanism, options.friction == FrictionFlow::associative);
     return result;

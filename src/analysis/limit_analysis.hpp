@@ -109,6 +109,8 @@ struct LimitResult {
     std::vector<std::uint32_t> unsupported;       ///< dynamic bodies with no interface at all
     int iterations = 0;                           ///< non_associative: LPs solved after the first
     bool converged = true;                        ///< non_associative: lambda settled within max_iterations
+    double interface_search_s = 0.0;              ///< [s] wall-clock time spent finding the interfaces
+    double lp_solve_s = 0.0;                      ///< [s] wall-clock time spent in GLPK (every LP)
 };
 
 /// The largest lambda and its mechanism. Throws std::invalid_argument for a model without
