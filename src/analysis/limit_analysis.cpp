@@ -15,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -64,6 +65,23 @@ bool common_segment(Vec2 p0, Vec2 p1, Vec2 q0, Vec2 q1, double tolerance_m, std:
     const double hi = std::min(edge_length, std::max(u0, u1));
     if (!(hi - lo > tolerance_m)) return false;
     ends = {p0 + lo * along, p0 + hi * along};
+    normal = n;
+    return true;
+}
+
+// A corner of one polygon resting on an edge of the other: the corner lies on the edge's line,
+// inside the edge (more than the tolerance from its ends), and both its neighbouring corners
+// lie outside, beyond the tolerance (a corner whose edge lies along the other edge belongs to
+// an edge-to-edge interface; a corner on a corner has no normal). The point is at the corner,
+// the normal is the edge's outward normal.
+bool corner_on_edge(Vec2 before, Vec2 corner, Vec2 after, Vec2 q0, Vec2 q1, double tolerance_m, Vec2& normal) {
+    const double edge_length = length(q1 - q0);
+    if (!(edge_length > 2.0 * tolerance_m)) return false;
+    const Vec2 along = (1.0 / edge_length) * (q1 - q0);
+    const Vec2 n{along.y, -along.x};  // outward for a counter-clockwise polygon
+    const double u = dot(corner - q0, along);
+    if (std::abs(dot(corner - q0, n)) > tolerance_m || u <= tolerance_m || u >= edge_length - tolerance_m) return false;
+    if (dot(before - q0, n) <= tolerance_m || dot(after - q0, n) <= tolerance_m) return false;
     normal = n;
     return true;
 }
@@ -189,6 +207,19 @@ std::vector<BlockInterface> find_interfaces(const Model& model, double tolerance
                 BlockInterface face{i, j, {}, {}, mu};
                 if (common_segment(a[e], a[(e + 1) % a.size()], b[f], b[(f + 1) % b.size()], tolerance_m, face.end_m, face.normal))
                     out.push_back(face);
+            }
+        }
+        // One-point interfaces: a corner of a on an edge of b (normal from a to b: minus b's
+        // outward one), a corner of b on an edge of a; both ends at the corner.
+        for (auto [p, q, sign] : {std::tuple{&a, &b, -1.0}, std::tuple{&b, &a, 1.0}}) {
+            const std::size_t np = p->size(), nq = q->size();
+            for (std::size_t v = 0; v < np; ++v) {
+                for (std::size_t f = 0; f < nq; ++f) {
+                    Vec2 n;
+                    if (!corner_on_edge((*p)[(v + np - 1) % np], (*p)[v], (*p)[(v + 1) % np], (*q)[f], (*q)[(f + 1) % nq], tolerance_m, n))
+                        continue;
+                    out.push_back({i, j, {(*p)[v], (*p)[v]}, sign * n, mu});
+                }
             }
         }
     }

@@ -31,14 +31,16 @@ namespace blockdem {
 struct BlockInterface {
     std::uint32_t body_a = 0;             ///< index into Model::bodies
     std::uint32_t body_b = 0;             ///< index into Model::bodies
-    std::array<Vec2, 2> end_m;            ///< [m] the ends of the common segment
-    Vec2 normal;                          ///< [-] unit, from a to b (a's edge's outward normal)
+    std::array<Vec2, 2> end_m;            ///< [m] the ends of the common segment (a corner on an edge: both at the corner)
+    Vec2 normal;                          ///< [-] unit, from a to b (the edge's outward normal, of a or minus b's)
     double mu = 0.0;                      ///< [-] friction of the pair's materials
 };
 
 /// Edges of two bodies (at least one of them dynamic) that touch: antiparallel within
 /// 1e-4 rad, both ends of one within tolerance_m of the other's line, overlapping by more than
-/// tolerance_m. In body order (a < b), then edge order.
+/// tolerance_m. Also a corner of one resting on an edge of the other (the corner within
+/// tolerance_m of the edge's line and inside it, its two neighbours outside): a one-point
+/// interface, both ends at the corner. In body order (a < b), then edge order, then corners.
 std::vector<BlockInterface> find_interfaces(const Model& model, double tolerance_m);
 
 /// How a joint slips in the LP: associative (Coulomb's cone as a plastic potential: a slipping

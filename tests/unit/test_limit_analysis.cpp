@@ -101,6 +101,44 @@ TEST(LimitAnalysis, InterfaceSearchFindsEveryJointOfAGrid) {
     EXPECT_EQ(f, named(backward));
 }
 
+// A block 0.6 x 0.8 m resting on two fixed knife edges (triangles whose apexes touch its bottom
+// face at x = -0.15 and +0.15 m): two one-point interfaces. Statics: it tips about the
+// downstream apex at lambda = 0.15 / 0.4 = 0.375, the upstream one lifting off (mu = 0.6); with
+// mu = 0.2 it slides on both at lambda = mu. Without corner interfaces it would have no support.
+TEST(LimitAnalysis, BlockOnKnifeEdgesTipsAboutTheApex) {
+    auto knife = [](const std::string& name, double x_m) {
+        BodyDef b;
+        b.name = name;
+        b.kind = BodyKind::fixed;
+        b.vertices_m = {{x_m - 0.1, -0.2}, {x_m + 0.1, -0.2}, {x_m, 0.0}};
+        b.mass_kg = 1.0;
+        return b;
+    };
+    for (double mu : {0.6, 0.2}) {
+        std::vector<BodyDef> bodies{knife("left", -0.15), knife("right", 0.15),
+                                    rectangle_body("block", BodyKind::dynamic, 0.6, 0.8, {0.0, 0.4}, 0.0, 480.0)};
+        const Model m = testing::model_with(bodies, testing::contact(1e8, mu, 0.0, 0.0), 1e-4, 9.81);
+        const LimitResult r = solve_limit_analysis(m, {.live_load_direction = {1.0, 0.0}});
+        ASSERT_EQ(r.status, LimitStatus::collapse) << mu;
+        ASSERT_EQ(r.interfaces.size(), 2u);
+        EXPECT_TRUE(r.unsupported.empty());
+        for (const BlockInterface& f : r.interfaces) {
+            EXPECT_EQ(f.end_m[0].x, f.end_m[1].x);
+            EXPECT_NEAR(f.normal.y, 1.0, 1e-12);  // from the knife (a) up into the block (b)
+        }
+        if (mu == 0.6) {
+            EXPECT_NEAR(r.lambda, 0.375, 1e-9);
+            EXPECT_EQ(r.kinematics[0].motion, InterfaceMotion::opens);   // the upstream apex lifts off
+            EXPECT_EQ(r.kinematics[1].motion, InterfaceMotion::locked);  // the block turns about this one
+            EXPECT_NEAR(r.forces[1].normal_N[0] + r.forces[1].normal_N[1], 480.0 * 9.81, 1e-6);
+        } else {
+            EXPECT_NEAR(r.lambda, 0.2, 1e-9);
+            EXPECT_EQ(r.kinematics[0].motion, InterfaceMotion::slides);
+            EXPECT_EQ(r.kinematics[1].motion, InterfaceMotion::slides);
+        }
+    }
+}
+
 TEST(LimitAnalysis, SlenderBlockTopplesAtWidthOverHeight) {
     for (double direction : {1.0, -1.0}) {
         const LimitResult r = solve_limit_analysis(single_block(0.2, 0.8, 0.6), {.live_load_direction = {direction, 0.0}});
