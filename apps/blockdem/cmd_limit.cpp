@@ -45,7 +45,7 @@ void print_result(const Model& model, const LimitResult& r, const std::string& d
     fmt::print("limit analysis (static theorem, dry joints): {} dynamic bodies, {} interfaces; live load lambda m g towards {}\n",
                dynamic, r.interfaces.size(), direction);
     fmt::print("time: {:.3g} s to find the interfaces, {:.3g} s in the LP solver (GLPK)\n", r.interface_search_s, r.lp_solve_s);
-    for (std::uint32_t i : r.unsupported) fmt::print("  body '{}' touches no other body along an edge\n", bodies[i].name);
+    for (std::uint32_t i : r.unsupported) fmt::print("  body '{}' rests on no other body (no edge along an edge, no corner on an edge)\n", bodies[i].name);
     if (r.status == LimitStatus::no_equilibrium) {
         fmt::print("no equilibrium: the blocks cannot carry their own weight (with any horizontal load)\n");
         return;
