@@ -1,12 +1,14 @@
-// The static theorem as an LP (limit_analysis.hpp). Columns: per interface end, n >= 0 and a free
-// s; last, the free lambda. Rows: per dynamic body, force x, force y and moment about its
-// centroid (equalities: the interface forces plus lambda x live load equal minus the dead
-// load); per interface end, s - mu n <= 0 and -s - mu n <= 0. Forces are scaled by the heaviest
-// body's weight and lengths by the largest body's size, so that the coefficients are of order
-// one whatever the units of the model. GLPK's primal simplex (no presolve, so that an
-// infeasible or unbounded problem still reports its status and an optimum its dual values).
-// Non-associative friction rewrites the friction rows as shear capacities and re-solves from the
-// last basis.
+// The static theorem as an LP (limit_analysis.hpp). Columns: per interface end, two
+// non-negative multiples of its friction cone's edges, n + mu t and n - mu t (associative), or
+// n >= 0 and a free s (non-associative); last, the free lambda. Rows: per dynamic body, force x,
+// force y and moment about its centroid (equalities: the interface forces plus lambda x live
+// load equal minus the dead load); with n and s, also per interface end s - mu n <= 0 and
+// -s - mu n <= 0. Forces are scaled by the heaviest body's weight and lengths by the largest
+// body's size, so that the coefficients are of order one whatever the units of the model.
+// GLPK's primal simplex (no presolve, so that an infeasible or unbounded problem still reports
+// its status and an optimum its dual values; its presolver, dual simplex and interior point
+// were no faster on walls of 1000 bricks: docs/limit_analysis.md). Non-associative friction
+// rewrites the friction rows as shear capacities and re-solves from the last basis.
 #include "analysis/limit_analysis.hpp"
 
 #include <algorithm>
