@@ -37,12 +37,6 @@ std::vector<Vec2> part_normals(const std::vector<Vec2>& part) {
 // origin), whose corners build_world appends after every outline.
 std::vector<std::vector<Vec2>> add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
     if (auto problem = outline_problem(def.vertices_m)) throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
-    // (A bonded joint keeps its points open by up to its tension gap, which the sharp narrow
-    // phase supports and the rounded one does not yet.)
-    if (def.bond_group != 0 && contact.rounding_m > 0.0)
-        throw ModelError(fmt::format("body '{}': bonded joints cannot be combined with [contact] rounding yet "
-                                     "(rounding = {:g} m): set rounding = 0 or bonded = false",
-                                     def.name, contact.rounding_m));
     std::vector<std::vector<Vec2>> parts;
     try {
         parts = outline_parts(def.vertices_m);
