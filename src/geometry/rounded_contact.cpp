@@ -264,15 +264,28 @@ struct ClosestPoints {
     Vec2 on_a;
     Vec2 on_b;
     std::uint32_t feature = 0;  ///< the corner in the pair
+    bool at_seam = false;       ///< a closest point is a seam corner (rounded_outline.hpp)
 };
+
+// Seam flags of the two polygons (nullptr: none).
+struct Seams {
+    const std::uint8_t* a = nullptr;
+    const std::uint8_t* b = nullptr;
+    bool any() const { return a != nullptr || b != nullptr; }
+};
+
+bool is_seam(const std::uint8_t* seam, std::uint32_t i) { return seam != nullptr && seam[i] != 0; }
 
 // The closest points of separated cores a and b (given as core polygons) when they are not on one face: a corner of one
 // against an edge (or corner) of the other. Only corners within 2r of the other core along the
 // separating direction u (from a to b) can be closest, and only edges with such a corner at one
 // end. Corners of the incident core (owner incident_owner) are tried first, so that a
 // corner-to-corner pair is named by the incident corner as in the face contact it follows.
+// A closest point at a seam corner of a concave body's part (either the corner, or an edge's end)
+// is marked: there the contact belongs to the neighbouring part (rounded_outline.hpp). Of two
+// candidates at one distance the one off the seams is kept.
 ClosestPoints closest_core_points(const PolygonView& a, const PolygonView& b, Vec2 u, double reach_m,
-                                  std::uint32_t incident_owner) {
+                                  std::uint32_t incident_owner, Seams seams) {
     double a_most = -std::numeric_limits<double>::infinity();
     double b_least = std::numeric_limits<double>::infinity();
     for (std::uint32_t i = 0; i < a.count; ++i) a_most = std::max(a_most, dot(u, a.vertices[i]));
@@ -292,8 +305,19 @@ ClosestPoints closest_core_points(const PolygonView& a, const PolygonView& b, Ve
                 const Vec2 x = corners.vertices[i];
                 const Vec2 y = closest_on_segment(x, edges.vertices[e], edges.vertices[f]);
                 const double d = length(y - x);
-                if (d < best.distance_m)
-                    best = owner == 0 ? ClosestPoints{d, x, y, make_feature(0, i)} : ClosestPoints{d, y, x, make_feature(1, i)};
+                if (d > best.distance_m || (d == best.distance_m && !best.at_seam)) continue;
+                bool at_seam = false;
+                if (seams.any()) [[unlikely]] {
+                    const std::uint8_t* corner_seams = owner == 0 ? seams.a : seams.b;
+                    const std::uint8_t* edge_seams = owner == 0 ? seams.b : seams.a;
+                    // (An edge's end as closest_on_segment makes it: exact, or within round-off.)
+                    const double end_m = 1e-9 * reach_m;
+                    at_seam = is_seam(corner_seams, i) || (is_seam(edge_seams, e) && norm_bound(y - edges.vertices[e]) <= end_m) ||
+                              (is_seam(edge_seams, f) && norm_bound(y - edges.vertices[f]) <= end_m);
+                }
+                if (d == best.distance_m && at_seam) continue;
+                best = owner == 0 ? ClosestPoints{d, x, y, make_feature(0, i), at_seam}
+                                  : ClosestPoints{d, y, x, make_feature(1, i), at_seam};
             }
         }
     }
@@ -360,7 +384,8 @@ namespace {
 
 // Corner contact: one point between the closest points of the separated cores.
 bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffsets& offsets_a,
-                    const CornerOffsets& offsets_b, double r, const Reference& chosen, ContactManifold& m, double gap_m) {
+                    const CornerOffsets& offsets_b, double r, const Reference& chosen, ContactManifold& m, double gap_m,
+                    Seams seams) {
     CornerVectors corners_a(a.count), corners_b(b.count);
     for (std::uint32_t i = 0; i < a.count; ++i) corners_a[i] = a.vertices[i] - offsets_a[i];
     for (std::uint32_t j = 0; j < b.count; ++j) corners_b[j] = b.vertices[j] - offsets_b[j];
@@ -368,7 +393,8 @@ bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffs
     const PolygonView cb{corners_b.data(), b.normals, b.count};
     const Vec2 n = (chosen.owner == 0 ? a : b).normals[chosen.edge];
     const Vec2 u = chosen.owner == 0 ? n : -n;
-    const ClosestPoints c = closest_core_points(ca, cb, u, 2.0 * r + gap_m, 1u - chosen.owner);
+    const ClosestPoints c = closest_core_points(ca, cb, u, 2.0 * r + gap_m, 1u - chosen.owner, seams);
+    if (c.at_seam) return false;  // the neighbouring part's contact (rounded_outline.hpp)
     const double overlap = 2.0 * r - c.distance_m;
     if (!(overlap > -gap_m)) return false;
     // Cores touching (distance 0) leave the line between them undefined: the reference normal.
@@ -385,7 +411,8 @@ bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffs
 }  // namespace
 
 bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding_m, std::uint32_t previous_reference,
-                     ContactManifold& manifold, AxisCache& cache, double gap_m) {
+                     ContactManifold& manifold, AxisCache& cache, double gap_m, const std::uint8_t* seam_a,
+                     const std::uint8_t* seam_b) {
     const double r = rounding_m;
     manifold.count = 0;
     FaceCorners fc{};
@@ -420,7 +447,7 @@ bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding
     }
     manifold.count = 0;
     if (chosen->separation_m < 0.0) return false;  // overlapping cores, incident edge beside the reference (as sharp)
-    return corner_contact(a, b, offsets_a, offsets_b, r, *chosen, manifold, gap_m);
+    return corner_contact(a, b, offsets_a, offsets_b, r, *chosen, manifold, gap_m, Seams{seam_a, seam_b});
 }
 
 }  // namespace blockdem
