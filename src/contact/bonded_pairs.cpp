@@ -4,6 +4,7 @@
 
 #include "contact/contact_table.hpp"
 #include "geometry/polygon_contact.hpp"
+#include "geometry/rounded_contact.hpp"
 #include "laws/mohr_coulomb_joint.hpp"
 
 namespace blockdem {
@@ -36,10 +37,16 @@ std::size_t bond_touching_pairs(World& w) {
         if (b.is_static[pair.a] && b.is_static[pair.b]) continue;  // nothing moves between them
         // (The scenario reader allows bonds only with per-length stiffness.)
         if (w.contact.at(b.material[pair.a], b.material[pair.b]).stiffness != StiffnessBasis::per_length) continue;
+        // The points bonded are those the narrow phase will keep: with rounded corners, those of
+        // the rounded outlines (the ends of the straight part of the joint).
         ContactManifold manifold;
-        if (!collide_polygons(view_of(b, pair.a), view_of(b, pair.b), no_reference, manifold, nullptr,
-                              touching_gap_m(b, pair)))
-            continue;
+        const PolygonView a = view_of(b, pair.a);
+        const PolygonView c = view_of(b, pair.b);
+        AxisCache unused;
+        const bool touching = w.contact.rounding_m > 0.0
+                                  ? collide_rounded(a, c, w.contact.rounding_m, no_reference, manifold, unused, touching_gap_m(b, pair))
+                                  : collide_polygons(a, c, no_reference, manifold, nullptr, touching_gap_m(b, pair));
+        if (!touching) continue;
         pair.axis_cache = AxisCache{};
         update_pair_geometry(pair, manifold, match_distance_m(b, pair));
         for (std::uint32_t k = 0; k < pair.count; ++k) pair.points[k].bond = BondState::intact;

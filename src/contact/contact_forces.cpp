@@ -26,13 +26,13 @@ Vec2 relative_velocity(const Bodies& b, std::uint32_t ia, std::uint32_t ib, Vec2
 // The per-length joint at every point of one pair (laws/mohr_coulomb_joint.hpp): each point
 // with its own tributary length, stiffness and dashpots. Kept apart from pair_law so that the
 // per-point law's loop is what it was.
-ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double dt_s,
+ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m, double dt_s,
                              PairForces& out) {
     ContactEnergy energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const ContactParameters& params = stored;
-    const JointPoint joint = joint_point_of(b, pair, stored);
+    const JointPoint joint = joint_point_of(b, pair, stored, rounding_m);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     ContactParameters point_params = params;
     point_params.kn_N_m = joint.kn_N_m;
@@ -79,7 +79,7 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const ContactParameters& stored = contact.at(b.material[ia], b.material[ib]);
-    if (stored.stiffness == StiffnessBasis::per_length) return joint_pair_law(pair, b, stored, dt_s, out);
+    if (stored.stiffness == StiffnessBasis::per_length) return joint_pair_law(pair, b, stored, contact.rounding_m, dt_s, out);
     const ContactParameters params = softened(stored, pair.stiffness_scale);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
@@ -143,10 +143,11 @@ ContactEnergy opened_points_work(const World& w, const PairContact& pair, const 
 
 }  // namespace
 
-JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p) {
+JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p, double rounding_m) {
     const double thickness_m = std::min(b.thickness_m[pair.a], b.thickness_m[pair.b]);
     const double least_width_m = std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
-    const double tributary_m = tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m);
+    const double tributary_m =
+        tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m, rounding_m);
     // (The softening of a vanishing overlap applies as to a per-point contact: polygon_contact.hpp.)
     return joint_point(p, tributary_m * pair.stiffness_scale, thickness_m);
 }
@@ -213,7 +214,7 @@ double contact_elastic_energy(const World& w) {
         const ContactParameters& stored = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
         double energy = 0.0;
         if (stored.stiffness == StiffnessBasis::per_length) {
-            const JointPoint joint = joint_point_of(w.bodies, pair, stored);
+            const JointPoint joint = joint_point_of(w.bodies, pair, stored, w.contact.rounding_m);
             for (std::uint32_t k = 0; k < pair.count; ++k)
                 energy += joint_elastic_energy(joint, pair.points[k].overlap_m, pair.points[k].shear_spring_n,
                                                pair.points[k].bond);

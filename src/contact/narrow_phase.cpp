@@ -61,7 +61,9 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
     if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
-        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache);
+        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache, gap_m,
+                        b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[part_a]] : nullptr,
+                        b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[part_b]] : nullptr);
     else
         collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, gap_m);
     // Corners of one pair are at least a face apart, so 5% of the smaller part is "same place".

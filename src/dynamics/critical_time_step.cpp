@@ -54,7 +54,7 @@ StiffnessPoint stiffness_point(const World& w, std::uint32_t a, std::uint32_t b,
     if (params.stiffness == StiffnessBasis::per_length) {
         const double least_width_m = std::min(bodies.least_width_m[a], bodies.least_width_m[b]);
         const JointPoint joint =
-            joint_point(params, tributary_length_m(points_in_pair, first_m, second_m, least_width_m),
+            joint_point(params, tributary_length_m(points_in_pair, first_m, second_m, least_width_m, w.contact.rounding_m),
                         std::min(bodies.thickness_m[a], bodies.thickness_m[b]));
         params.kn_N_m = joint.kn_N_m;
         params.ks_N_m = joint.ks_N_m;

@@ -81,11 +81,11 @@ struct Reference {
 };
 
 // The edge of either core with the largest separation, or nullopt (and separating set) when
-// one separates the cores by 2r or more. Last step's edge is kept while it is within a
+// one separates the cores by 2r + gap_m or more. Last step's edge is kept while it is within a
 // tolerance of the best (reference_tolerance).
 std::optional<Reference> choose_reference(const PolygonView& a, const PolygonView& b, const CornerOffsets& offsets_a,
                                           const CornerOffsets& offsets_b, double r, std::uint32_t previous_reference,
-                                          std::uint32_t& separating) {
+                                          std::uint32_t& separating, double gap_m) {
     Reference best;
     double previous_separation = -std::numeric_limits<double>::infinity();
     for (std::uint32_t owner = 0; owner < 2; ++owner) {
@@ -93,7 +93,7 @@ std::optional<Reference> choose_reference(const PolygonView& a, const PolygonVie
         const PolygonView& other = owner == 0 ? b : a;
         for (std::uint32_t i = 0; i < poly.count; ++i) {
             const double s = edge_separation(poly, i, other, owner == 0 ? offsets_b : offsets_a, r);
-            if (s >= 2.0 * r) {
+            if (s >= 2.0 * r + gap_m) {
                 separating = make_feature(owner, i);
                 return std::nullopt;
             }
@@ -197,7 +197,7 @@ struct FaceCorners {
 // only) when the deepest part of the incident core lies outside it, so that the closest points
 // are not on this edge. a, b: the drawn polygons (the four core corners it needs are made here).
 [[gnu::always_inline]] inline bool face_contact(const PolygonView& a, const PolygonView& b, double r, const Reference& chosen,
-                                               const FaceCorners& fc, ContactManifold& m) {
+                                               const FaceCorners& fc, ContactManifold& m, double gap_m) {
     const PolygonView& ref = chosen.owner == 0 ? a : b;
     const PolygonView& inc = chosen.owner == 0 ? b : a;
     const std::uint32_t inc_owner = 1u - chosen.owner;
@@ -229,7 +229,7 @@ struct FaceCorners {
     m.count = 0;
     for (int k = 0; k < 2; ++k) {
         const double overlap = 2.0 * r - separation[k];
-        if (overlap <= 0.0) continue;
+        if (overlap <= -gap_m) continue;  // (a bonded joint's points are kept open up to its gap)
         ContactGeometry& g = m.points[m.count++];
         g.point_m = twice[k].p - (r - 0.5 * overlap) * n;  // midway between the two rounded surfaces
         g.overlap_m = overlap;
@@ -264,21 +264,34 @@ struct ClosestPoints {
     Vec2 on_a;
     Vec2 on_b;
     std::uint32_t feature = 0;  ///< the corner in the pair
+    bool at_seam = false;       ///< a closest point is a seam corner (rounded_outline.hpp)
 };
+
+// Seam flags of the two polygons (nullptr: none).
+struct Seams {
+    const std::uint8_t* a = nullptr;
+    const std::uint8_t* b = nullptr;
+    bool any() const { return a != nullptr || b != nullptr; }
+};
+
+bool is_seam(const std::uint8_t* seam, std::uint32_t i) { return seam != nullptr && seam[i] != 0; }
 
 // The closest points of separated cores a and b (given as core polygons) when they are not on one face: a corner of one
 // against an edge (or corner) of the other. Only corners within 2r of the other core along the
 // separating direction u (from a to b) can be closest, and only edges with such a corner at one
 // end. Corners of the incident core (owner incident_owner) are tried first, so that a
 // corner-to-corner pair is named by the incident corner as in the face contact it follows.
-ClosestPoints closest_core_points(const PolygonView& a, const PolygonView& b, Vec2 u, double r,
-                                  std::uint32_t incident_owner) {
+// A closest point at a seam corner of a concave body's part (either the corner, or an edge's end)
+// is marked: there the contact belongs to the neighbouring part (rounded_outline.hpp). Of two
+// candidates at one distance the one off the seams is kept.
+ClosestPoints closest_core_points(const PolygonView& a, const PolygonView& b, Vec2 u, double reach_m,
+                                  std::uint32_t incident_owner, Seams seams) {
     double a_most = -std::numeric_limits<double>::infinity();
     double b_least = std::numeric_limits<double>::infinity();
     for (std::uint32_t i = 0; i < a.count; ++i) a_most = std::max(a_most, dot(u, a.vertices[i]));
     for (std::uint32_t j = 0; j < b.count; ++j) b_least = std::min(b_least, dot(u, b.vertices[j]));
-    auto near_a = [&](std::uint32_t i) { return dot(u, a.vertices[i]) > b_least - 2.0 * r; };
-    auto near_b = [&](std::uint32_t j) { return dot(u, b.vertices[j]) < a_most + 2.0 * r; };
+    auto near_a = [&](std::uint32_t i) { return dot(u, a.vertices[i]) > b_least - reach_m; };
+    auto near_b = [&](std::uint32_t j) { return dot(u, b.vertices[j]) < a_most + reach_m; };
     ClosestPoints best;
     for (std::uint32_t pass = 0; pass < 2; ++pass) {
         const std::uint32_t owner = pass == 0 ? incident_owner : 1u - incident_owner;
@@ -292,8 +305,19 @@ ClosestPoints closest_core_points(const PolygonView& a, const PolygonView& b, Ve
                 const Vec2 x = corners.vertices[i];
                 const Vec2 y = closest_on_segment(x, edges.vertices[e], edges.vertices[f]);
                 const double d = length(y - x);
-                if (d < best.distance_m)
-                    best = owner == 0 ? ClosestPoints{d, x, y, make_feature(0, i)} : ClosestPoints{d, y, x, make_feature(1, i)};
+                if (d > best.distance_m || (d == best.distance_m && !best.at_seam)) continue;
+                bool at_seam = false;
+                if (seams.any()) [[unlikely]] {
+                    const std::uint8_t* corner_seams = owner == 0 ? seams.a : seams.b;
+                    const std::uint8_t* edge_seams = owner == 0 ? seams.b : seams.a;
+                    // (An edge's end as closest_on_segment makes it: exact, or within round-off.)
+                    const double end_m = 1e-9 * reach_m;
+                    at_seam = is_seam(corner_seams, i) || (is_seam(edge_seams, e) && norm_bound(y - edges.vertices[e]) <= end_m) ||
+                              (is_seam(edge_seams, f) && norm_bound(y - edges.vertices[f]) <= end_m);
+                }
+                if (d == best.distance_m && at_seam) continue;
+                best = owner == 0 ? ClosestPoints{d, x, y, make_feature(0, i), at_seam}
+                                  : ClosestPoints{d, y, x, make_feature(1, i), at_seam};
             }
         }
     }
@@ -333,7 +357,7 @@ namespace {
 // reference edge now keeps the cores 2r apart.
 [[gnu::always_inline]] inline std::optional<Reference> cached_reference(const PolygonView& a, const PolygonView& b, double r,
                                                                          std::uint32_t previous_reference, const AxisCache& cache,
-                                                                         FaceCorners& fc) {
+                                                                         FaceCorners& fc, double gap_m) {
     if (previous_reference == no_reference || !(cache.others_max_separation_m < INFINITY)) return std::nullopt;
     const Reference kept{feature_owner(previous_reference), feature_vertex(previous_reference)};
     const PolygonView& ref = kept.owner == 0 ? a : b;
@@ -348,7 +372,7 @@ namespace {
     // whose normal is nearest -n has the support corner at one end).
     fc = face_corners(ref, kept.edge, inc, i1, r);
     const double separation = std::min(fc.separation_i1, fc.separation_i2);
-    if (separation >= 2.0 * r) return Reference{2, 0, separation};
+    if (separation >= 2.0 * r + gap_m) return Reference{2, 0, separation};
     const double incident_at_most = std::min(corner_separation(inc, i1, ref, fc.r1, fc.offset_r1, r),
                                              corner_separation(inc, i1, ref, fc.r2, fc.offset_r2, r));
     const double bound = std::max(incident_at_most, cache.others_max_separation_m + cache.drift_m);
@@ -360,7 +384,8 @@ namespace {
 
 // Corner contact: one point between the closest points of the separated cores.
 bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffsets& offsets_a,
-                    const CornerOffsets& offsets_b, double r, const Reference& chosen, ContactManifold& m) {
+                    const CornerOffsets& offsets_b, double r, const Reference& chosen, ContactManifold& m, double gap_m,
+                    Seams seams) {
     CornerVectors corners_a(a.count), corners_b(b.count);
     for (std::uint32_t i = 0; i < a.count; ++i) corners_a[i] = a.vertices[i] - offsets_a[i];
     for (std::uint32_t j = 0; j < b.count; ++j) corners_b[j] = b.vertices[j] - offsets_b[j];
@@ -368,9 +393,10 @@ bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffs
     const PolygonView cb{corners_b.data(), b.normals, b.count};
     const Vec2 n = (chosen.owner == 0 ? a : b).normals[chosen.edge];
     const Vec2 u = chosen.owner == 0 ? n : -n;
-    const ClosestPoints c = closest_core_points(ca, cb, u, r, 1u - chosen.owner);
+    const ClosestPoints c = closest_core_points(ca, cb, u, 2.0 * r + gap_m, 1u - chosen.owner, seams);
+    if (c.at_seam) return false;  // the neighbouring part's contact (rounded_outline.hpp)
     const double overlap = 2.0 * r - c.distance_m;
-    if (!(overlap > 0.0)) return false;
+    if (!(overlap > -gap_m)) return false;
     // Cores touching (distance 0) leave the line between them undefined: the reference normal.
     m.normal = c.distance_m > 1e-12 * r ? (1.0 / c.distance_m) * (c.on_b - c.on_a) : u;
     m.reference = make_feature(chosen.owner, chosen.edge);
@@ -385,25 +411,26 @@ bool corner_contact(const PolygonView& a, const PolygonView& b, const CornerOffs
 }  // namespace
 
 bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding_m, std::uint32_t previous_reference,
-                     ContactManifold& manifold, AxisCache& cache) {
+                     ContactManifold& manifold, AxisCache& cache, double gap_m, const std::uint8_t* seam_a,
+                     const std::uint8_t* seam_b) {
     const double r = rounding_m;
     manifold.count = 0;
     FaceCorners fc{};
-    std::optional<Reference> chosen = cached_reference(a, b, r, previous_reference, cache, fc);
+    std::optional<Reference> chosen = cached_reference(a, b, r, previous_reference, cache, fc, gap_m);
     if (chosen && chosen->owner == 2) {
         cache = AxisCache{};
         cache.separating = previous_reference;
         return false;
     }
     if (chosen) {
-        if (face_contact(a, b, r, *chosen, fc, manifold)) return true;
+        if (face_contact(a, b, r, *chosen, fc, manifold, gap_m)) return true;
         manifold.count = 0;  // the closest points left the reference edge: the full test decides
     }
     cache = AxisCache{};
     const CornerOffsets offsets_a(a, r);
     const CornerOffsets offsets_b(b, r);
     std::uint32_t separating = no_reference;
-    chosen = choose_reference(a, b, offsets_a, offsets_b, r, previous_reference, separating);
+    chosen = choose_reference(a, b, offsets_a, offsets_b, r, previous_reference, separating, gap_m);
     if (!chosen) {
         cache.separating = separating;
         return false;
@@ -411,7 +438,7 @@ bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding
     const PolygonView& ref = chosen->owner == 0 ? a : b;
     const PolygonView& inc = chosen->owner == 0 ? b : a;
     const IncidentEdge incident = incident_edge(inc, ref.normals[chosen->edge]);
-    if (face_contact(a, b, r, *chosen, face_corners(ref, chosen->edge, inc, incident.edge, r), manifold)) {
+    if (face_contact(a, b, r, *chosen, face_corners(ref, chosen->edge, inc, incident.edge, r), manifold, gap_m)) {
         cache.incident = make_feature(1u - chosen->owner, incident.edge);
         cache.incident_margin = incident.margin;
         cache.others_max_separation_m = largest_other_separation(a, b, offsets_a, offsets_b, r,
@@ -420,7 +447,7 @@ bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding
     }
     manifold.count = 0;
     if (chosen->separation_m < 0.0) return false;  // overlapping cores, incident edge beside the reference (as sharp)
-    return corner_contact(a, b, offsets_a, offsets_b, r, *chosen, manifold);
+    return corner_contact(a, b, offsets_a, offsets_b, r, *chosen, manifold, gap_m, Seams{seam_a, seam_b});
 }
 
 }  // namespace blockdem

@@ -54,7 +54,13 @@ std::optional<std::string> rounding_problem(const std::vector<Vec2>& vertices, c
 /// with the same result, bit for bit. Its separating edge, for a pair apart, is an edge that kept
 /// the cores 2r or more apart: the caller's test of it on the drawn polygons is then conservative
 /// (drawn polygons apart means rounded ones apart). Returns true if they touch.
+/// gap_m: as in collide_polygons, points whose rounded surfaces are apart by less than this still
+/// count, with a negative overlap (a bonded joint opening: contact/bonded_pairs.hpp).
+/// seam_a, seam_b: per corner, 1 for a corner of a concave body's part that is no arc of the body
+/// (geometry/rounded_outline.hpp; nullptr: none): a corner contact whose closest point is one is
+/// not made, as the neighbouring part makes it.
 bool collide_rounded(const PolygonView& a, const PolygonView& b, double rounding_m, std::uint32_t previous_reference,
-                     ContactManifold& manifold, AxisCache& cache);
+                     ContactManifold& manifold, AxisCache& cache, double gap_m = 0.0, const std::uint8_t* seam_a = nullptr,
+                     const std::uint8_t* seam_b = nullptr);
 
 }  // namespace blockdem

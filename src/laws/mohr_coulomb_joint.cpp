@@ -10,9 +10,10 @@ JointPoint joint_point(const ContactParameters& p, double tributary_length_m, do
     return {p.kn_pa_m * area_m2, p.ks_pa_m * area_m2, area_m2};
 }
 
-double tributary_length_m(std::uint32_t points, Vec2 first_m, Vec2 second_m, double least_width_m) {
+double tributary_length_m(std::uint32_t points, Vec2 first_m, Vec2 second_m, double least_width_m, double rounding_m) {
     if (points == 2) return 0.5 * length(second_m - first_m);
-    return corner_length_fraction * least_width_m;
+    // (std::max: the sharp rule's length for a rounding below it: docs/physics.md.)
+    return std::max(rounding_m, corner_length_fraction * least_width_m);
 }
 
 namespace {

@@ -53,9 +53,11 @@ struct JointPoint {
 JointPoint joint_point(const ContactParameters& p, double tributary_length_m, double thickness_m);
 
 /// The tributary length of each point of a contact [m]: half the distance between the two
-/// points of an edge-to-edge contact each, or corner_length_fraction times least_width_m for a
-/// one-point contact.
-double tributary_length_m(std::uint32_t points, Vec2 first_m, Vec2 second_m, double least_width_m);
+/// points of an edge-to-edge contact each; for a one-point contact, the larger of the rounding
+/// radius rounding_m [m] (an arc pressed on a face: docs/physics.md) and corner_length_fraction
+/// times least_width_m.
+double tributary_length_m(std::uint32_t points, Vec2 first_m, Vec2 second_m, double least_width_m,
+                          double rounding_m = 0.0);
 
 /// This step's forces and dissipation at one point, and its bond state after the step.
 struct JointForce {

@@ -105,7 +105,7 @@ void watch_overlap(World& w, const ContactEnergy& contacts) {
     // (A per-length joint's point stiffness, JKN L t, is what the overlap answers to.)
     const ContactParameters& p = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
     watch.max_overlap_kn_N_m =
-        p.stiffness == StiffnessBasis::per_length ? joint_point_of(w.bodies, pair, p).kn_N_m : p.kn_N_m;
+        p.stiffness == StiffnessBasis::per_length ? joint_point_of(w.bodies, pair, p, w.contact.rounding_m).kn_N_m : p.kn_N_m;
 }
 
 // Every this many steps the stable limit of the live contacts is evaluated (about 1% of a

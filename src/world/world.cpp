@@ -12,6 +12,7 @@
 #include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/rounded_contact.hpp"
+#include "geometry/rounded_outline.hpp"
 #include "world/settling.hpp"
 #include "world/simulation_error.hpp"
 #include "world/step.hpp"
@@ -34,15 +35,9 @@ std::vector<Vec2> part_normals(const std::vector<Vec2>& part) {
 }
 
 // Adds body def with its outline's corners; returns its convex parts (relative to the world
-// origin), whose corners build_world appends after every outline.
-std::vector<std::vector<Vec2>> add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
+// origin) and their seam flags, whose corners build_world appends after every outline.
+RoundedOutlineParts add_body(Bodies& b, const BodyDef& def, const MaterialPairs& contact) {
     if (auto problem = outline_problem(def.vertices_m)) throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
-    // (A bonded joint keeps its points open by up to its tension gap, which the sharp narrow
-    // phase supports and the rounded one does not yet.)
-    if (def.bond_group != 0 && contact.rounding_m > 0.0)
-        throw ModelError(fmt::format("body '{}': bonded joints cannot be combined with [contact] rounding yet "
-                                     "(rounding = {:g} m): set rounding = 0 or bonded = false",
-                                     def.name, contact.rounding_m));
     std::vector<std::vector<Vec2>> parts;
     try {
         parts = outline_parts(def.vertices_m);
@@ -57,6 +52,16 @@ std::vector<std::vector<Vec2>> add_body(Bodies& b, const BodyDef& def, const Mat
         // Rounded corners are those of each convex part: every part must keep a core.
         if (auto problem = rounding_problem(part, part_normals(part), least_width(part), contact.rounding_m))
             throw ModelError(fmt::format("body '{}': {}", def.name, *problem));
+    }
+    // With rounded corners a concave body's parts are those of its rounded outline: only the
+    // outline's own corners are arcs (geometry/rounded_outline.hpp).
+    RoundedOutlineParts contact_parts{parts, std::vector<std::vector<std::uint8_t>>(parts.size())};
+    if (parts.size() > 1 && contact.rounding_m > 0.0) {
+        try {
+            contact_parts = rounded_outline_parts(def.vertices_m, contact.rounding_m);
+        } catch (const std::invalid_argument& e) {
+            throw ModelError(fmt::format("body '{}': {}", def.name, e.what()));
+        }
     }
     // The shoelace sums of polygon_properties hold for any simple polygon, convex or not: the
     // union's area, centroid and polar moment in closed form, not summed over the parts.
@@ -89,6 +94,7 @@ std::vector<std::vector<Vec2>> add_body(Bodies& b, const BodyDef& def, const Mat
     b.vertex_count.push_back(static_cast<std::uint32_t>(def.vertices_m.size()));
     double radius = 0.0;
     for (Vec2 v : def.vertices_m) {
+        b.seam_corner.push_back(0);
         b.local_vertices_m.push_back(v - props.centroid_m);
         radius = std::max(radius, length(v - props.centroid_m));
     }
@@ -107,12 +113,13 @@ std::vector<std::vector<Vec2>> add_body(Bodies& b, const BodyDef& def, const Mat
     b.angular_velocity_rad_s.push_back(dynamic ? def.angular_velocity_rad_s : 0.0);
     b.velocity_at_t_m_s.push_back(b.velocity_m_s.back());
     b.angular_velocity_at_t_rad_s.push_back(b.angular_velocity_rad_s.back());
-    return parts;
+    return contact_parts;
 }
 
 // The parts of body i: a convex body's one part is its outline; a concave body's parts get
 // their own corners after every outline, so that outputs and state files see outlines only.
-void add_parts(Bodies& b, std::uint32_t i, const std::vector<std::vector<Vec2>>& parts) {
+void add_parts(Bodies& b, std::uint32_t i, const RoundedOutlineParts& contact_parts) {
+    const std::vector<std::vector<Vec2>>& parts = contact_parts.parts;
     b.part_begin.push_back(static_cast<std::uint32_t>(b.part_body.size()));
     b.part_count.push_back(static_cast<std::uint32_t>(parts.size()));
     if (parts.size() == 1) {
@@ -123,10 +130,12 @@ void add_parts(Bodies& b, std::uint32_t i, const std::vector<std::vector<Vec2>>&
         return;
     }
     const Vec2 centroid = b.position_m[i];
-    for (const std::vector<Vec2>& part : parts) {
+    for (std::size_t p = 0; p < parts.size(); ++p) {
+        const std::vector<Vec2>& part = parts[p];
         const Vec2 own_centroid = polygon_properties(part).centroid_m;
         const auto first = static_cast<std::uint32_t>(b.local_vertices_m.size());
         double radius = 0.0;
+        for (std::size_t k = 0; k < part.size(); ++k) b.seam_corner.push_back(contact_parts.seam[p].empty() ? 0 : contact_parts.seam[p][k]);
         for (Vec2 v : part) {
             b.local_vertices_m.push_back(v - centroid);
             radius = std::max(radius, length(v - own_centroid));
@@ -218,7 +227,7 @@ std::size_t memory_bytes(const World& w) {
                         bytes_of(b.angular_acceleration_rad_s2) + bytes_of(b.velocity_at_t_m_s) +
                         bytes_of(b.angular_velocity_at_t_rad_s) + bytes_of(b.force_n) + bytes_of(b.torque_n_m) +
                         bytes_of(b.initial_position_m) + bytes_of(b.position_at_rebuild_m) +
-                        bytes_of(b.rotation_at_rebuild_rad);
+                        bytes_of(b.rotation_at_rebuild_rad) + bytes_of(b.seam_corner);
     for (const std::string& name : b.name)
         if (name.capacity() > 15) total += name.capacity() + 1;  // beyond the small-string buffer
     total += bytes_of(w.boxes) + bytes_of(w.part_is_static) + bytes_of(w.candidate_pairs) + bytes_of(w.contacts) + bytes_of(w.contacts_scratch) +
@@ -233,7 +242,7 @@ World build_world(const Model& model) {
     w.settings = model.settings;
     w.contact = model.contact;
     w.table_motion = model.table_motion;
-    std::vector<std::vector<std::vector<Vec2>>> parts;
+    std::vector<RoundedOutlineParts> parts;
     for (const BodyDef& def : model.bodies) parts.push_back(add_body(w.bodies, def, w.contact));
     const std::size_t n = w.bodies.size();
     for (std::size_t i = 0; i < n; ++i) add_parts(w.bodies, static_cast<std::uint32_t>(i), parts[i]);

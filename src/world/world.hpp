@@ -51,6 +51,9 @@ struct Bodies {
     std::vector<std::uint32_t> part_vertex_count;///< per part
     std::vector<double> part_radius_m;          ///< [m] per part: largest distance from its own centroid to a corner
     std::vector<Aabb> part_box_m;               ///< [m] per part: tight bounding box now
+    /// Per corner (indexed as the vertex arrays): 1 for a corner of a concave body's part that is
+    /// no arc of the rounded body (geometry/rounded_outline.hpp); 0 elsewhere.
+    std::vector<std::uint8_t> seam_corner;
 
     std::vector<Vec2> position_m;               ///< [m] centroid at t
     std::vector<double> rotation_rad;           ///< [rad] at t, counter-clockwise from the start
