@@ -64,8 +64,10 @@ void sum_body_force(World& w, std::size_t i);
 void index_pairs_by_body(World& w);
 
 /// The stiffness and joint area of each point of a pair with per-length stiffness (its points
-/// share one tributary length: laws/mohr_coulomb_joint.hpp), softened as the pair is.
-JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p);
+/// share one tributary length: laws/mohr_coulomb_joint.hpp), softened as the pair is. points:
+/// how many the contact has with its sub-contacts (contact/sub_contacts.hpp): then this is an
+/// end's, and an interior point has twice it.
+JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p, std::uint32_t points = 2);
 
 /// Elastic energy stored in all contact springs [J].
 double contact_elastic_energy(const World& w);

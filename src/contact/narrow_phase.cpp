@@ -20,7 +20,9 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const std::uint32_t part_b = pair.part_b;
     // A bonded joint holds its points while it opens by less than gap_m (bonded_pairs.hpp):
     // no early exit on the boxes.
-    const double gap_m = pair.count > 0 && has_intact_bond(pair) ? bonded_gap_m(w, pair) : 0.0;
+    const bool bonded = pair.count > 0 && (has_intact_bond(pair) || (p < w.sub_contacts.size() &&
+                                                                       has_intact_bond(w.sub_contacts[p])));
+    const double gap_m = bonded ? bonded_gap_m(w, pair) : 0.0;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.part_box_m[part_a];
