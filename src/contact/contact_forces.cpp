@@ -76,7 +76,7 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
 // the share of the pair's reduced mass that its tributary length has of the contact's, so the
 // points' dashpots together give the pair the requested damping ratio. Kept apart from
 // pair_law so that the per-point law's loop is what it was.
-ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, std::uint32_t sub_contacts,
+[[gnu::noinline]] ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, std::uint32_t sub_contacts,
                              SubContacts* sub, double dt_s, PairForces& out) {
     ContactEnergy energy;
     const std::uint32_t ia = pair.a;
@@ -233,11 +233,10 @@ void prepare_pair_forces(World& w) {
 ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened) {
     PairContact& pair = w.contacts[p];
     SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
-    ContactEnergy energy;
+    ContactEnergy energy = pair_law(pair, w.bodies, w.contact, sub, w.dt_s, w.pair_forces[p]);
     // Interior points exist only while the pair has its two ends (contact/sub_contacts.hpp).
     if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
         energy += dropped_sub_points_work(w.bodies, pair, sub->normal, drop_sub_points(*sub), w.dt_s);
-    energy += pair_law(pair, w.bodies, w.contact, sub, w.dt_s, w.pair_forces[p]);
     if (opened.count > 0) energy += opened_points_work(w, pair, opened);
     energy.deepest_pair = static_cast<std::uint32_t>(p);
     return energy;
