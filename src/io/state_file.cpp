@@ -358,6 +358,9 @@ void write_contacts(StateGroup g, const std::vector<PairContact>& c) {
     g.write("point_shear_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_dashpot_n; }), 2);
     g.write("point_sliding", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.sliding); }), 2);
     g.write("point_bond", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.bond); }), 2);
+    std::vector<std::uint32_t> broken;
+    for (const PairContact& p : c) broken.insert(broken.end(), p.broken_features, p.broken_features + 2);
+    g.write("broken_features", broken, 2);
 }
 
 std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_count) {
@@ -382,9 +385,14 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
     // (Files written before bonds existed have no bond column: no point was bonded then.)
     const std::vector<std::uint8_t> bond =
         g.has("point_bond") ? g.flags("point_bond", 2 * n, 2) : std::vector<std::uint8_t>(2 * a.size(), 0);
+    // (Files written before broken corners were remembered have none.)
+    const std::vector<std::uint32_t> broken =
+        g.has("broken_features") ? g.indices("broken_features", 2 * n, 2) : std::vector<std::uint32_t>(2 * a.size(), no_feature);
     std::vector<PairContact> out(a.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         PairContact& p = out[i];
+        p.broken_features[0] = broken[2 * i];
+        p.broken_features[1] = broken[2 * i + 1];
         // The table is sorted by (part_a, part_b), with a < b: the merge and the force sums rely on it.
         const bool sorted = i == 0 || out[i - 1].part_a < part_a[i] ||
                             (out[i - 1].part_a == part_a[i] && out[i - 1].part_b < part_b[i]);
