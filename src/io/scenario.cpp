@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "contact/sub_contacts.hpp"
 #include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
@@ -16,7 +17,6 @@
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/scenario_folder.hpp"
-#include "contact/sub_contacts.hpp"
 #include "io/time_series_csv.hpp"
 #include "laws/material_stiffness.hpp"
 #include "laws/restitution.hpp"
