@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "contact/contact_table.hpp"
+#include "contact/sub_contacts.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "geometry/rounded_contact.hpp"
 #include "laws/mohr_coulomb_joint.hpp"
@@ -31,7 +32,8 @@ double touching_gap_m(const Bodies& b, const PairContact& pair) {
 std::size_t bond_touching_pairs(World& w) {
     const Bodies& b = w.bodies;
     std::size_t bonded = 0;
-    for (PairContact& pair : w.contacts) {
+    for (std::size_t p = 0; p < w.contacts.size(); ++p) {
+        PairContact& pair = w.contacts[p];
         const std::uint32_t group = b.bond_group[pair.a];
         if (group == 0 || b.bond_group[pair.b] != group) continue;
         if (b.is_static[pair.a] && b.is_static[pair.b]) continue;  // nothing moves between them
@@ -51,6 +53,11 @@ std::size_t bond_touching_pairs(World& w) {
         update_pair_geometry(pair, manifold, match_distance_m(b, pair));
         for (std::uint32_t k = 0; k < pair.count; ++k) pair.points[k].bond = BondState::intact;
         bonded += pair.count;
+        // The interior points of an edge-to-edge joint are bonded with its ends (sub_contacts.hpp).
+        if (pair.count == 2 && p < w.sub_contacts.size()) {
+            place_sub_points(w.sub_contacts[p], pair, w.contact.sub_contacts, match_distance_m(b, pair), BondState::intact);
+            bonded += w.sub_contacts[p].count;
+        }
     }
     return bonded;
 }

@@ -23,47 +23,100 @@ Vec2 relative_velocity(const Bodies& b, std::uint32_t ia, std::uint32_t ib, Vec2
            (b.velocity_m_s[ia] + cross(b.angular_velocity_rad_s[ia], ra));
 }
 
+// The last half interval of the dashpots of interior points that were dropped (as
+// opened_points_work below, for the pair's own points), along normal n of when they were placed.
+ContactEnergy dropped_sub_points_work(const Bodies& b, const PairContact& pair, Vec2 n, const DroppedSubPoints& dropped,
+                                      double dt_s) {
+    ContactEnergy energy;
+    for (std::uint32_t k = 0; k < dropped.count; ++k) {
+        const ContactPoint& point = dropped.points[k];
+        const Vec2 relative = relative_velocity(b, pair.a, pair.b, point.point_m);
+        energy.normal_dashpot_j -= 0.5 * point.normal_dashpot_n * dot(relative, n) * dt_s;
+        energy.shear_dashpot_j -= 0.5 * point.shear_dashpot_n * dot(relative, perp(n)) * dt_s;
+    }
+    return energy;
+}
+
+// What one pass of the per-length law over a pair shares between its points.
+struct JointPass {
+    const Bodies& b;
+    std::uint32_t ia, ib;
+    Vec2 n, t;
+    const ContactParameters& params;
+    double dt_s;
+};
+
+// The law at one point of a per-length joint: updates the point and the ledger's terms, and
+// returns the point's force on b.
+Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint& joint, const DashpotCoefficients& dash,
+                      ContactEnergy& energy) {
+    const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
+    const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
+    const JointForce j = mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s);
+    const ContactForce& f = j.force;
+    point.normal_force_n = f.normal_n;
+    point.shear_spring_n = f.shear_spring_n;
+    point.shear_force_n = f.shear_n;
+    point.normal_dashpot_n = f.normal_dashpot_n;
+    point.shear_dashpot_n = f.shear_dashpot_n;
+    point.sliding = f.sliding;
+    point.bond = j.bond;
+    energy.normal_dashpot_j += f.normal_dashpot_work_j;
+    energy.shear_dashpot_j += f.shear_dashpot_work_j;
+    energy.friction_j += f.friction_work_j;
+    energy.bond_breakage_j += j.bond_breakage_j;
+    energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond);
+    return f.normal_n * s.n + f.shear_n * s.t;
+}
+
 // The per-length joint at every point of one pair (laws/mohr_coulomb_joint.hpp): each point
-// with its own tributary length, stiffness and dashpots. Kept apart from pair_law so that the
-// per-point law's loop is what it was.
-ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m, double dt_s,
-                             PairForces& out) {
+// with its own tributary length, stiffness and dashpots; with sub-contacts (sub: the pair's
+// interior points, or null), an edge-to-edge contact has n points (contact/sub_contacts.hpp),
+// whose interior points' forces are added to the first end's slot. Each point's dashpots take
+// the share of the pair's reduced mass that its tributary length has of the contact's, so the
+// points' dashpots together give the pair the requested damping ratio. Kept apart from
+// pair_law so that the per-point law's loop is what it was.
+[[gnu::noinline]] ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
+                                                 std::uint32_t sub_contacts, SubContacts* sub, double dt_s, PairForces& out) {
     ContactEnergy energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
-    const ContactParameters& params = stored;
-    const JointPoint joint = joint_point_of(b, pair, stored, rounding_m);
+    const std::uint32_t points = sub != nullptr && pair.count == 2 ? sub_contacts : pair.count;
+    if (points > 2) {
+        const double match_distance_m = 0.05 * std::min(b.part_radius_m[pair.part_a], b.part_radius_m[pair.part_b]);
+        energy += dropped_sub_points_work(b, pair, sub->normal, place_sub_points(*sub, pair, points, match_distance_m), dt_s);
+    }
+    const JointPass pass{b, ia, ib, pair.normal, perp(pair.normal), stored, dt_s};
+    const JointPoint joint = joint_point_of(b, pair, stored, rounding_m, points);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
-    ContactParameters point_params = params;
+    // (An end's share: 1 / (2 (n - 1)) of the mass for an edge contact, all of it for a corner.)
+    const double end_share = pair.count == 2 ? 2.0 * (points - 1) : 1.0;
+    ContactParameters point_params = stored;
     point_params.kn_N_m = joint.kn_N_m;
     point_params.ks_N_m = joint.ks_N_m;
-    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / pair.count);
-    const Vec2 n = pair.normal;
-    const Vec2 t = perp(n);
+    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / end_share);
     double deepest_m = 0.0;
     for (std::uint32_t k = 0; k < pair.count; ++k) {
         ContactPoint& point = pair.points[k];
-        const Vec2 relative = relative_velocity(b, ia, ib, point.point_m);
-        const ContactKinematics kin{point.overlap_m, dot(relative, n), dot(relative, t)};
-        const JointForce j = mohr_coulomb_joint(params, joint, dash, kin, point.history(), point.bond, dt_s);
-        const ContactForce& f = j.force;
-        point.normal_force_n = f.normal_n;
-        point.shear_spring_n = f.shear_spring_n;
-        point.shear_force_n = f.shear_n;
-        point.normal_dashpot_n = f.normal_dashpot_n;
-        point.shear_dashpot_n = f.shear_dashpot_n;
-        point.sliding = f.sliding;
-        point.bond = j.bond;
-        const Vec2 on_b = f.normal_n * n + f.shear_n * t;
+        const Vec2 on_b = joint_point_step(pass, point, joint, dash, energy);
         out.on_b_n[k] = on_b;
         out.torque_on_b_n_m[k] = cross(point.point_m - b.position_m[ib], on_b);
         out.torque_on_a_n_m[k] = cross(point.point_m - b.position_m[ia], on_b);
-        energy.normal_dashpot_j += f.normal_dashpot_work_j;
-        energy.shear_dashpot_j += f.shear_dashpot_work_j;
-        energy.friction_j += f.friction_work_j;
-        energy.bond_breakage_j += j.bond_breakage_j;
-        energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond);
         deepest_m = std::max(deepest_m, point.overlap_m);
+    }
+    if (points > 2) {
+        // Interior points: twice an end's tributary length, stiffness and mass share.
+        const JointPoint inner{2.0 * joint.kn_N_m, 2.0 * joint.ks_N_m, 2.0 * joint.area_m2};
+        point_params.kn_N_m = inner.kn_N_m;
+        point_params.ks_N_m = inner.ks_N_m;
+        const DashpotCoefficients inner_dash = dashpot_coefficients(point_params, 2.0 * reduced_mass / end_share);
+        for (std::uint32_t k = 0; k < sub->count; ++k) {
+            ContactPoint& point = sub->points[k];
+            const Vec2 on_b = joint_point_step(pass, point, inner, inner_dash, energy);
+            out.on_b_n[0] += on_b;
+            out.torque_on_b_n_m[0] += cross(point.point_m - b.position_m[ib], on_b);
+            out.torque_on_a_n_m[0] += cross(point.point_m - b.position_m[ia], on_b);
+        }
     }
     energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
     return energy;
@@ -72,14 +125,16 @@ ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactPa
 // The law at every point of one pair: updates the points' forces and history, and writes what
 // they add to the two bodies into the pair's own slot (no shared sums: parallel.hpp, rule 1).
 // Returns the pair's share of the ledger: this step's dissipation and the springs' energy now.
-ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, double dt_s, PairForces& out) {
+ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, SubContacts* sub, double dt_s,
+                       PairForces& out) {
     ContactEnergy energy;
     out.count = pair.count;
     if (pair.count == 0) return energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const ContactParameters& stored = contact.at(b.material[ia], b.material[ib]);
-    if (stored.stiffness == StiffnessBasis::per_length) return joint_pair_law(pair, b, stored, contact.rounding_m, dt_s, out);
+    if (stored.stiffness == StiffnessBasis::per_length)
+        return joint_pair_law(pair, b, stored, contact.rounding_m, contact.sub_contacts, sub, dt_s, out);
     const ContactParameters params = softened(stored, pair.stiffness_scale);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
@@ -143,11 +198,12 @@ ContactEnergy opened_points_work(const World& w, const PairContact& pair, const 
 
 }  // namespace
 
-JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p, double rounding_m) {
+JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p, double rounding_m,
+                          std::uint32_t points) {
     const double thickness_m = std::min(b.thickness_m[pair.a], b.thickness_m[pair.b]);
     const double least_width_m = std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
-    const double tributary_m =
-        tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m, rounding_m);
+    double tributary_m = tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m, rounding_m);
+    if (points > 2) tributary_m /= points - 1;  // an end's share of n points (contact/sub_contacts.hpp)
     // (The softening of a vanishing overlap applies as to a per-point contact: polygon_contact.hpp.)
     return joint_point(p, tributary_m * pair.stiffness_scale, thickness_m);
 }
@@ -176,8 +232,13 @@ void prepare_pair_forces(World& w) {
 }
 
 ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened) {
-    ContactEnergy energy = pair_law(w.contacts[p], w.bodies, w.contact, w.dt_s, w.pair_forces[p]);
-    if (opened.count > 0) energy += opened_points_work(w, w.contacts[p], opened);
+    PairContact& pair = w.contacts[p];
+    SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
+    ContactEnergy energy = pair_law(pair, w.bodies, w.contact, sub, w.dt_s, w.pair_forces[p]);
+    // Interior points exist only while the pair has its two ends (contact/sub_contacts.hpp).
+    if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
+        energy += dropped_sub_points_work(w.bodies, pair, sub->normal, drop_sub_points(*sub), w.dt_s);
+    if (opened.count > 0) energy += opened_points_work(w, pair, opened);
     energy.deepest_pair = static_cast<std::uint32_t>(p);
     return energy;
 }
@@ -214,10 +275,17 @@ double contact_elastic_energy(const World& w) {
         const ContactParameters& stored = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
         double energy = 0.0;
         if (stored.stiffness == StiffnessBasis::per_length) {
-            const JointPoint joint = joint_point_of(w.bodies, pair, stored, w.contact.rounding_m);
+            const SubContacts* sub = static_cast<std::size_t>(p) < w.sub_contacts.size() && pair.count == 2
+                                         ? &w.sub_contacts[p] : nullptr;
+            const std::uint32_t interior = sub != nullptr ? sub->count : 0;
+            const JointPoint joint = joint_point_of(w.bodies, pair, stored, w.contact.rounding_m, pair.count + interior);
             for (std::uint32_t k = 0; k < pair.count; ++k)
                 energy += joint_elastic_energy(joint, pair.points[k].overlap_m, pair.points[k].shear_spring_n,
                                                pair.points[k].bond);
+            const JointPoint inner{2.0 * joint.kn_N_m, 2.0 * joint.ks_N_m, 2.0 * joint.area_m2};
+            for (std::uint32_t k = 0; k < interior; ++k)
+                energy += joint_elastic_energy(inner, sub->points[k].overlap_m, sub->points[k].shear_spring_n,
+                                               sub->points[k].bond);
             return energy;
         }
         const ContactParameters params = softened(stored, pair.stiffness_scale);

@@ -65,8 +65,11 @@ void index_pairs_by_body(World& w);
 
 /// The stiffness and joint area of each point of a pair with per-length stiffness (its points
 /// share one tributary length: laws/mohr_coulomb_joint.hpp), softened as the pair is.
-/// rounding_m: [contact] rounding [m], the least tributary length of a one-point contact.
-JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p, double rounding_m);
+/// rounding_m: [contact] rounding [m], the least tributary length of a one-point contact. points:
+/// how many the contact has with its sub-contacts (contact/sub_contacts.hpp): then this is an
+/// end's, and an interior point has twice it.
+JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p, double rounding_m,
+                          std::uint32_t points = 2);
 
 /// Elastic energy stored in all contact springs [J].
 double contact_elastic_energy(const World& w);

@@ -33,6 +33,27 @@ bool same_features(const PairContact& pair, const ContactManifold& manifold) {
     return true;
 }
 
+// A broken bond stays broken where it was (issue 13: a cracked joint that closes again keeps
+// only its residual friction): the corner of a broken point that opens is remembered by its
+// pair, and a point that closes at that corner again starts broken.
+void remember_broken(PairContact& pair, const ContactPoint& old) {
+    if (!is_broken(old.bond)) return;
+    const std::uint32_t entry = old.feature | (old.bond == BondState::broken_shear ? broken_in_shear : 0u);
+    for (std::uint32_t& slot : pair.broken_features)
+        if (slot == no_feature || (slot & ~broken_in_shear) == old.feature) {
+            slot = entry;
+            return;
+        }
+    pair.broken_features[1] = entry;  // (more than two: the latest is kept)
+}
+
+BondState remembered_bond(const PairContact& pair, std::uint32_t feature) {
+    for (const std::uint32_t slot : pair.broken_features)
+        if (slot != no_feature && (slot & ~broken_in_shear) == feature)
+            return (slot & broken_in_shear) != 0 ? BondState::broken_shear : BondState::broken_tension;
+    return BondState::none;
+}
+
 }  // namespace
 
 OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m) {
@@ -60,6 +81,8 @@ OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& mani
         p.feature = manifold.points[i].feature;
         p.point_m = manifold.points[i].point_m;
         p.overlap_m = manifold.points[i].overlap_m;
+        if (pair.broken_features[0] != no_feature) [[unlikely]]
+            p.bond = remembered_bond(pair, p.feature);
         for (std::uint32_t j = 0; j < pair.count; ++j)
             if (!taken[j] && pair.points[j].feature == p.feature) {
                 p.keep_history_of(pair.points[j]);
@@ -90,6 +113,7 @@ OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& mani
     for (std::uint32_t j = 0; j < pair.count; ++j) {
         if (taken[j]) continue;
         const ContactPoint& old = pair.points[j];
+        remember_broken(pair, old);
         opened.points[opened.count++] = {old.point_m.x, old.point_m.y, old.normal_dashpot_n, old.shear_dashpot_n};
     }
     pair.stiffness_scale = manifold.count > 0 ? manifold.stiffness_scale : 1.0;

@@ -37,6 +37,11 @@ struct ContactPoint {
     }
 };
 
+/// PairContact::broken_features: none; else the feature id, with broken_in_shear set for a
+/// shear failure (feature ids use the low 17 bits: polygon_contact.hpp).
+inline constexpr std::uint32_t no_feature = 0xffffffffu;
+inline constexpr std::uint32_t broken_in_shear = 0x40000000u;
+
 /// All contact points between part part_a of body a and part part_b of body b (a < b; a convex
 /// body is one part, and then the part id is the body id while every body is convex). The law,
 /// the ledger and the force sums read the bodies; the narrow phase reads the parts.
@@ -53,8 +58,12 @@ struct PairContact {
     AxisCache axis_cache;                     ///< lets lasting contacts skip the full separating-axis test
     Vec2 normal;                              ///< unit, from a to b
     double stiffness_scale = 1.0;             ///< [-] softening of a shrinking overlap (polygon_contact.hpp)
+    /// The corners whose broken bond left with their point when it opened (broken_memory below):
+    /// a point that closes again there is broken still, with the residual friction.
+    std::uint32_t broken_features[2] = {no_feature, no_feature};
     ContactPoint points[2];
 };
+
 
 /// Replaces the candidate pairs after a broad-phase rebuild, keeping the state of pairs that
 /// remain candidates. pairs: pairs of parts of different bodies, sorted; part_body: each part's

@@ -20,7 +20,12 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const std::uint32_t part_b = pair.part_b;
     // A bonded joint holds its points while it opens by less than gap_m (bonded_pairs.hpp):
     // no early exit on the boxes.
-    const double gap_m = pair.count > 0 && has_intact_bond(pair) ? bonded_gap_m(w, pair) : 0.0;
+    // (Or by the interior points of its sub-contacts: contact/sub_contacts.hpp.)
+    double gap_m = 0.0;
+    if (pair.count > 0 && has_intact_bond(pair))
+        gap_m = bonded_gap_m(w, pair);
+    else if (!w.sub_contacts.empty() && pair.count > 0 && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
+        gap_m = bonded_gap_m(w, pair);
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.part_box_m[part_a];

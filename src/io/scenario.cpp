@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "contact/sub_contacts.hpp"
 #include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
@@ -311,6 +312,8 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
         if (!(*rounding >= 0.0)) t.fail("rounding", fmt::format("is a corner radius [m] and must be >= 0, got {}", *rounding));
         pairs.rounding_m = *rounding;
     }
+    const std::optional<std::int64_t> sub_contacts = t.optional_whole_number("sub_contacts", 2, max_sub_contacts);
+    if (sub_contacts) pairs.sub_contacts = static_cast<std::uint32_t>(*sub_contacts);
     std::set<std::pair<std::uint32_t, std::uint32_t>> seen;
     for (TableReader pair : t.table_array("pairs")) {
         const auto names = [&] {
@@ -348,6 +351,14 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
         }
         pair.reject_unknown_keys();
     }
+    // Sub-contacts split a joint's length: they need stiffness per unit length everywhere.
+    if (sub_contacts)
+        for (std::size_t i = 0; i < pairs.parameters.size(); ++i)
+            if (pairs.parameters[i].stiffness == StiffnessBasis::per_point)
+                t.fail("sub_contacts", fmt::format("splits a joint's length, so it needs stiffness = \"per_length\", but "
+                                                   "the pair {} / {} has per-point stiffness",
+                                                   pairs.materials[i / pairs.materials.size()],
+                                                   pairs.materials[i % pairs.materials.size()]));
     t.reject_unknown_keys();
     return pairs;
 }

@@ -358,6 +358,9 @@ void write_contacts(StateGroup g, const std::vector<PairContact>& c) {
     g.write("point_shear_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_dashpot_n; }), 2);
     g.write("point_sliding", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.sliding); }), 2);
     g.write("point_bond", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.bond); }), 2);
+    std::vector<std::uint32_t> broken;
+    for (const PairContact& p : c) broken.insert(broken.end(), p.broken_features, p.broken_features + 2);
+    g.write("broken_features", broken, 2);
 }
 
 std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_count) {
@@ -382,9 +385,14 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
     // (Files written before bonds existed have no bond column: no point was bonded then.)
     const std::vector<std::uint8_t> bond =
         g.has("point_bond") ? g.flags("point_bond", 2 * n, 2) : std::vector<std::uint8_t>(2 * a.size(), 0);
+    // (Files written before broken corners were remembered have none.)
+    const std::vector<std::uint32_t> broken =
+        g.has("broken_features") ? g.indices("broken_features", 2 * n, 2) : std::vector<std::uint32_t>(2 * a.size(), no_feature);
     std::vector<PairContact> out(a.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
         PairContact& p = out[i];
+        p.broken_features[0] = broken[2 * i];
+        p.broken_features[1] = broken[2 * i + 1];
         // The table is sorted by (part_a, part_b), with a < b: the merge and the force sums rely on it.
         const bool sorted = i == 0 || out[i - 1].part_a < part_a[i] ||
                             (out[i - 1].part_a == part_a[i] && out[i - 1].part_b < part_b[i]);
@@ -406,6 +414,70 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
             const std::size_t j = 2 * i + k;
             p.points[k] = {feature[j], point[j], overlap[j], normal_force[j], spring[j], shear[j], normal_dashpot[j],
                            shear_dashpot[j], sliding[j] != 0, static_cast<BondState>(bond[j])};
+        }
+    }
+    return out;
+}
+
+// The interior points of sub-contacts (contact/sub_contacts.hpp): each pair's count, then its
+// points in one flat list, pair after pair.
+void write_sub_contacts(StateGroup g, const std::vector<SubContacts>& sub) {
+    std::vector<std::uint32_t> count;
+    std::vector<Vec2> normal;
+    std::vector<ContactPoint> points;
+    for (const SubContacts& s : sub) {
+        count.push_back(s.count);
+        normal.push_back(s.normal);
+        points.insert(points.end(), s.points, s.points + s.count);
+    }
+    auto points_of = [&]<class T>(auto field) {
+        std::vector<T> out;
+        for (const ContactPoint& q : points) out.push_back(field(q));
+        return out;
+    };
+    g.write("count", count);
+    g.write("normal", normal);
+    g.write("point_feature", points_of.operator()<std::uint32_t>([](const ContactPoint& q) { return q.feature; }));
+    g.write("point_m", points_of.operator()<Vec2>([](const ContactPoint& q) { return q.point_m; }));
+    g.write("point_overlap_m", points_of.operator()<double>([](const ContactPoint& q) { return q.overlap_m; }));
+    g.write("point_normal_force_n", points_of.operator()<double>([](const ContactPoint& q) { return q.normal_force_n; }));
+    g.write("point_shear_spring_n", points_of.operator()<double>([](const ContactPoint& q) { return q.shear_spring_n; }));
+    g.write("point_shear_force_n", points_of.operator()<double>([](const ContactPoint& q) { return q.shear_force_n; }));
+    g.write("point_normal_dashpot_n", points_of.operator()<double>([](const ContactPoint& q) { return q.normal_dashpot_n; }));
+    g.write("point_shear_dashpot_n", points_of.operator()<double>([](const ContactPoint& q) { return q.shear_dashpot_n; }));
+    g.write("point_sliding", points_of.operator()<std::uint8_t>([](const ContactPoint& q) { return std::uint8_t(q.sliding); }));
+    g.write("point_bond", points_of.operator()<std::uint8_t>([](const ContactPoint& q) { return std::uint8_t(q.bond); }));
+}
+
+std::vector<SubContacts> read_sub_contacts(const StateGroup& g, std::size_t pair_count) {
+    const std::vector<std::uint32_t> count = g.indices("count", static_cast<std::int64_t>(pair_count));
+    const std::vector<Vec2> normal = g.vectors("normal", static_cast<std::int64_t>(pair_count));
+    std::int64_t total = 0;
+    for (std::size_t i = 0; i < count.size(); ++i) {
+        if (count[i] > max_sub_contacts - 2)
+            throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: pair {} has {} "
+                                                               "interior points, at most {}", g.path(), i + 1, count[i],
+                                                               max_sub_contacts - 2));
+        total += count[i];
+    }
+    const std::vector<std::uint32_t> feature = g.indices("point_feature", total);
+    const std::vector<Vec2> point = g.vectors("point_m", total);
+    const std::vector<double> overlap = g.doubles("point_overlap_m", total), normal_force = g.doubles("point_normal_force_n", total),
+                              spring = g.doubles("point_shear_spring_n", total), shear = g.doubles("point_shear_force_n", total),
+                              normal_dashpot = g.doubles("point_normal_dashpot_n", total),
+                              shear_dashpot = g.doubles("point_shear_dashpot_n", total);
+    const std::vector<std::uint8_t> sliding = g.flags("point_sliding", total), bond = g.flags("point_bond", total);
+    std::vector<SubContacts> out(pair_count);
+    std::size_t j = 0;
+    for (std::size_t i = 0; i < pair_count; ++i) {
+        out[i].count = count[i];
+        out[i].normal = normal[i];
+        for (std::uint32_t k = 0; k < count[i]; ++k, ++j) {
+            if (bond[j] > std::uint8_t(BondState::broken_shear))
+                throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: point {} has no "
+                                                                   "valid bond state", g.path(), j + 1));
+            out[i].points[k] = {feature[j], point[j], overlap[j], normal_force[j], spring[j], shear[j], normal_dashpot[j],
+                                shear_dashpot[j], sliding[j] != 0, static_cast<BondState>(bond[j])};
         }
     }
     return out;
@@ -534,6 +606,8 @@ void write_world(StateGroup& root, const WorldState& s) {
     b.write("rotation_at_rebuild_rad", s.rotation_at_rebuild_rad);
 
     write_contacts(root.create_group("contacts"), s.contacts);
+    // (Only with sub-contacts: the files of two-point runs stay as they were.)
+    if (!s.sub_contacts.empty()) write_sub_contacts(root.create_group("sub_contacts"), s.sub_contacts);
     write_energy(root.create_group("energy"), s.energy);
     write_stability(root.create_group("stability"), s.stability);
     if (s.settling) write_settling(root.create_group("settling"), *s.settling);
@@ -597,6 +671,7 @@ WorldState read_world(const StateGroup& root) {
                                                            "{} rows, expected {}", s.position_at_rebuild_m.size(), n));
 
     s.contacts = read_contacts(root.open_group("contacts"), s.name.size());
+    if (root.has("sub_contacts")) s.sub_contacts = read_sub_contacts(root.open_group("sub_contacts"), s.contacts.size());
     s.energy = read_energy(root.open_group("energy"));
     s.stability = read_stability(root.open_group("stability"));
     if (root.has("settling")) s.settling = read_settling(root.open_group("settling"));

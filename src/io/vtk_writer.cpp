@@ -72,11 +72,19 @@ void body_point_data(Buffer& out, const Bodies& b, const std::vector<std::uint32
 
 std::vector<const ContactPoint*> active_points(const World& w, std::vector<const PairContact*>& pair_of) {
     std::vector<const ContactPoint*> points;
-    for (const PairContact& pair : w.contacts)
+    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+        const PairContact& pair = w.contacts[i];
         for (std::uint32_t k = 0; k < pair.count; ++k) {
             points.push_back(&pair.points[k]);
             pair_of.push_back(&pair);
         }
+        // The interior points of sub-contacts (contact/sub_contacts.hpp) after the pair's own.
+        if (i < w.sub_contacts.size())
+            for (std::uint32_t k = 0; k < w.sub_contacts[i].count; ++k) {
+                points.push_back(&w.sub_contacts[i].points[k]);
+                pair_of.push_back(&pair);
+            }
+    }
     return points;
 }
 

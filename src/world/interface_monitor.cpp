@@ -88,7 +88,8 @@ void InterfaceMonitor::observe(const World& w) {
         s.points = s.bonded_points = s.broken_points = 0;
         s.normal_force_n = s.shear_force_n = s.opening_m = 0.0;
     }
-    for (const PairContact& pair : w.contacts) {
+    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+        const PairContact& pair = w.contacts[i];
         if (pair.count == 0) continue;
         const std::size_t k = find_or_add(w, pair);
         if (k == states_.size()) continue;
@@ -100,15 +101,18 @@ void InterfaceMonitor::observe(const World& w) {
         InterfaceState& s = states_[k];
         // Both N and the shear along s = -(the contact tangent) come out the same whichever
         // body of the pair is body_a (interface_monitor.hpp).
-        for (std::uint32_t p = 0; p < pair.count; ++p) {
-            s.normal_force_n += pair.points[p].normal_force_n;
-            shear_ccw_sum_n_[k] += pair.points[p].shear_force_n;
-            centre_sum_m_[k] += pair.points[p].point_m;
-            s.bonded_points += pair.points[p].bond == BondState::intact ? 1 : 0;
-            s.broken_points += is_broken(pair.points[p].bond) ? 1 : 0;
+        // (The pair's own points, then its sub-contacts' interior points: contact/sub_contacts.hpp.)
+        const std::uint32_t interior = i < w.sub_contacts.size() ? w.sub_contacts[i].count : 0;
+        for (std::uint32_t p = 0; p < pair.count + interior; ++p) {
+            const ContactPoint& point = p < pair.count ? pair.points[p] : w.sub_contacts[i].points[p - pair.count];
+            s.normal_force_n += point.normal_force_n;
+            shear_ccw_sum_n_[k] += point.shear_force_n;
+            centre_sum_m_[k] += point.point_m;
+            s.bonded_points += point.bond == BondState::intact ? 1 : 0;
+            s.broken_points += is_broken(point.bond) ? 1 : 0;
         }
         if (s.broken_points > 0 && s.first_break_time_s < 0.0) s.first_break_time_s = w.time_s;
-        s.points += pair.count;
+        s.points += pair.count + interior;
         // (The first part pair's normal: the parts of one interface face the same way.)
         if (!s.touching) normal_now_[k] = s.body_a != pair.a ? -pair.normal : pair.normal;
         s.touching = true;

@@ -49,6 +49,8 @@ struct MaterialPairs {
     std::vector<StiffnessOrigin> origins;        ///< like parameters, or empty: every kn and ks given
     /// [m] [contact] rounding: every corner is an arc of this radius (geometry/rounded_contact.hpp); 0: sharp
     double rounding_m = 0.0;
+    /// [contact] sub_contacts: the points of an edge-to-edge per-length contact (contact/sub_contacts.hpp)
+    std::uint32_t sub_contacts = 2;
 
     std::uint32_t id(const std::string& material) const;  ///< throws std::out_of_range
     const ContactParameters& at(std::uint32_t i, std::uint32_t j) const {

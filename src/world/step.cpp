@@ -83,6 +83,10 @@ void rebuild_candidate_pairs(World& w) {
         std::erase_if(w.candidate_pairs, [&](const BodyPair& p) { return b.part_body[p.first] == b.part_body[p.second]; });
     take_out_bodies_outside_domain(w);  // before the merge: a taken-out body's contacts are dropped
     merge_candidate_pairs(w.contacts, w.candidate_pairs, b.part_body, w.contacts_scratch);
+    if (w.contact.sub_contacts > 2) {  // (the merge left the old table in contacts_scratch)
+        w.sub_contacts_scratch.swap(w.sub_contacts);
+        carry_sub_contacts(w.contacts_scratch, w.sub_contacts_scratch, w.contacts, w.sub_contacts);
+    }
     index_pairs_by_body(w);
     b.position_at_rebuild_m = b.position_m;
     b.rotation_at_rebuild_rad = b.rotation_rad;

@@ -10,6 +10,7 @@
 
 #include "broad_phase/grid_broad_phase.hpp"
 #include "contact/contact_table.hpp"
+#include "contact/sub_contacts.hpp"
 #include "dynamics/stability_rows.hpp"
 #include "world/energy_ledger.hpp"
 #include "world/model.hpp"
@@ -156,6 +157,10 @@ struct World {
     std::vector<BodyPair> candidate_pairs;///< pairs of parts of different bodies
     std::vector<PairContact> contacts;    ///< sorted by (part_a, part_b), so also by a
     std::vector<PairContact> contacts_scratch;
+    /// The interior points of each pair, aligned with contacts; empty unless [contact]
+    /// sub_contacts > 2 (contact/sub_contacts.hpp).
+    std::vector<SubContacts> sub_contacts;
+    std::vector<SubContacts> sub_contacts_scratch;
     /// The contact law's result per pair, written in parallel, summed per body in table order.
     std::vector<PairForces> pair_forces;
     /// For each body, the pairs it belongs to in table order (entry = 2 pair + (body is b)):

@@ -39,6 +39,7 @@ WorldState capture_state(const World& w) {
     s.position_at_rebuild_m = b.position_at_rebuild_m;
     s.rotation_at_rebuild_rad = b.rotation_at_rebuild_rad;
     s.contacts = w.contacts;
+    s.sub_contacts = w.sub_contacts;
     s.energy = w.energy;
     s.stability = w.stability;
     s.left = w.domain.left;
@@ -103,6 +104,12 @@ void restore_bodies_and_contacts(World& w, const WorldState& s, bool dynamic_onl
     w.settling = s.settling;
     w.stability = s.stability;
     w.contacts = s.contacts;
+    // (A state saved without sub-contacts gives this run's interior points fresh, unbonded.)
+    w.sub_contacts = s.sub_contacts;
+    if (w.contact.sub_contacts <= 2)
+        w.sub_contacts.clear();
+    else if (w.sub_contacts.size() != w.contacts.size())
+        w.sub_contacts.assign(w.contacts.size(), SubContacts{});
     w.candidate_pairs.clear();
     for (const PairContact& pair : w.contacts) w.candidate_pairs.emplace_back(pair.part_a, pair.part_b);
     index_pairs_by_body(w);

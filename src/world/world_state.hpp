@@ -50,6 +50,7 @@ struct WorldState {
     std::vector<double> rotation_at_rebuild_rad; ///< [rad] likewise
 
     std::vector<PairContact> contacts;    ///< the whole table, pairs apart included
+    std::vector<SubContacts> sub_contacts;  ///< aligned with contacts, or empty (contact/sub_contacts.hpp)
     EnergyLedger energy;
     StabilityWatch stability;
     std::vector<BodyLeftModel> left;      ///< bodies taken out of the model, in the order they left
