@@ -27,7 +27,7 @@ Vec2 relative_velocity(const Bodies& b, std::uint32_t ia, std::uint32_t ib, Vec2
 // with its own tributary length, stiffness and dashpots. Kept apart from pair_law so that the
 // per-point law's loop is what it was.
 ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double dt_s,
-                             PairForces& out) {
+                             std::uint32_t mass_sharing_points, PairForces& out) {
     ContactEnergy energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
@@ -37,7 +37,7 @@ ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactPa
     ContactParameters point_params = params;
     point_params.kn_N_m = joint.kn_N_m;
     point_params.ks_N_m = joint.ks_N_m;
-    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / pair.count);
+    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / mass_sharing_points);
     const Vec2 n = pair.normal;
     const Vec2 t = perp(n);
     double deepest_m = 0.0;
@@ -72,17 +72,18 @@ ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactPa
 // The law at every point of one pair: updates the points' forces and history, and writes what
 // they add to the two bodies into the pair's own slot (no shared sums: parallel.hpp, rule 1).
 // Returns the pair's share of the ledger: this step's dissipation and the springs' energy now.
-ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, double dt_s, PairForces& out) {
+ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, double dt_s,
+                       std::uint32_t mass_sharing_points, PairForces& out) {
     ContactEnergy energy;
     out.count = pair.count;
     if (pair.count == 0) return energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const ContactParameters& stored = contact.at(b.material[ia], b.material[ib]);
-    if (stored.stiffness == StiffnessBasis::per_length) return joint_pair_law(pair, b, stored, dt_s, out);
+    if (stored.stiffness == StiffnessBasis::per_length) return joint_pair_law(pair, b, stored, dt_s, mass_sharing_points, out);
     const ContactParameters params = softened(stored, pair.stiffness_scale);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
-    const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
+    const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / mass_sharing_points);
     const Vec2 n = pair.normal;
     const Vec2 t = perp(n);
     double deepest_m = 0.0;
@@ -174,8 +175,28 @@ void prepare_pair_forces(World& w) {
         index_pairs_by_body(w);
 }
 
-ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened) {
-    ContactEnergy energy = pair_law(w.contacts[p], w.bodies, w.contact, w.dt_s, w.pair_forces[p]);
+void count_body_pair_points(World& w) {
+    w.body_pair_points.resize(w.contacts.size());
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
+        const std::uint32_t first = w.body_pair_start[i], last = w.body_pair_start[i + 1];
+        // Body i's entries as body a (even entries), grouped by body b. A body meets few others,
+        // so the pairwise loop is short; each entry is written by its body a only.
+        for (std::uint32_t e = first; e < last; ++e) {
+            if ((w.body_pair_entries[e] & 1u) != 0) continue;
+            const PairContact& pair = w.contacts[w.body_pair_entries[e] >> 1];
+            std::uint32_t points = 0;
+            for (std::uint32_t f = first; f < last; ++f) {
+                if ((w.body_pair_entries[f] & 1u) != 0) continue;
+                const PairContact& other = w.contacts[w.body_pair_entries[f] >> 1];
+                if (other.b == pair.b) points += other.count;
+            }
+            w.body_pair_points[w.body_pair_entries[e] >> 1] = points;
+        }
+    });
+}
+
+ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points, const OpenedPoints& opened) {
+    ContactEnergy energy = pair_law(w.contacts[p], w.bodies, w.contact, w.dt_s, mass_sharing_points, w.pair_forces[p]);
     if (opened.count > 0) energy += opened_points_work(w, w.contacts[p], opened);
     energy.deepest_pair = static_cast<std::uint32_t>(p);
     return energy;
