@@ -176,23 +176,21 @@ void prepare_pair_forces(World& w) {
 }
 
 void count_body_pair_points(World& w) {
-    w.body_pair_points.resize(w.contacts.size());
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
-        const std::uint32_t first = w.body_pair_start[i], last = w.body_pair_start[i + 1];
-        // Body i's entries as body a (even entries), grouped by body b. A body meets few others,
-        // so the pairwise loop is short; each entry is written by its body a only.
-        for (std::uint32_t e = first; e < last; ++e) {
-            if ((w.body_pair_entries[e] & 1u) != 0) continue;
-            const PairContact& pair = w.contacts[w.body_pair_entries[e] >> 1];
-            std::uint32_t points = 0;
-            for (std::uint32_t f = first; f < last; ++f) {
-                if ((w.body_pair_entries[f] & 1u) != 0) continue;
-                const PairContact& other = w.contacts[w.body_pair_entries[f] >> 1];
-                if (other.b == pair.b) points += other.count;
-            }
-            w.body_pair_points[w.body_pair_entries[e] >> 1] = points;
-        }
-    });
+    const std::size_t pairs = w.contacts.size();
+    w.body_pair_points.resize(pairs);
+    if (w.points_by_body.size() != w.bodies.size()) w.points_by_body.assign(w.bodies.size(), 0);
+    // The table is sorted by part a, and a body's parts have consecutive ids, so each body's
+    // entries as body a are one run. Per run: sum the points per body b, read the sums back,
+    // clear them. One linear pass (a pairwise search within a run read the table entries again
+    // and again: a third slower step on the keyed wall).
+    for (std::size_t first = 0; first < pairs;) {
+        std::size_t last = first;
+        while (last < pairs && w.contacts[last].a == w.contacts[first].a) ++last;
+        for (std::size_t p = first; p < last; ++p) w.points_by_body[w.contacts[p].b] += w.contacts[p].count;
+        for (std::size_t p = first; p < last; ++p) w.body_pair_points[p] = w.points_by_body[w.contacts[p].b];
+        for (std::size_t p = first; p < last; ++p) w.points_by_body[w.contacts[p].b] = 0;
+        first = last;
+    }
 }
 
 ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points, const OpenedPoints& opened) {

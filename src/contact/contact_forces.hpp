@@ -62,9 +62,8 @@ ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing
                              const OpenedPoints& opened = OpenedPoints());
 
 /// Sets World::body_pair_points: for every table entry, the active points of its body pair this
-/// step, summed over the body pair's part pairs (after the narrow phase, before the law). Each
-/// body sums the entries where it is body a, in table order: integer sums, the same at any
-/// thread count.
+/// step, summed over the body pair's part pairs (after the narrow phase, before the law). One
+/// serial pass over the table (integer sums: the same at any thread count).
 void count_body_pair_points(World& w);
 
 /// Sets body i's force and torque: gravity plus its pairs' slots, in table order. Touches only
