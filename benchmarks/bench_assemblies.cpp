@@ -1,6 +1,6 @@
-// The step on the benchmark scenes of issue 5 (make bench): the S3 brick wall, a jointed rock
-// slope and a Voronoi rockfill, with block-steps/s, contact-steps/s and the phase split as
-// counters. `blockdem bench` (docs/performance.md) runs the same scenes with repeats, thread
+// The step on the benchmark scenes of issue 5 (make bench): the S3 brick wall (and its keyed
+// variant of concave bricks), a jointed rock slope and a Voronoi rockfill, with block-steps/s,
+// contact-steps/s and the phase split as counters. `blockdem bench` (docs/performance.md) runs the same scenes with repeats, thread
 // counts and a markdown table; this file keeps them in the Google Benchmark suite. Never
 // asserted on time.
 #include <benchmark/benchmark.h>
@@ -35,6 +35,12 @@ void BM_S3Wall(benchmark::State& state) {
     run(state, build_world(scenes::s3_wall_scene(static_cast<int>(state.range(0)), 1e9)));
 }
 BENCHMARK(BM_S3Wall)->Arg(100)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+// S3 of concave keyed bricks (5 convex parts each; docs/performance.md, "Concave bodies").
+void BM_KeyedWall(benchmark::State& state) {
+    run(state, build_world(scenes::keyed_wall_scene(static_cast<int>(state.range(0)), 1e9)));
+}
+BENCHMARK(BM_KeyedWall)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 void BM_RockSlope(benchmark::State& state) {
     run(state, build_world(scenes::rock_slope_scene(static_cast<int>(state.range(0)), 1e9)));

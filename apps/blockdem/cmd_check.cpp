@@ -4,9 +4,11 @@
 // period and the static overlap, the critical and the chosen time step, and the table motion.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -137,11 +139,15 @@ void print_start_contacts(const World& w, std::size_t shown = 20) {
     std::size_t pairs = 0;
     fmt::print("dashpots of the pairs touching at the start (C = 2 h sqrt(M k), M = the pair's reduced mass / its "
                "points):\n");
-    for (std::size_t k = 0; k < points.size();) {
+    // One line per body pair, however many part pairs of concave bodies it has and wherever the
+    // table puts them: its first point stands for it, with the count of all its points.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> points_of_pair;
+    std::vector<std::size_t> first_points;
+    for (std::size_t k = 0; k < points.size(); ++k)
+        if (points_of_pair[{points[k].a, points[k].b}]++ == 0) first_points.push_back(k);
+    for (const std::size_t k : first_points) {
         const StiffnessPoint& p = points[k];
-        std::size_t count = 1;  // a pair's points are consecutive
-        while (k + count < points.size() && points[k + count].a == p.a && points[k + count].b == p.b) ++count;
-        k += count;
+        const std::size_t count = points_of_pair[{p.a, p.b}];
         if (p.a >= b.size()) {  // a landing: the stable step's stand-in for a body that touches nothing
             free.push_back(b.name[p.b]);
             continue;

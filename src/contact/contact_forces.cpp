@@ -75,9 +75,11 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
 // whose interior points' forces are added to the first end's slot. Each point's dashpots take
 // the share of the pair's reduced mass that its tributary length has of the contact's, so the
 // points' dashpots together give the pair the requested damping ratio. Kept apart from
-// pair_law so that the per-point law's loop is what it was.
+// pair_law so that the per-point law's loop is what it was. mass_sharing_points: the active
+// points of the body pair over all its part pairs (concave bodies), pair.count otherwise.
 [[gnu::noinline]] ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
-                                                 std::uint32_t sub_contacts, SubContacts* sub, double dt_s, PairForces& out) {
+                                                 std::uint32_t sub_contacts, SubContacts* sub, double dt_s,
+                                                 std::uint32_t mass_sharing_points, PairForces& out) {
     ContactEnergy energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
@@ -89,12 +91,14 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
     const JointPass pass{b, ia, ib, pair.normal, perp(pair.normal), stored, dt_s};
     const JointPoint joint = joint_point_of(b, pair, stored, rounding_m, points);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
-    // (An end's share: 1 / (2 (n - 1)) of the mass for an edge contact, all of it for a corner.)
     const double end_share = pair.count == 2 ? 2.0 * (points - 1) : 1.0;
     ContactParameters point_params = stored;
     point_params.kn_N_m = joint.kn_N_m;
     point_params.ks_N_m = joint.ks_N_m;
-    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / end_share);
+    // (An end's share: 1 / (2 (n - 1)) of the mass for an edge contact, all of it for a corner,
+    // and of that the part pair's share of the body pair's points.)
+    const double pair_share = static_cast<double>(mass_sharing_points) / pair.count;
+    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / (end_share * pair_share));
     double deepest_m = 0.0;
     for (std::uint32_t k = 0; k < pair.count; ++k) {
         ContactPoint& point = pair.points[k];
@@ -126,7 +130,7 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
 // they add to the two bodies into the pair's own slot (no shared sums: parallel.hpp, rule 1).
 // Returns the pair's share of the ledger: this step's dissipation and the springs' energy now.
 ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& contact, SubContacts* sub, double dt_s,
-                       PairForces& out) {
+                       std::uint32_t mass_sharing_points, PairForces& out) {
     ContactEnergy energy;
     out.count = pair.count;
     if (pair.count == 0) return energy;
@@ -134,10 +138,10 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
     const std::uint32_t ib = pair.b;
     const ContactParameters& stored = contact.at(b.material[ia], b.material[ib]);
     if (stored.stiffness == StiffnessBasis::per_length)
-        return joint_pair_law(pair, b, stored, contact.rounding_m, contact.sub_contacts, sub, dt_s, out);
+        return joint_pair_law(pair, b, stored, contact.rounding_m, contact.sub_contacts, sub, dt_s, mass_sharing_points, out);
     const ContactParameters params = softened(stored, pair.stiffness_scale);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
-    const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / pair.count);
+    const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / mass_sharing_points);
     const Vec2 n = pair.normal;
     const Vec2 t = perp(n);
     double deepest_m = 0.0;
@@ -231,10 +235,28 @@ void prepare_pair_forces(World& w) {
         index_pairs_by_body(w);
 }
 
-ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened) {
+void count_body_pair_points(World& w) {
+    const std::size_t pairs = w.contacts.size();
+    w.body_pair_points.resize(pairs);
+    if (w.points_by_body.size() != w.bodies.size()) w.points_by_body.assign(w.bodies.size(), 0);
+    // The table is sorted by part a, and a body's parts have consecutive ids, so each body's
+    // entries as body a are one run. Per run: sum the points per body b, read the sums back,
+    // clear them. One linear pass (a pairwise search within a run read the table entries again
+    // and again: a third slower step on the keyed wall).
+    for (std::size_t first = 0; first < pairs;) {
+        std::size_t last = first;
+        while (last < pairs && w.contacts[last].a == w.contacts[first].a) ++last;
+        for (std::size_t p = first; p < last; ++p) w.points_by_body[w.contacts[p].b] += w.contacts[p].count;
+        for (std::size_t p = first; p < last; ++p) w.body_pair_points[p] = w.points_by_body[w.contacts[p].b];
+        for (std::size_t p = first; p < last; ++p) w.points_by_body[w.contacts[p].b] = 0;
+        first = last;
+    }
+}
+
+ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points, const OpenedPoints& opened) {
     PairContact& pair = w.contacts[p];
     SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
-    ContactEnergy energy = pair_law(pair, w.bodies, w.contact, sub, w.dt_s, w.pair_forces[p]);
+    ContactEnergy energy = pair_law(pair, w.bodies, w.contact, sub, w.dt_s, mass_sharing_points, w.pair_forces[p]);
     // Interior points exist only while the pair has its two ends (contact/sub_contacts.hpp).
     if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
         energy += dropped_sub_points_work(w.bodies, pair, sub->normal, drop_sub_points(*sub), w.dt_s);

@@ -13,6 +13,9 @@
 // one corner has M = m at that point, but the corner moves with the smaller effective mass
 // m_eff = 1 / (1/m + r_perp^2 / I), so its local damping ratio is h sqrt(m / m_eff) and a
 // one-corner impact rebounds less than e (docs/physics.md, tests/validation/test_restitution).
+// A concave body touches another through several part pairs at once (a Pi-shaped block on both
+// legs): the share is then over all the points of the body pair, counted before the law
+// (count_body_pair_points), or the body would get about sqrt(part pairs) times the damping ratio.
 #include <cstdint>
 
 #include "world/world.hpp"
@@ -51,9 +54,17 @@ void prepare_pair_forces(World& w);
 
 /// The law at every point of pair p: updates the points' forces and history and writes the
 /// pair's force slot. Touches nothing but pair p's entry and slot, so pairs may run in
-/// parallel. Returns the pair's energy terms, with the last share of the dashpots' work of the
-/// points that opened this step (the narrow phase's OpenedPoints; see the .cpp).
-ContactEnergy apply_pair_law(World& w, std::size_t p, const OpenedPoints& opened = OpenedPoints());
+/// parallel. mass_sharing_points: the active points of p's body pair, which share its reduced
+/// mass (p's own count while every body is convex; else count_body_pair_points). Returns the
+/// pair's energy terms, with the last share of the dashpots' work of the points that opened this
+/// step (the narrow phase's OpenedPoints; see the .cpp).
+ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
+                             const OpenedPoints& opened = OpenedPoints());
+
+/// Sets World::body_pair_points: for every table entry, the active points of its body pair this
+/// step, summed over the body pair's part pairs (after the narrow phase, before the law). One
+/// serial pass over the table (integer sums: the same at any thread count).
+void count_body_pair_points(World& w);
 
 /// Sets body i's force and torque: gravity plus its pairs' slots, in table order. Touches only
 /// body i.

@@ -45,10 +45,12 @@ void add_direction(StabilityRows& rows, const Bodies& b, const StiffnessPoint& p
 }
 
 // The point's stiffness and damping as the law applies them (contact_forces.cpp): the pair's
-// reduced mass shared among its points; a per-length joint's point with its tributary length
-// (the pair's two points, first and second, or its one).
+// reduced mass shared among its body pair's points (mass_sharing_points: over all the body
+// pair's part pairs); a per-length joint's point with its tributary length (the pair's two
+// points, first and second, or its one).
 StiffnessPoint stiffness_point(const World& w, std::uint32_t a, std::uint32_t b, Vec2 point, Vec2 normal,
-                               std::uint32_t points_in_pair, double stiffness_scale, Vec2 first_m, Vec2 second_m) {
+                               std::uint32_t points_in_pair, std::uint32_t mass_sharing_points, double stiffness_scale,
+                               Vec2 first_m, Vec2 second_m) {
     const Bodies& bodies = w.bodies;
     ContactParameters params = w.contact.at(bodies.material[a], bodies.material[b]);
     if (params.stiffness == StiffnessBasis::per_length) {
@@ -62,7 +64,7 @@ StiffnessPoint stiffness_point(const World& w, std::uint32_t a, std::uint32_t b,
     params.kn_N_m *= stiffness_scale;
     params.ks_N_m *= stiffness_scale;
     const double reduced_mass = 1.0 / (bodies.inv_mass_1_kg[a] + bodies.inv_mass_1_kg[b]);
-    const DashpotCoefficients c = dashpot_coefficients(params, reduced_mass / points_in_pair);
+    const DashpotCoefficients c = dashpot_coefficients(params, reduced_mass / mass_sharing_points);
     return {a, b, point, normal, params.kn_N_m, params.ks_N_m, c.cn_N_s_m, c.cs_N_s_m};
 }
 
@@ -129,10 +131,15 @@ CriticalTimeStep StabilityRows::limit(const Bodies& bodies) const {
 
 CriticalTimeStep live_time_step(const World& w, StabilityRows& rows) {
     rows.reset(w.bodies.size());
-    for (const PairContact& pair : w.contacts)
+    // (Worlds with concave bodies count each body pair's points in the step: world/step.cpp.)
+    const bool concave = w.body_pair_points.size() == w.contacts.size() && w.bodies.part_total() != w.bodies.size();
+    for (std::size_t p = 0; p < w.contacts.size(); ++p) {
+        const PairContact& pair = w.contacts[p];
+        const std::uint32_t sharing = concave ? w.body_pair_points[p] : pair.count;
         for (std::uint32_t k = 0; k < pair.count; ++k)
-            rows.add(w.bodies, stiffness_point(w, pair.a, pair.b, pair.points[k].point_m, pair.normal, pair.count,
+            rows.add(w.bodies, stiffness_point(w, pair.a, pair.b, pair.points[k].point_m, pair.normal, pair.count, sharing,
                                                pair.stiffness_scale, pair.points[0].point_m, pair.points[1].point_m));
+    }
     return rows.limit(w.bodies);
 }
 
@@ -145,6 +152,11 @@ std::vector<StiffnessPoint> start_stiffness_points(const World& w) {
     // every pair that touches within that shows the contact it will have.
     constexpr double growth = 1e-6;
     std::vector<Vec2> grown;
+    struct TouchingPair {
+        std::uint32_t a, b;
+        ContactManifold manifold;
+    };
+    std::vector<TouchingPair> touching;
     for (const PairContact& pair : w.contacts) {
         // (The pair's polygons are parts of the two bodies, world/world.hpp.)
         const std::uint32_t first = b.part_vertex_begin[pair.part_a];
@@ -158,10 +170,22 @@ std::vector<StiffnessPoint> start_stiffness_points(const World& w) {
         ContactManifold manifold;
         if (!collide_polygons(a, other, no_reference, manifold)) continue;
         touches[pair.a] = touches[pair.b] = 1;
-        for (std::uint32_t k = 0; k < manifold.count; ++k)
-            points.push_back(
-                stiffness_point(w, pair.a, pair.b, manifold.points[k].point_m, manifold.normal, manifold.count, 1.0,
-                                manifold.points[0].point_m, manifold.points[1].point_m));
+        touching.push_back({pair.a, pair.b, manifold});
+    }
+    // The dashpots share the body pair's reduced mass among all its part pairs' points, as the
+    // law does (contact/contact_forces.hpp). The table is sorted by part a, so a body a's pairs
+    // are one run: the body pair's points are summed within it.
+    std::size_t run = 0;
+    for (std::size_t i = 0; i < touching.size(); ++i) {
+        const TouchingPair& t = touching[i];
+        if (touching[run].a != t.a) run = i;
+        std::uint32_t sharing = 0;
+        for (std::size_t j = run; j < touching.size() && touching[j].a == t.a; ++j)
+            if (touching[j].b == t.b) sharing += touching[j].manifold.count;
+        for (std::uint32_t k = 0; k < t.manifold.count; ++k)
+            points.push_back(stiffness_point(w, t.a, t.b, t.manifold.points[k].point_m, t.manifold.normal,
+                                             t.manifold.count, sharing, 1.0, t.manifold.points[0].point_m,
+                                             t.manifold.points[1].point_m));
     }
     for (std::uint32_t i = 0; i < b.size(); ++i)
         if (b.kind[i] == BodyKind::dynamic && !touches[i]) add_landing(w, i, points);

@@ -141,10 +141,25 @@ void update_contacts_and_forces(World& w) {
     // Pair by pair, the narrow phase and then the law: a pair's data is read once per step
     // (the table is larger than the caches from about 1e5 blocks). Each pair writes only its
     // own entry and slot, and the ledger is summed in fixed chunks (parallel.hpp, rules 1, 3).
-    const ContactEnergy contacts = deterministic_sum(static_cast<std::ptrdiff_t>(w.contacts.size()), [&](std::ptrdiff_t p) {
-        const OpenedPoints opened = update_pair_contact(w, static_cast<std::size_t>(p));
-        return apply_pair_law(w, static_cast<std::size_t>(p), opened);
-    });
+    const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
+    ContactEnergy contacts;
+    if (w.bodies.part_total() == w.bodies.size()) {
+        // Every body convex: a pair's own points are its body pair's, known once its narrow
+        // phase is done.
+        contacts = deterministic_sum(pairs, [&](std::ptrdiff_t p) {
+            const OpenedPoints opened = update_pair_contact(w, static_cast<std::size_t>(p));
+            return apply_pair_law(w, static_cast<std::size_t>(p), w.contacts[p].count, opened);
+        });
+    } else {
+        // Concave bodies: the law needs the points of all the body pair's part pairs, so the
+        // narrow phase runs over the whole table first, then the points are counted.
+        w.opened_scratch.resize(w.contacts.size());
+        parallel_for(pairs, [&](std::ptrdiff_t p) { w.opened_scratch[p] = update_pair_contact(w, static_cast<std::size_t>(p)); });
+        count_body_pair_points(w);
+        contacts = deterministic_sum(pairs, [&](std::ptrdiff_t p) {
+            return apply_pair_law(w, static_cast<std::size_t>(p), w.body_pair_points[p], w.opened_scratch[p]);
+        });
+    }
     w.energy.normal_dashpot_j += contacts.normal_dashpot_j;
     w.energy.shear_dashpot_j += contacts.shear_dashpot_j;
     w.energy.friction_j += contacts.friction_j;

@@ -168,6 +168,12 @@ struct World {
     std::vector<std::uint32_t> body_pair_start;
     std::vector<std::uint32_t> body_pair_entries;
     std::vector<std::uint32_t> contacts_fill;   ///< scratch of the indexing
+    /// Per table entry, in worlds with concave bodies: the active points of its body pair this
+    /// step, over all the body pair's part pairs (the dashpots share the reduced mass among them:
+    /// contact/contact_forces.hpp). Convex worlds leave it empty: a part pair is a body pair.
+    std::vector<std::uint32_t> body_pair_points;
+    std::vector<std::uint32_t> points_by_body;  ///< scratch of the counting, zero between uses
+    std::vector<OpenedPoints> opened_scratch;   ///< per table entry: the narrow phase's opened points (concave worlds)
     std::vector<std::uint32_t> driven_bodies;   ///< ids of driven bodies (the table work sums over them)
     std::int64_t broad_phase_rebuilds = 0;
 

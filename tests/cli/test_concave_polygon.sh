@@ -124,5 +124,43 @@ fi
 grep -q "table,pi\|pi,table" "$tmp/full/interfaces.csv" 2>/dev/null || head -2 "$tmp/full/interfaces.csv" | grep -q "pi" ||
   fail "interfaces.csv does not follow the Pi block: $(head -2 "$tmp/full/interfaces.csv")"
 
+# check: one line per body pair however the table orders its part pairs. The Pi block (listed
+# first) meets the table with its two legs and the lintel with its parts' tops, so its table
+# entries alternate table, lintel, table, lintel; the pi / table line counts both legs' 4 points,
+# each with the dashpot of M / 4 (C_n = 2 h sqrt(M kn / 4), h = 0.358 for e = 0.3 and M = 200 kg).
+cat > "$tmp/pi_lintel.toml" <<'TOML'
+[simulation]
+duration = 0.05
+output_interval = 0.01
+[contact]
+kn = 1.0e8
+ks = 1.0e8
+mu = 0.6
+e = 0.3
+[[bodies]]
+name = "pi"
+shape = "polygon"
+vertices = [[0.0, 0.0], [0.1, 0.0], [0.1, 0.2], [0.3, 0.2], [0.3, 0.0], [0.4, 0.0], [0.4, 0.3], [0.0, 0.3]]
+density = 2500.0
+[[bodies]]
+name = "table"
+kind = "fixed"
+shape = "rectangle"
+width = 2.0
+height = 0.2
+center = [0.2, -0.1]
+[[bodies]]
+name = "lintel"
+shape = "rectangle"
+width = 0.4
+height = 0.1
+center = [0.2, 0.35]
+density = 2500.0
+TOML
+out=$("$bin" check "$tmp/pi_lintel.toml" 2>&1) || fail "check of the Pi block under a lintel: $out"
+expect_in "$out" "pi / table: 4 points, M = 200 kg; C_n = 5.061e+04"
+[ "$(grep -c 'pi / table' <<<"$out")" -eq 1 ] || fail "one line for the Pi block on the table: $out"
+[ "$(grep -c 'pi / lintel' <<<"$out")" -eq 1 ] || fail "one line for the Pi block under the lintel: $out"
+
 [ $failures -eq 0 ] && echo "concave polygons: all checks passed"
 [ $failures -eq 0 ]
