@@ -2,7 +2,7 @@
 # Bonded joints through a restart (docs/physics.md, "Mohr-Coulomb joints and bonds"): a bonded
 # wall on a driven course, shaken until some bonds break, run straight to T and stopped at T/2
 # then restarted from its state file: history.csv, energy.csv, summary.json and interfaces.csv
-# are byte-identical (the state file keeps every point's bond). The run breaks some bonds and
+# are byte-identical (the state file keeps every point's bond); the same with rounded corners. The run breaks some bonds and
 # reports them (interfaces.csv, summary.json), books their energy, and draws them (VTK field
 # "bond").
 # Usage: test_restart_bonds.sh BLOCKDEM SOURCE_DIR
@@ -14,12 +14,18 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 export OMP_WAIT_POLICY=passive
 py=/usr/bin/python3
 
-cat > "$tmp/wall.toml" <<TOML
+# One bonded wall, sharp or with rounded corners (docs/physics.md, "Rounded corners"): the
+# extra [contact] line is the only difference.
+check_wall() {
+  local name=$1 extra=$2 dir="$tmp/$1"
+  mkdir -p "$dir"
+  cat > "$dir/wall.toml" <<TOML
 [simulation]
 duration = 0.3
 output_interval = 0.005
 [contact]
 stiffness = "per_length"
+$extra
 kn = 1.0e10
 ks = 4.0e9
 mu = 0.6
@@ -49,17 +55,17 @@ unit = "g"
 period = 0.2
 TOML
 
-"$bin" run "$tmp/wall.toml" --out "$tmp/full" -q --threads 1 --save-state 0.15 > /dev/null 2> "$tmp/full.log" \
-  || fail "full run: $(tail -2 "$tmp/full.log")"
-state=$(ls "$tmp/full/state/"t_*.h5 2>/dev/null | head -1)
-[ -n "$state" ] || fail "no state file in $tmp/full/state"
-"$bin" run --restart "$state" --out "$tmp/restarted" -q --threads 2 > /dev/null 2> "$tmp/restarted.log" \
-  || fail "restart: $(tail -2 "$tmp/restarted.log")"
-for f in history.csv energy.csv summary.json interfaces.csv; do
-  cmp -s "$tmp/full/$f" "$tmp/restarted/$f" || fail "$f differs between the straight run and the restarted one"
-done
+  "$bin" run "$dir/wall.toml" --out "$dir/full" -q --threads 1 --save-state 0.15 > /dev/null 2> "$dir/full.log" \
+    || fail "$name full run: $(tail -2 "$dir/full.log")"
+  state=$(ls "$dir/full/state/"t_*.h5 2>/dev/null | head -1)
+[ -n "$state" ] || fail "$name: no state file in $dir/full/state"
+  "$bin" run --restart "$state" --out "$dir/restarted" -q --threads 2 > /dev/null 2> "$dir/restarted.log" \
+    || fail "$name restart: $(tail -2 "$dir/restarted.log")"
+  for f in history.csv energy.csv summary.json interfaces.csv; do
+    cmp -s "$dir/full/$f" "$dir/restarted/$f" || fail "$name: $f differs between the straight run and the restarted one"
+  done
 
-$py - "$tmp/full" <<'PY' || fail "the bonds are not reported"
+  $py - "$dir/full" "$name" <<'PY' || fail "$name: the bonds are not reported"
 import csv, json, sys, pathlib
 d = pathlib.Path(sys.argv[1])
 rows = [r for r in csv.DictReader(l for l in open(d / "interfaces.csv") if not l.startswith("#"))]
@@ -71,15 +77,19 @@ assert broken, "the shaking broke no bond"
 assert s["energy_j"]["bond_breakage_dissipated"] > 0.0, s["energy_j"]
 vtp = sorted((d / "vtk").glob("contacts_*.vtp"))
 assert vtp and 'Name="bond"' in vtp[-1].read_text(), "no bond field in the contacts' VTK"
-print(f"bonded points at t = 0: {sum(int(r['bonded_points']) for r in first)}; interfaces with a broken bond: {len(broken)}")
+print(f"{sys.argv[2]}: bonded points at t = 0: {sum(int(r['bonded_points']) for r in first)}; interfaces with a broken bond: {len(broken)}")
 PY
+}
+
+check_wall sharp ""
+check_wall rounded "rounding = 0.005"
 
 # check prints the joint per unit length and the per-point stiffness of the start contacts:
 # A running-bond bed joint overlaps half a 0.4 m brick; each of its two points carries half of
 # that: JKN 1e10 Pa/m x 0.1 m x 1 m = 1e9 N/m.
-out=$("$bin" check "$tmp/wall.toml" 2>&1)
+out=$("$bin" check "$tmp/sharp/wall.toml" 2>&1)
 grep -q "per unit length of joint: kn = 1e+10 Pa/m, ks = 4e+09 Pa/m" <<< "$out" || fail "check: no per-length kn, ks: $out"
 grep -q "per-length joint: kn = 1e+09, ks = 4e+08 N/m per point" <<< "$out" || fail "check: no per-point stiffness of the start contacts"
 
-[ $failures -eq 0 ] && echo "bonded wall: restarted at T/2 gives identical files; bonds reported"
+[ $failures -eq 0 ] && echo "bonded wall, sharp and rounded: restarted at T/2 gives identical files; bonds reported"
 exit $((failures > 0))
