@@ -1,4 +1,5 @@
 #include "geometry/polygon_contact.hpp"
+#include "geometry/edge_clipping.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +9,11 @@
 namespace blockdem {
 namespace {
 
-// The corner after i (a branch, not the integer division of %: this runs for every contact).
-std::uint32_t next_corner(std::uint32_t i, std::uint32_t count) { return i + 1 == count ? 0 : i + 1; }
+using edge_clipping::ClipPoint;
+using edge_clipping::clip_segment;
+using edge_clipping::incident_edge;
+using edge_clipping::IncidentEdge;
+using edge_clipping::next_corner;
 
 struct Axis {
     double separation_m = -std::numeric_limits<double>::infinity();  ///< [m] < 0 when penetrating
@@ -43,51 +47,6 @@ Axis best_axis(const PolygonView& poly, const PolygonView& other, double gap_m) 
         if (s >= gap_m) break;
     }
     return best;
-}
-
-// The edge of incident whose outward normal points most against the reference normal, and by
-// how much it beats the runner-up (difference of the two dot products; 0 for a tie).
-struct IncidentEdge {
-    std::uint32_t edge = 0;
-    double margin = 0.0;  ///< [-]
-};
-
-IncidentEdge incident_edge(const PolygonView& incident, Vec2 reference_normal) {
-    IncidentEdge best;
-    double most_against = std::numeric_limits<double>::infinity();
-    double runner_up = std::numeric_limits<double>::infinity();
-    for (std::uint32_t i = 0; i < incident.count; ++i) {
-        const double d = dot(incident.normals[i], reference_normal);
-        if (d < most_against) {
-            runner_up = most_against;
-            most_against = d;
-            best.edge = i;
-        } else {
-            runner_up = std::min(runner_up, d);
-        }
-    }
-    best.margin = runner_up - most_against;
-    return best;
-}
-
-struct ClipPoint {
-    Vec2 p;
-    std::uint32_t feature;
-};
-
-// Keeps the part of segment (in[0], in[1]) where dot(direction, x) <= offset. A point made by
-// the cut takes the feature id "cut", the corner of the reference edge that the plane passes.
-[[gnu::always_inline]] inline int clip_segment(const ClipPoint in[2], ClipPoint out[2], Vec2 direction, double offset, std::uint32_t cut) {
-    int n = 0;
-    const double d0 = dot(direction, in[0].p) - offset;
-    const double d1 = dot(direction, in[1].p) - offset;
-    if (d0 <= 0.0) out[n++] = in[0];
-    if (d1 <= 0.0) out[n++] = in[1];
-    if (d0 * d1 < 0.0) {
-        const double f = d0 / (d0 - d1);
-        out[n++] = {in[0].p + f * (in[1].p - in[0].p), cut};
-    }
-    return n;
 }
 
 // How much more a reference edge may penetrate than the best edge and still be kept [m].
