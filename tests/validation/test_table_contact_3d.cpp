@@ -15,62 +15,14 @@
 #include "dynamics/rigid_rotation_3d.hpp"
 #include "laws/restitution.hpp"
 #include "motion/table_motion.hpp"
-#include "world/energy_ledger.hpp"
+#include "support/table_run_3d.hpp"
 
 namespace blockdem {
 namespace {
 
 constexpr double g = 9.81;
 
-// A box on a table shaken along the horizontal unit vector `direction` by `horizontal` (and
-// along y by `along_y`); advanced by the step of the 2-D engine (world/step.cpp), written out.
-struct BoxOnTable {
-    RigidBody3d body;
-    std::vector<VertexContact3d> vertices;
-    ContactParameters contact;
-    ComponentMotion horizontal = RestMotion{};
-    Vec3 direction{1.0, 0.0, 0.0};
-    ComponentMotion along_y = RestMotion{};  ///< a second horizontal component, along y
-    double gravity_m_s2 = g;
-    double dt_s = 1e-4;
-    double time_s = 0.0;
-    int steps = 0;
-    EnergyLedger ledger;
-    TableContactResult3d last;
-
-    Vec3 table_displacement(double t_s) const {
-        return sample(horizontal, t_s).displacement_m * direction + Vec3{0.0, sample(along_y, t_s).displacement_m, 0.0};
-    }
-
-    void step() {
-        const double dt = dt_s;
-        const TablePlane3d table{0.0, table_displacement(time_s),
-                                 (1.0 / dt) * (table_displacement(time_s) - table_displacement(time_s - dt))};
-        last = table_contact_3d(body, table, contact, dt, vertices);
-        body.force_n = last.force_n + Vec3{0.0, 0.0, -gravity_m_s2 * body.mass_kg};
-        body.torque_n_m = last.torque_n_m;
-        update_velocity_3d(body, dt, steps == 0);
-        // The ledger at t, as the 2-D step fills it.
-        ledger.kinetic_j = kinetic_energy(body);
-        ledger.gravitational_j = body.mass_kg * gravity_m_s2 * body.position_m.z;
-        ledger.elastic_j = last.elastic_j;
-        ledger.normal_dashpot_j += last.normal_dashpot_work_j;
-        ledger.shear_dashpot_j += last.shear_dashpot_work_j;
-        ledger.friction_j += last.friction_work_j;
-        // The table's work pairs the contact force at t with the centred displacement, as the
-        // scheme's energy identity does (dynamics/central_difference.cpp).
-        ledger.table_work_j +=
-            dot(last.force_n, 0.5 * (table_displacement(time_s + dt) - table_displacement(time_s - dt)));
-        if (steps == 0) {
-            ledger.initial_j = ledger.stored_j();
-            ledger.initial_gravitational_j = ledger.gravitational_j;
-        }
-        ledger.peak_scale_j = std::max(ledger.peak_scale_j, ledger.current_scale_j());
-        update_position_3d(body, dt);
-        time_s += dt;
-        ++steps;
-    }
-};
+using BoxOnTable = testing::TableRun3d;
 
 // A 0.5 x 0.2 x 0.2 m box of mass_kg, its base at height base_z_m, turned by yaw_rad about the vertical.
 BoxOnTable box_on_table(double mass_kg, double base_z_m, double yaw_rad, const ContactParameters& contact) {
