@@ -12,7 +12,7 @@
 namespace blockdem::testing {
 
 // A body on a table shaken along the horizontal unit vector `direction` by `horizontal` (and
-// along y by `along_y`); advanced by the step of the 2-D engine (world/step.cpp), written out,
+// along y by `along_y`, along z by `vertical`); advanced by the step of the 2-D engine (world/step.cpp), written out,
 // with the energy ledger filled as that step fills it.
 struct TableRun3d {
     RigidBody3d body;
@@ -21,6 +21,7 @@ struct TableRun3d {
     ComponentMotion horizontal = RestMotion{};
     Vec3 direction{1.0, 0.0, 0.0};
     ComponentMotion along_y = RestMotion{};  ///< a second horizontal component, along y
+    ComponentMotion vertical = RestMotion{};  ///< the vertical component, along z
     double gravity_m_s2 = 9.81;
     double dt_s = 1e-4;
     double time_s = 0.0;
@@ -29,7 +30,8 @@ struct TableRun3d {
     TableContactResult3d last;
 
     Vec3 table_displacement(double t_s) const {
-        return sample(horizontal, t_s).displacement_m * direction + Vec3{0.0, sample(along_y, t_s).displacement_m, 0.0};
+        return sample(horizontal, t_s).displacement_m * direction +
+               Vec3{0.0, sample(along_y, t_s).displacement_m, sample(vertical, t_s).displacement_m};
     }
 
     void step() {

@@ -153,6 +153,32 @@ TEST(TableContact3d, SlidingMatchesNewmarkRigidPlasticInAnyAzimuth) {
     }
 }
 
+TEST(TableContact3d, VerticalTableMotionChangesTheFrictionCapacity) {
+    // The 2-D test (tests/validation/test_sliding.cpp) with the table's third component: the table
+    // also accelerates downwards at 0.3 g (after a smooth 0.3 s start), the normal force drops to
+    // m (g - 0.3 g), and shaking at 0.8 mu g, which could not move the box before, makes it slide
+    // with |a| = mu (g - 0.3 g) on the plateaus of sliding. Tolerance 1%, the 2-D one.
+    const ContactParameters contact{.kn_N_m = 1e4, .ks_N_m = 1e4, .mu = 0.3, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
+    BoxOnTable s = box_on_table(1.0, 0.0, 0.0, contact);
+    s.horizontal = SineMotion{0.8 * 0.3 * g, 1.0, std::numbers::pi / 2.0, 0.0, 0.0};
+    s.vertical = make_acceleration_series({0.0, 0.3, 2.0}, {0.0, -0.3 * g, -0.3 * g});
+    const double capacity = 0.3 * 0.7 * g;
+    std::size_t count = 0, run_length = 0;
+    double worst = 0.0;
+    while (s.time_s < 2.0) {
+        s.step();
+        run_length = s.last.sliding_points == 4 ? run_length + 1 : 0;
+        if (s.time_s < 0.5 || run_length < 200) continue;  // 20 ms into a plateau, after the start
+        ++count;
+        worst = std::max(worst, std::abs(std::abs(s.body.force_n.x / s.body.mass_kg) - capacity) / capacity);
+    }
+    EXPECT_GT(count, 1000u);
+    EXPECT_LT(worst, 0.01);
+    EXPECT_LT(s.ledger.balance_error(), 1e-4);
+    std::printf("3-D, vertical -0.3 g: sliding plateau %zu samples, largest deviation from mu (g + a_v) %.4f, ledger %.1e\n",
+                count, worst, s.ledger.balance_error());
+}
+
 // The rigid-plastic block on a table shaken in two horizontal directions, integrated on its own:
 // the relative velocity u' of block over table obeys u'' = -a_table - mu g u'/|u'| while it slides;
 // it sticks (u' = 0) while |a_table| <= mu g. Each step takes the table's kick first; if friction
