@@ -28,7 +28,10 @@ TableContactResult3d table_contact_3d(const RigidBody3d& b, const TablePlane3d& 
             v = {};
             continue;
         }
-        if (!v.active) v = {.active = true};
+        if (!v.active) {  // a new point: no history
+            v = {};
+            v.active = true;
+        }
         const Vec3 relative = b.velocity_m_s + cross(omega_world, arm) - table.velocity_m_s;
         const double normal_speed = dot(relative, normal);
         const Vec3 tangential = relative - normal_speed * normal;

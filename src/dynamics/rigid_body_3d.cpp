@@ -8,15 +8,22 @@
 
 namespace blockdem {
 
-RigidBody3d make_rigid_body_3d(const std::string& name, const std::vector<Vec3>& vertices_m, double density_kg_m3) {
+namespace {
+
+// The hull from make_hull, its failure reported as the body's.
+template <class MakeHull>
+Polyhedron checked_hull(const std::string& name, double density_kg_m3, MakeHull make_hull) {
     if (!(density_kg_m3 > 0.0))
         throw ModelError(fmt::format("body '{}': density must be positive, got {:g} kg/m^3", name, density_kg_m3));
-    Polyhedron hull;
     try {
-        hull = convex_polyhedron(vertices_m);
+        return make_hull();
     } catch (const std::invalid_argument& e) {
         throw ModelError(fmt::format("body '{}': {}", name, e.what()));
     }
+}
+
+// The body of a checked hull: its centroid and principal axes become the body frame.
+RigidBody3d body_of(const std::string& name, const Polyhedron& hull, double density_kg_m3) {
     const PolyhedronProperties props = polyhedron_properties(hull);
     const PrincipalAxes axes = principal_axes(props.inertia_m5);
     RigidBody3d b;
@@ -31,6 +38,18 @@ RigidBody3d make_rigid_body_3d(const std::string& name, const std::vector<Vec3>&
     for (Vec3& v : b.shape.vertices_m) v = rotate_inverse(axes.orientation, v - props.centroid_m);
     for (Vec3& n : b.shape.face_normals) n = rotate_inverse(axes.orientation, n);
     return b;
+}
+
+}  // namespace
+
+RigidBody3d make_rigid_body_3d(const std::string& name, const std::vector<Vec3>& vertices_m, double density_kg_m3) {
+    return body_of(name, checked_hull(name, density_kg_m3, [&] { return convex_polyhedron(vertices_m); }), density_kg_m3);
+}
+
+RigidBody3d make_rigid_body_3d(const std::string& name, const std::vector<Vec3>& vertices_m,
+                               const std::vector<std::vector<std::size_t>>& faces, double density_kg_m3) {
+    return body_of(name, checked_hull(name, density_kg_m3, [&] { return convex_polyhedron(vertices_m, faces); }),
+                   density_kg_m3);
 }
 
 Vec3 angular_momentum_of(const RigidBody3d& b, Vec3 angular_velocity_world_rad_s) {

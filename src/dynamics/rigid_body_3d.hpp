@@ -7,6 +7,7 @@
 // frame. Rotation is carried as the world-frame angular momentum at half steps, the rotational
 // counterpart of the velocity at half steps of the 2-D scheme (dynamics/central_difference.hpp):
 // a torque changes it, nothing else does, so a torque-free body keeps it to round-off.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,12 @@ struct RigidBody3d {
 /// not a convex polyhedron (geometry/polyhedron.hpp says which vertex and why) or the density is
 /// not positive.
 RigidBody3d make_rigid_body_3d(const std::string& name, const std::vector<Vec3>& vertices_m, double density_kg_m3);
+
+/// The same with the faces as listed (vertex indices counter-clockwise seen from outside), each
+/// checked against the hull: an inverted, misordered, extra or missing face is refused with the
+/// body and the face named.
+RigidBody3d make_rigid_body_3d(const std::string& name, const std::vector<Vec3>& vertices_m,
+                               const std::vector<std::vector<std::size_t>>& faces, double density_kg_m3);
 
 /// The world-frame vertex i of the body now [m].
 inline Vec3 world_vertex(const RigidBody3d& b, std::size_t i) {

@@ -215,6 +215,16 @@ TEST(Polyhedron3d, BodyErrorsNameTheBody) {
         EXPECT_NE(std::string(e.what()).find("body 'drum_2': vertex 8"), std::string::npos) << e.what();
     }
     EXPECT_THROW(make_rigid_body_3d("b", box_vertices({1, 1, 1}, {}), 0.0), ModelError);
+    // Listed faces: an inverted one is named with the body.
+    const std::vector<Vec3> cube = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    const std::vector<std::vector<std::size_t>> faces = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 5, 1},
+                                                         {2, 3, 7, 6}, {1, 2, 6, 5}, {0, 4, 7, 3}};
+    try {
+        make_rigid_body_3d("slab", cube, faces, 2500.0);
+        FAIL() << "an inverted face was accepted";
+    } catch (const ModelError& e) {
+        EXPECT_NE(std::string(e.what()).find("body 'slab': face 2 is inverted"), std::string::npos) << e.what();
+    }
 }
 
 TEST(Polyhedron3d, BodyFrameIsPrincipal) {
