@@ -36,7 +36,8 @@ TableContactResult3d table_contact_3d(const RigidBody3d& b, const TablePlane3d& 
         const double normal_speed = dot(relative, normal);
         const Vec3 tangential = relative - normal_speed * normal;
         // The normal half of the 2-D law, as it is (no tangential speed: the shear is done below).
-        const ContactForce f = linear_spring_dashpot(p, c, {overlap_m, normal_speed, 0.0}, {0.0, v.normal_dashpot_n, 0.0}, dt_s);
+        const ContactForce f =
+            linear_spring_dashpot(p, c, {overlap_m, normal_speed, 0.0}, {0.0, v.normal_dashpot_n, 0.0}, dt_s);
         const ShearForce3d s = coulomb_slider_3d(p.ks_N_m, c.cs_N_s_m, p.mu * std::max(0.0, f.normal_n), tangential,
                                                  carry_to_normal(v.shear, normal), dt_s);
         v.normal_dashpot_n = f.normal_dashpot_n;
@@ -46,8 +47,9 @@ TableContactResult3d table_contact_3d(const RigidBody3d& b, const TablePlane3d& 
         r.force_n += force;
         r.torque_n_m += cross(arm, force);
         r.sliding_points += s.sliding ? 1 : 0;
-        r.elastic_j += p.ks_N_m > 0.0 ? 0.5 * p.kn_N_m * overlap_m * overlap_m + 0.5 * dot(s.spring_n, s.spring_n) / p.ks_N_m
-                                      : 0.5 * p.kn_N_m * overlap_m * overlap_m;
+        r.elastic_j += p.ks_N_m > 0.0
+                           ? 0.5 * p.kn_N_m * overlap_m * overlap_m + 0.5 * dot(s.spring_n, s.spring_n) / p.ks_N_m
+                           : 0.5 * p.kn_N_m * overlap_m * overlap_m;
         r.normal_dashpot_work_j += f.normal_dashpot_work_j;
         r.shear_dashpot_work_j += s.shear_dashpot_work_j;
         r.friction_work_j += s.friction_work_j;

@@ -39,11 +39,14 @@ double size_of(const std::vector<Vec3>& v) {
 // The corners of a face's points, counter-clockwise about the outward normal n: the 2-D hull
 // (Andrew's monotone chain) in a basis (u, v) of the face's plane with u x v = n. Points on the
 // polygon's edges are not corners (strict turns only).
-std::vector<std::size_t> face_corners(const std::vector<Vec3>& vertices, const std::vector<std::size_t>& on_plane, Vec3 n,
-                                      double area_tolerance_m2) {
+std::vector<std::size_t> face_corners(const std::vector<Vec3>& vertices, const std::vector<std::size_t>& on_plane,
+                                      Vec3 n, double area_tolerance_m2) {
     const Vec3 u = normalized(vertices[on_plane[1]] - vertices[on_plane[0]]);
     const Vec3 v = cross(n, u);
-    struct Planar { Vec2 p; std::size_t index; };
+    struct Planar {
+        Vec2 p;
+        std::size_t index;
+    };
     std::vector<Planar> points;
     for (std::size_t i : on_plane) {
         const Vec3 d = vertices[i] - vertices[on_plane[0]];
@@ -87,7 +90,8 @@ Polyhedron convex_polyhedron(const std::vector<Vec3>& vertices) {
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = i + 1; j < n; ++j)
             if (length(vertices[i] - vertices[j]) <= tolerance_m)
-                throw std::invalid_argument(fmt::format("vertices {} and {} coincide at {}", i, j, point_text(vertices[i])));
+                throw std::invalid_argument(
+                    fmt::format("vertices {} and {} coincide at {}", i, j, point_text(vertices[i])));
 
     Polyhedron hull;
     hull.vertices_m = vertices;
@@ -109,7 +113,8 @@ Polyhedron convex_polyhedron(const std::vector<Vec3>& vertices) {
                     any_below = any_below || d < -tolerance_m;
                 }
                 if (any_above && any_below) continue;  // cuts through: not a supporting plane
-                if (!any_above && !any_below) throw std::invalid_argument("all vertices lie in one plane: the polyhedron has no volume");
+                if (!any_above && !any_below)
+                    throw std::invalid_argument("all vertices lie in one plane: the polyhedron has no volume");
                 if (any_above) normal = -normal;  // outward: every vertex below
                 on_plane.clear();
                 for (std::size_t m = 0; m < n; ++m)
@@ -127,12 +132,13 @@ Polyhedron convex_polyhedron(const std::vector<Vec3>& vertices) {
     for (std::size_t m = 0; m < n; ++m)
         if (!on_surface[m])
             throw std::invalid_argument(fmt::format(
-                "vertex {} {} lies inside the hull of the others: the vertices are not those of a convex polyhedron",
-                m, point_text(vertices[m])));
+                "vertex {} {} lies inside the hull of the others: the vertices are not those of a convex polyhedron", m,
+                point_text(vertices[m])));
     for (std::size_t m = 0; m < n; ++m)
         if (!is_corner[m])
-            throw std::invalid_argument(fmt::format(
-                "vertex {} {} lies on an edge or inside a face of the hull, not at a corner", m, point_text(vertices[m])));
+            throw std::invalid_argument(
+                fmt::format("vertex {} {} lies on an edge or inside a face of the hull, not at a corner", m,
+                            point_text(vertices[m])));
     // Euler's formula for a closed convex surface: a guard against a tolerance that let a face through twice.
     std::size_t edge_ends = 0;
     for (const auto& f : hull.faces) edge_ends += f.size();
@@ -154,7 +160,8 @@ Polyhedron convex_polyhedron(const std::vector<Vec3>& vertices, const std::vecto
         const std::vector<std::size_t>& face = faces[f];
         for (std::size_t i : face)
             if (i >= vertices.size())
-                throw std::invalid_argument(fmt::format("face {} names vertex {}, but there are {} vertices", f, i, vertices.size()));
+                throw std::invalid_argument(
+                    fmt::format("face {} names vertex {}, but there are {} vertices", f, i, vertices.size()));
         std::vector<std::size_t> key = face;
         std::sort(key.begin(), key.end());
         const auto found = hull_face_of.find(key);
@@ -165,10 +172,12 @@ Polyhedron convex_polyhedron(const std::vector<Vec3>& vertices, const std::vecto
         listed[h] = 1;
         if (dot(newell_normal(vertices, face), hull.face_normals[h]) < 0.0)
             throw std::invalid_argument(fmt::format(
-                "face {} is inverted: its vertices run clockwise seen from outside (they must run counter-clockwise)", f));
+                "face {} is inverted: its vertices run clockwise seen from outside (they must run counter-clockwise)",
+                f));
         // The same cycle as the hull's, from the listed first vertex on.
         const std::vector<std::size_t>& corners = hull.faces[h];
-        const std::size_t start = static_cast<std::size_t>(std::find(corners.begin(), corners.end(), face[0]) - corners.begin());
+        const std::size_t start =
+            static_cast<std::size_t>(std::find(corners.begin(), corners.end(), face[0]) - corners.begin());
         for (std::size_t i = 0; i < face.size(); ++i)
             if (corners[(start + i) % corners.size()] != face[i])
                 throw std::invalid_argument(fmt::format("face {} lists its vertices out of order around the face", f));
@@ -186,8 +195,8 @@ Polyhedron convex_polyhedron(const std::vector<Vec3>& vertices, const std::vecto
 PolyhedronProperties polyhedron_properties(const Polyhedron& p) {
     const Vec3 apex = mean_vertex(p.vertices_m);
     double volume = 0.0;
-    Vec3 first;         // integral of r dV, r from the apex
-    Matrix3d second;    // integral of r r^T dV
+    Vec3 first;       // integral of r dV, r from the apex
+    Matrix3d second;  // integral of r r^T dV
     for (const auto& face : p.faces) {
         const Vec3 a = p.vertices_m[face[0]] - apex;
         for (std::size_t k = 1; k + 1 < face.size(); ++k) {
@@ -200,7 +209,7 @@ PolyhedronProperties polyhedron_properties(const Polyhedron& p) {
             volume += v;
             first += (v / 4.0) * s;
             second = second + (v / 20.0) * (Matrix3d::outer(a, a) + Matrix3d::outer(b, b) + Matrix3d::outer(c, c) +
-                                             Matrix3d::outer(s, s));
+                                            Matrix3d::outer(s, s));
         }
     }
     PolyhedronProperties props;
@@ -222,7 +231,8 @@ std::vector<Vec3> box_vertices(Vec3 lengths_m, Vec3 center_m, Quaternion orienta
     for (double sz : {-0.5, 0.5})
         for (double sy : {-0.5, 0.5})
             for (double sx : {-0.5, 0.5})
-                corners.push_back(center_m + rotate(orientation, {sx * lengths_m.x, sy * lengths_m.y, sz * lengths_m.z}));
+                corners.push_back(center_m +
+                                  rotate(orientation, {sx * lengths_m.x, sy * lengths_m.y, sz * lengths_m.z}));
     return corners;
 }
 

@@ -12,8 +12,8 @@ namespace blockdem {
 namespace {
 
 TEST(RigidRotation3d, ConstantTorqueAboutAPrincipalAxis) {
-    RigidBody3d b = make_rigid_body_3d("block", box_vertices({0.4, 0.3, 0.2}, {1, 2, 3}, from_rotation_vector({0.2, 0.5, -0.1})),
-                                       2500.0);
+    RigidBody3d b = make_rigid_body_3d(
+        "block", box_vertices({0.4, 0.3, 0.2}, {1, 2, 3}, from_rotation_vector({0.2, 0.5, -0.1})), 2500.0);
     const Quaternion start = b.orientation;
     const Vec3 axis = rotate(b.orientation, {0, 1, 0});  // the intermediate axis, in the world
     const double torque_n_m = 3.0, force_n = 5.0, dt_s = 1e-3;

@@ -30,8 +30,10 @@ TEST(Drum3d, RollsOnItsRimWithTheEnergyBalanceClosed) {
     // Tilted about x: the base corner at -y (number 24) goes lowest, and sits at z = 0.
     const Quaternion turn = from_rotation_vector({tilt, 0.0, 0.0});
     std::vector<Vec3> vertices;
-    for (Vec3 v : prism_vertices(polygon, height)) vertices.push_back(rotate(turn, v) + Vec3{0.0, 0.0, radius * std::sin(tilt)});
-    const ContactParameters contact{.kn_N_m = 1e8, .ks_N_m = 1e8, .mu = 0.8, .h_n = damping_ratio_paper(0.5), .h_s = 1.0};
+    for (Vec3 v : prism_vertices(polygon, height))
+        vertices.push_back(rotate(turn, v) + Vec3{0.0, 0.0, radius * std::sin(tilt)});
+    const ContactParameters contact{
+        .kn_N_m = 1e8, .ks_N_m = 1e8, .mu = 0.8, .h_n = damping_ratio_paper(0.5), .h_s = 1.0};
     testing::TableRun3d run = testing::table_run(make_rigid_body_3d("drum", vertices, 2500.0), contact);
     run.dt_s = 2e-5;
     // Turning about the vertical through the centroid at 4 rad/s, the contact corner at rest.
@@ -53,10 +55,11 @@ TEST(Drum3d, RollsOnItsRimWithTheEnergyBalanceClosed) {
     EXPECT_GT(lowest_centroid_m, radius);
     // The ledger closes over 1e5 steps and hundreds of corner impacts.
     EXPECT_LT(run.ledger.balance_error(), 5e-4);
-    std::printf("drum rolling on its rim: %zu corners touched in 2 s, lowest centroid %.3f m, kinetic %.3f J, "
-                "dissipated %.3f J (dashpots %.3f, friction %.3f), balance error %.2e\n",
-                touched.size(), lowest_centroid_m, run.ledger.kinetic_j, run.ledger.dissipated_j(),
-                run.ledger.normal_dashpot_j + run.ledger.shear_dashpot_j, run.ledger.friction_j, run.ledger.balance_error());
+    std::printf(
+        "drum rolling on its rim: %zu corners touched in 2 s, lowest centroid %.3f m, kinetic %.3f J, "
+        "dissipated %.3f J (dashpots %.3f, friction %.3f), balance error %.2e\n",
+        touched.size(), lowest_centroid_m, run.ledger.kinetic_j, run.ledger.dissipated_j(),
+        run.ledger.normal_dashpot_j + run.ledger.shear_dashpot_j, run.ledger.friction_j, run.ledger.balance_error());
 }
 
 }  // namespace

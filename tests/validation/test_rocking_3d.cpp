@@ -54,8 +54,8 @@ TEST(Rocking3d, FreeRockingOnAnEdgeMatchesHousner) {
     RigidBody3d body = make_rigid_body_3d("block", box_vertices({2 * b, depth, 2 * h}, center, tilt), 1536.0);
     const Quaternion start = body.orientation;
     // The 2-D contact: kn = 1e9 N/m per corner of a unit-thick block; here two corners per edge.
-    const ContactParameters contact{.kn_N_m = 0.5e9 * depth, .ks_N_m = 0.5e9 * depth, .mu = 2.0,
-                                    .h_n = damping_ratio_paper(0.2), .h_s = 1.0};
+    const ContactParameters contact{
+        .kn_N_m = 0.5e9 * depth, .ks_N_m = 0.5e9 * depth, .mu = 2.0, .h_n = damping_ratio_paper(0.2), .h_s = 1.0};
     std::vector<VertexContact3d> vertices(body.shape.vertices_m.size());
     const double dt = 2e-5, end = 4.0;
     std::vector<double> t, theta;
@@ -85,15 +85,16 @@ TEST(Rocking3d, FreeRockingOnAnEdgeMatchesHousner) {
     ASSERT_GE(dem.impacts.size(), 5u);
     ASSERT_GE(housner.impacts.size(), 5u);
     const auto impact_ratio = [&](double before, double after) {
-        return std::sqrt((std::cos(alpha - std::abs(after)) - std::cos(alpha)) / (std::cos(alpha - std::abs(before)) - std::cos(alpha)));
+        return std::sqrt((std::cos(alpha - std::abs(after)) - std::cos(alpha)) /
+                         (std::cos(alpha - std::abs(before)) - std::cos(alpha)));
     };
     for (std::size_t k = 0; k + 1 < 6; ++k)
         EXPECT_NEAR(impact_ratio(dem.theta[k], dem.theta[k + 1]), block.housner_restitution(), 0.005) << "impact " << k;
     for (std::size_t k = 1; k < 6; ++k) {
         EXPECT_NEAR(dem.theta[k], housner.theta[k], 0.03 * std::abs(housner.theta[k])) << "peak " << k;
-        std::printf("3-D peak %zu: DEM %.5f rad, Housner %.5f rad (%.2f%%); impact %zu: DEM %.4f s, Housner %.4f s\n", k,
-                    dem.theta[k], housner.theta[k], 100.0 * (dem.theta[k] - housner.theta[k]) / housner.theta[k], k - 1,
-                    dem.impacts[k - 1], housner.impacts[k - 1]);
+        std::printf("3-D peak %zu: DEM %.5f rad, Housner %.5f rad (%.2f%%); impact %zu: DEM %.4f s, Housner %.4f s\n",
+                    k, dem.theta[k], housner.theta[k], 100.0 * (dem.theta[k] - housner.theta[k]) / housner.theta[k],
+                    k - 1, dem.impacts[k - 1], housner.impacts[k - 1]);
     }
     for (std::size_t k = 0; k < 5; ++k) EXPECT_NEAR(dem.impacts[k], housner.impacts[k], 0.01 * housner.impacts[k]);
     // Symmetric about its rocking plane, the box never turns out of it (round-off only).

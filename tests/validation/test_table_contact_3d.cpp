@@ -27,9 +27,9 @@ using BoxOnTable = testing::TableRun3d;
 // A 0.5 x 0.2 x 0.2 m box of mass_kg, its base at height base_z_m, turned by yaw_rad about the vertical.
 BoxOnTable box_on_table(double mass_kg, double base_z_m, double yaw_rad, const ContactParameters& contact) {
     const Vec3 lengths{0.5, 0.2, 0.2};
-    BoxOnTable s{.body = make_rigid_body_3d("box",
-                                            box_vertices(lengths, {0.0, 0.0, base_z_m + 0.1}, from_rotation_vector({0, 0, yaw_rad})),
-                                            mass_kg / (0.5 * 0.2 * 0.2)),
+    BoxOnTable s{.body = make_rigid_body_3d(
+                     "box", box_vertices(lengths, {0.0, 0.0, base_z_m + 0.1}, from_rotation_vector({0, 0, yaw_rad})),
+                     mass_kg / (0.5 * 0.2 * 0.2)),
                  .vertices = {},
                  .contact = contact};
     s.vertices.resize(s.body.shape.vertices_m.size());
@@ -43,7 +43,8 @@ TEST(TableContact3d, FlatDropReboundsWithTheRequestedRestitution) {
     // 2-D one. Turned about the vertical or not: the same.
     for (double yaw : {0.0, 0.6}) {
         for (double e : {0.2, 0.6, 0.95}) {
-            const ContactParameters contact{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.0, .h_n = damping_ratio_rebound(e), .h_s = 0.0};
+            const ContactParameters contact{
+                .kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.0, .h_n = damping_ratio_rebound(e), .h_s = 0.0};
             BoxOnTable s = box_on_table(20.0, 1e-4, yaw, contact);
             s.gravity_m_s2 = 0.0;
             s.dt_s = 1e-6;
@@ -61,8 +62,9 @@ TEST(TableContact3d, FlatDropReboundsWithTheRequestedRestitution) {
             // (measured 1e-7 of the impact's energy at e = 0.95, 4e-9 below).
             EXPECT_LT(length(s.body.angular_velocity_at_t_rad_s), 1e-9);
             EXPECT_LT(s.ledger.balance_error(), 1e-6) << "yaw " << yaw << ", e = " << e;
-            std::printf("3-D flat drop, yaw %.1f rad: requested e = %.3f, measured %.4f (error %.2f%%), energy balance %.1e\n",
-                        yaw, e, measured, 100.0 * (measured - e) / e, s.ledger.balance_error());
+            std::printf(
+                "3-D flat drop, yaw %.1f rad: requested e = %.3f, measured %.4f (error %.2f%%), energy balance %.1e\n",
+                yaw, e, measured, 100.0 * (measured - e) / e, s.ledger.balance_error());
         }
     }
 }
@@ -76,15 +78,18 @@ TEST(TableContact3d, OneCornerImpactFollowsTheEffectiveMass) {
     // in the impact's duration (measured 2.8% off at kn = 1e6 N/m, 0.27% at 1e8), hence the stiff
     // contact and its step here.
     const double e = 0.6;
-    const ContactParameters contact{.kn_N_m = 1e8, .ks_N_m = 1e8, .mu = 0.0, .h_n = damping_ratio_rebound(e), .h_s = 0.0};
+    const ContactParameters contact{
+        .kn_N_m = 1e8, .ks_N_m = 1e8, .mu = 0.0, .h_n = damping_ratio_rebound(e), .h_s = 0.0};
     const Quaternion turn = from_rotation_vector({0.35, -0.25, 0.4});
     RigidBody3d probe = make_rigid_body_3d("box", box_vertices({0.5, 0.2, 0.2}, {}, turn), 500.0);
     std::size_t lowest = 0;
     for (std::size_t i = 1; i < probe.shape.vertices_m.size(); ++i)
         if (world_vertex(probe, i).z < world_vertex(probe, lowest).z) lowest = i;
-    BoxOnTable s{.body = make_rigid_body_3d("box", box_vertices({0.5, 0.2, 0.2}, {0.0, 0.0, -world_vertex(probe, lowest).z + 1e-4}, turn), 500.0),
-                 .vertices = std::vector<VertexContact3d>(8),
-                 .contact = contact};
+    BoxOnTable s{
+        .body = make_rigid_body_3d(
+            "box", box_vertices({0.5, 0.2, 0.2}, {0.0, 0.0, -world_vertex(probe, lowest).z + 1e-4}, turn), 500.0),
+        .vertices = std::vector<VertexContact3d>(8),
+        .contact = contact};
     s.gravity_m_s2 = 0.0;
     s.dt_s = 1e-7;
     set_initial_velocity(s.body, {0.0, 0.0, -1.0}, {});
@@ -92,7 +97,8 @@ TEST(TableContact3d, OneCornerImpactFollowsTheEffectiveMass) {
     const Vec3 arm = world_vertex(s.body, lowest) - s.body.position_m;
     // (r x n) . I^-1 (r x n) with I^-1 = R diag(1/I) R^T: in the body frame.
     const Vec3 lever_body = rotate_inverse(s.body.orientation, cross(arm, n));
-    const double m_eff = 1.0 / (1.0 / s.body.mass_kg + dot(lever_body, hadamard(s.body.inverse_moments_1_kg_m2, lever_body)));
+    const double m_eff =
+        1.0 / (1.0 / s.body.mass_kg + dot(lever_body, hadamard(s.body.inverse_moments_1_kg_m2, lever_body)));
     bool touched = false;
     while (s.time_s < 0.1 && !(touched && s.last.points == 0)) {
         s.step();
@@ -106,8 +112,9 @@ TEST(TableContact3d, OneCornerImpactFollowsTheEffectiveMass) {
     EXPECT_NEAR(corner_velocity.z, expected, 0.03 * expected) << "m / m_eff = " << s.body.mass_kg / m_eff;
     EXPECT_LT(corner_velocity.z, e);
     EXPECT_LT(s.ledger.balance_error(), 1e-6);
-    std::printf("3-D one-corner impact: requested e = %.3f, m/m_eff = %.3f, corner rebound %.4f, predicted %.4f (%.2f%%)\n", e,
-                s.body.mass_kg / m_eff, corner_velocity.z, expected, 100.0 * (corner_velocity.z - expected) / expected);
+    std::printf(
+        "3-D one-corner impact: requested e = %.3f, m/m_eff = %.3f, corner rebound %.4f, predicted %.4f (%.2f%%)\n", e,
+        s.body.mass_kg / m_eff, corner_velocity.z, expected, 100.0 * (corner_velocity.z - expected) / expected);
 }
 
 TEST(TableContact3d, SlidingMatchesNewmarkRigidPlasticInAnyAzimuth) {
@@ -117,7 +124,8 @@ TEST(TableContact3d, SlidingMatchesNewmarkRigidPlasticInAnyAzimuth) {
     // same reasons: 2% of the slip plus the elastic shear u_e = mu m g / (2 * 2e4) = 74 um. The
     // shaking's azimuth is 0 (along the box) and 30 degrees (across its edges): friction is
     // isotropic, so the slip follows the shaking and its size does not change.
-    const ContactParameters contact{.kn_N_m = 1e4, .ks_N_m = 1e4, .mu = 0.3, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
+    const ContactParameters contact{
+        .kn_N_m = 1e4, .ks_N_m = 1e4, .mu = 0.3, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
     const ComponentMotion shaking = SineMotion{3.5, 1.0, std::numbers::pi / 2.0, 0.0, 0.0};
     const auto reference = rigid_plastic_sliding(shaking, 0.3, g, 5.0, 1e-5);
     const double u_e = 0.3 * 1.0 * g / (2.0 * 2.0e4);
@@ -135,21 +143,28 @@ TEST(TableContact3d, SlidingMatchesNewmarkRigidPlasticInAnyAzimuth) {
             const double across = length(slip - along * s.direction - Vec3{0, 0, slip.z});
             worst_across_m = std::max(worst_across_m, across);
             const double ref = reference[static_cast<std::size_t>(std::llround(cycles / 1e-5))].relative_displacement_m;
-            EXPECT_NEAR(along, ref, 0.02 * std::abs(ref) + u_e) << "azimuth " << azimuth_deg << ", after " << cycles << " cycles";
-            std::printf("3-D sliding, azimuth %.0f deg, after %.0f cycle(s): slip %.4f mm, Newmark %.4f mm (%.2f%%), across %.2g mm\n",
-                        azimuth_deg, cycles, 1e3 * along, 1e3 * ref, 100.0 * (along - ref) / ref, 1e3 * across);
+            EXPECT_NEAR(along, ref, 0.02 * std::abs(ref) + u_e)
+                << "azimuth " << azimuth_deg << ", after " << cycles << " cycles";
+            std::printf(
+                "3-D sliding, azimuth %.0f deg, after %.0f cycle(s): slip %.4f mm, Newmark %.4f mm (%.2f%%), across "
+                "%.2g mm\n",
+                azimuth_deg, cycles, 1e3 * along, 1e3 * ref, 100.0 * (along - ref) / ref, 1e3 * across);
         }
         // Across the shaking: nothing when it runs along the box's axis (symmetry). At 30
         // degrees the box rocks on its springs about an axis that is not a principal one, so it
         // also turns about the other (I^-1 T is not along T); its corners' loads and slips then
         // differ and it walks sideways a little (measured 0.048 mm, 0.8% of the slip, with
         // 3e-5 rad of yaw): bounded by the along tolerance.
-        EXPECT_LT(worst_across_m, azimuth_deg == 0.0 ? 1e-9 : 0.02 * std::abs(reference.back().relative_displacement_m) + u_e);
+        EXPECT_LT(worst_across_m,
+                  azimuth_deg == 0.0 ? 1e-9 : 0.02 * std::abs(reference.back().relative_displacement_m) + u_e);
         // The ledger closes as in 2-D: measured 1.9e-7 of the largest term.
         EXPECT_LT(s.ledger.balance_error(), 1e-5);
-        std::printf("3-D sliding, azimuth %.0f deg: yaw %.2g rad, energy balance error %.2e (friction %.4f J, table work %.4f J)\n",
-                    azimuth_deg, rotation_vector(s.body.orientation * conjugate(box_on_table(1.0, 0.0, 0.0, contact).body.orientation)).z,
-                    s.ledger.balance_error(), s.ledger.friction_j, s.ledger.table_work_j);
+        std::printf(
+            "3-D sliding, azimuth %.0f deg: yaw %.2g rad, energy balance error %.2e (friction %.4f J, table work %.4f "
+            "J)\n",
+            azimuth_deg,
+            rotation_vector(s.body.orientation * conjugate(box_on_table(1.0, 0.0, 0.0, contact).body.orientation)).z,
+            s.ledger.balance_error(), s.ledger.friction_j, s.ledger.table_work_j);
     }
 }
 
@@ -158,7 +173,8 @@ TEST(TableContact3d, VerticalTableMotionChangesTheFrictionCapacity) {
     // also accelerates downwards at 0.3 g (after a smooth 0.3 s start), the normal force drops to
     // m (g - 0.3 g), and shaking at 0.8 mu g, which could not move the box before, makes it slide
     // with |a| = mu (g - 0.3 g) on the plateaus of sliding. Tolerance 1%, the 2-D one.
-    const ContactParameters contact{.kn_N_m = 1e4, .ks_N_m = 1e4, .mu = 0.3, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
+    const ContactParameters contact{
+        .kn_N_m = 1e4, .ks_N_m = 1e4, .mu = 0.3, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
     BoxOnTable s = box_on_table(1.0, 0.0, 0.0, contact);
     s.horizontal = SineMotion{0.8 * 0.3 * g, 1.0, std::numbers::pi / 2.0, 0.0, 0.0};
     s.vertical = make_acceleration_series({0.0, 0.3, 2.0}, {0.0, -0.3 * g, -0.3 * g});
@@ -175,8 +191,9 @@ TEST(TableContact3d, VerticalTableMotionChangesTheFrictionCapacity) {
     EXPECT_GT(count, 1000u);
     EXPECT_LT(worst, 0.01);
     EXPECT_LT(s.ledger.balance_error(), 1e-4);
-    std::printf("3-D, vertical -0.3 g: sliding plateau %zu samples, largest deviation from mu (g + a_v) %.4f, ledger %.1e\n",
-                count, worst, s.ledger.balance_error());
+    std::printf(
+        "3-D, vertical -0.3 g: sliding plateau %zu samples, largest deviation from mu (g + a_v) %.4f, ledger %.1e\n",
+        count, worst, s.ledger.balance_error());
 }
 
 // The rigid-plastic block on a table shaken in two horizontal directions, integrated on its own:
@@ -186,13 +203,14 @@ TEST(TableContact3d, VerticalTableMotionChangesTheFrictionCapacity) {
 // acts against the kicked velocity: first order in dt, exact for the stick. Returns the slip at
 // the sample times.
 std::vector<Vec3> bidirectional_rigid_plastic(const ComponentMotion& x, const ComponentMotion& y, double mu,
-                                             const std::vector<double>& at_s, double dt_s) {
+                                              const std::vector<double>& at_s, double dt_s) {
     std::vector<Vec3> slips;
     Vec3 slip, velocity;
     double t = 0.0;
     for (double until : at_s) {
         while (t < until - 0.5 * dt_s) {
-            const Vec3 table_a{sample(x, t + 0.5 * dt_s).acceleration_m_s2, sample(y, t + 0.5 * dt_s).acceleration_m_s2, 0.0};
+            const Vec3 table_a{sample(x, t + 0.5 * dt_s).acceleration_m_s2, sample(y, t + 0.5 * dt_s).acceleration_m_s2,
+                               0.0};
             const Vec3 kicked = velocity - dt_s * table_a;
             const double stop_m_s = mu * g * dt_s;
             const Vec3 next = length(kicked) <= stop_m_s ? Vec3{} : kicked - (stop_m_s / length(kicked)) * kicked;
@@ -223,8 +241,8 @@ TEST(TableContact3d, BidirectionalSlidingMatchesTheVectorRigidPlasticBlock) {
     const double u_e = 0.3 * 1.0 * g / (2.0 * 2.0e4);
     std::vector<double> difference_at_end_m;
     for (double stiffer : {1.0, 10.0}) {
-        const ContactParameters contact{.kn_N_m = 1e4 * stiffer, .ks_N_m = 1e4 * stiffer, .mu = 0.3,
-                                        .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
+        const ContactParameters contact{
+            .kn_N_m = 1e4 * stiffer, .ks_N_m = 1e4 * stiffer, .mu = 0.3, .h_n = damping_ratio_paper(0.4), .h_s = 1.0};
         BoxOnTable s = box_on_table(1.0, 0.0, 0.0, contact);
         s.dt_s = 1e-4 / std::sqrt(stiffer);
         s.horizontal = x;
@@ -237,10 +255,11 @@ TEST(TableContact3d, BidirectionalSlidingMatchesTheVectorRigidPlasticBlock) {
             const double tolerance = 0.02 * length(reference[k]) + u_e;
             EXPECT_NEAR(slip.x, reference[k].x, tolerance) << "at " << at_s[k] << " s";
             EXPECT_NEAR(slip.y, reference[k].y, tolerance) << "at " << at_s[k] << " s";
-            std::printf("3-D bidirectional sliding, kn = ks = %.0e N/m, at %.0f s: slip (%.3f, %.3f) mm, rigid-plastic "
-                        "(%.3f, %.3f) mm, |difference| %.3f mm\n",
-                        contact.ks_N_m, at_s[k], 1e3 * slip.x, 1e3 * slip.y, 1e3 * reference[k].x, 1e3 * reference[k].y,
-                        1e3 * length(slip - reference[k]));
+            std::printf(
+                "3-D bidirectional sliding, kn = ks = %.0e N/m, at %.0f s: slip (%.3f, %.3f) mm, rigid-plastic "
+                "(%.3f, %.3f) mm, |difference| %.3f mm\n",
+                contact.ks_N_m, at_s[k], 1e3 * slip.x, 1e3 * slip.y, 1e3 * reference[k].x, 1e3 * reference[k].y,
+                1e3 * length(slip - reference[k]));
             if (k + 1 == at_s.size()) difference_at_end_m.push_back(length(slip - reference[k]));
         }
         // The ledger closes (measured 3.1e-5 and 1.0e-5 of the largest term).
