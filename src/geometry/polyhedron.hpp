@@ -6,9 +6,10 @@
 // drum 64), and the checks a user needs (a vertex inside the hull or in the middle of a face is
 // named as a mistake, not silently dropped as a hull library does) need every supporting plane
 // anyway. A plane through three vertices with every vertex on one side of it is a face; the test
-// is exact up to a tolerance relative to the body's size, costs O(n^4) and
-// has no degenerate cases to special-case (coplanar points are gathered into one face). Measured:
-// a 32-sided prism (64 vertices) takes 15 ms, once per shape when a model is built.
+// is exact up to a tolerance relative to the body's size, costs O(n^4) at worst and has no
+// degenerate cases to special-case (coplanar points are gathered into one face). Measured: a
+// 32-sided prism (64 vertices) takes 2.4 ms, a 64-sided one 25 ms, once per body when a model
+// is built (bodies of one shape could share it).
 #include <cstddef>
 #include <vector>
 
