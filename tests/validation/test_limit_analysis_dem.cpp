@@ -233,6 +233,42 @@ TEST(LimitAnalysisDem, WallWithWindow) {
     EXPECT_EQ(dem_moving, lp_moving);
 }
 
+// The same wall with associative joints: per-length stiffness (JKN = 1e10 Pa/m, JKS = 5e9 Pa/m:
+// a bed joint's point, 0.05 m of joint, 5e8 N/m, as stiff as the per-point wall's within a
+// factor 2) and dilation angle = friction angle, tan(psi) = mu = 0.8. Such joints dilate as the
+// associative LP's mechanism does, so the LP's multiplier is the collapse load (Drucker's
+// bound is then exact; docs/limit_analysis.md).
+Model wall_with_associative_joints() {
+    Model m = wall_with_window(1e9);
+    ContactParameters p;
+    p.stiffness = StiffnessBasis::per_length;
+    p.kn_pa_m = 1e10;
+    p.ks_pa_m = 5e9;
+    p.mu = 0.8;
+    p.tan_dilation = 0.8;
+    p.h_n = 0.3;
+    p.h_s = 1.0;
+    m.contact = MaterialPairs::uniform(p);
+    return m;
+}
+
+TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJoints) {
+    const Model m = wall_with_associative_joints();
+    const LimitResult lp = solve_limit_analysis(m, {.live_load_direction = {-1.0, 0.0}});
+    ASSERT_EQ(lp.status, LimitStatus::collapse);
+    const DemCollapse dem = tilt_until_collapse(m, std::atan(lp.lambda) / deg - 3.0, 1.0, 30.0, 1e-3, 5e-3);
+    ASSERT_FALSE(dem.displacement.empty());
+    const double dem_lambda = std::tan(dem.tilt_deg * deg);
+    const std::vector<bool> dem_moving = moving_blocks(m, dem.displacement);
+    const std::vector<bool> lp_moving = moving_blocks(m, lp.mechanism);
+    std::printf("wall with window, associative joints (tan psi = mu = 0.8): LP lambda = %.5f (%zu blocks move); DEM %.5f "
+                "(%+.2f %%), %zu blocks move, %zu of them in the LP's mechanism\n",
+                lp.lambda, count(lp_moving), dem_lambda, 100.0 * (dem_lambda / lp.lambda - 1.0), count(dem_moving),
+                count_both(dem_moving, lp_moving));
+    EXPECT_NEAR(dem_lambda / lp.lambda, 1.0, 0.03);
+    EXPECT_EQ(dem_moving, lp_moving);
+}
+
 // The study behind the settings above, run by hand (about 90 s of CPU): the DEM's multiplier
 // against the rate, dt and kn.
 TEST(LimitAnalysisDem, DISABLED_WallStudy) {
