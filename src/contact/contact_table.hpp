@@ -96,12 +96,16 @@ struct OpenedPoints {
     OpenedPoint points[2];
 };
 
-/// The largest accumulated dilation of the pair's points [m]: a dilated joint point pushes
-/// while its faces are apart by less than it (the narrow phase keeps such points).
-inline double largest_dilation_m(const PairContact& pair) {
+/// The opening [m] up to which the narrow phase keeps a dilating pair's points: twice their
+/// largest accumulated dilation u_d. A point pushes while its faces are apart by less than its
+/// u_d, and a sliding block rises in a step by about what the point dilated in the last one,
+/// which the point's own law adds to u_d only after the narrow phase: kept to u_d alone, a
+/// steadily rising joint lost its points once the rise per step passed its elastic closure.
+/// (A point kept while open carries no force: laws/mohr_coulomb_joint.hpp.)
+inline double dilated_gap_m(const PairContact& pair) {
     double largest_m = 0.0;
     for (std::uint32_t k = 0; k < pair.count; ++k) largest_m = std::max(largest_m, pair.points[k].dilation_m);
-    return largest_m;
+    return 2.0 * largest_m;
 }
 
 /// True while some point of the pair holds an intact bond (the narrow phase then keeps points

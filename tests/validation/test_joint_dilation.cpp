@@ -5,8 +5,9 @@
 // Tolerance, and why: the rise differs from tan(psi) x slip only by the change of the joint's
 // elastic closure (N / (JKN A) = 4e-6 m, against a rise of several centimetres) and the shear
 // spring's elastic part of the travel (tau / JKS, 6e-6 m): 1e-3 of the rise covers both with
-// margin. The energy balance: the same run without dilation is the reference; the dilating
-// run's ledger must close as well as it does (both are printed).
+// margin (measured: -0.009 %). The energy balance: the same run without dilation is the
+// reference; the dilating run's ledger must close as well as it does (both are printed; the
+// lagging law of an earlier attempt let the error reach twice the largest term here).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -24,7 +25,7 @@ struct Slide {
     double slip_m = 0.0;
     double rise_m = 0.0;
     double balance_error = 0.0;
-    double largest_balance_error = 0.0;  ///< over every step of the run
+    double largest_balance_error = 0.0;  ///< over every step from 0.1 s
     World world;
 };
 
@@ -50,7 +51,8 @@ Slide slide(double psi_rad) {
     while (w.time_s < 0.5) {
         step_begin(w);
         step_end(w);
-        s.largest_balance_error = std::max(s.largest_balance_error, w.energy.balance_error());
+        // (From 0.1 s: at the start every term is small, and both runs' error is the settling's.)
+        if (w.time_s > 0.1) s.largest_balance_error = std::max(s.largest_balance_error, w.energy.balance_error());
     }
     // The middle of the block's base: the centroid's travel plus the turn times h / 2.
     s.slip_m = std::abs((w.bodies.position_m[1].x - w.bodies.initial_position_m[1].x) + w.bodies.rotation_rad[1] * 0.5 * height);
@@ -76,9 +78,10 @@ TEST(JointDilation, DirectShearUnderConstantNormalLoadRisesByTanPsiTimesSlip) {
     ASSERT_EQ(w.contacts[0].count, 2u);  // the dilated joint still pushes, its faces apart
     EXPECT_NEAR(w.contacts[0].points[0].dilation_m + w.contacts[0].points[1].dilation_m, 2.0 * dilating.rise_m,
                 1e-3 * dilating.rise_m);
-    // The ledger closes as well as the non-dilating run's (same tolerance as the joint tests).
-    EXPECT_LT(dilating.largest_balance_error, 1e-3);
-    EXPECT_LT(dry.largest_balance_error, 1e-3);
+    // The ledger closes as well as the non-dilating run's: measured 5.5e-6 against 2.5e-6 at
+    // most from 0.1 s on, 2.2e-7 against 1.0e-7 at the end; both held to 1e-5.
+    EXPECT_LT(dilating.largest_balance_error, 1e-5);
+    EXPECT_LT(dry.largest_balance_error, 1e-5);
 }
 
 }  // namespace
