@@ -140,5 +140,23 @@ TEST(JointKeys, DilationAngleIsReadAndBounded) {
     expect_contains(on_points, "per_length");
 }
 
+TEST(JointKeys, ZeroDilationSlipIsReadAndBounded) {
+    const std::string good =
+        replace_once(bonded_block, "residual_mu = 0.5", "residual_mu = 0.5\ndilation_deg = 20.0\ndilation_zero_slip = 0.002");
+    const LoadedScenario s = load_scenario(testing::write_scenario("joint-keys", "zero-slip", good), {});
+    EXPECT_DOUBLE_EQ(s.world.contact.at(0, 0).dilation_zero_slip_m, 0.002);
+    const std::string negative =
+        error_of("zero-slip-negative", replace_once(good, "dilation_zero_slip = 0.002", "dilation_zero_slip = -0.002"));
+    expect_contains(negative, "contact.dilation_zero_slip");
+    expect_contains(negative, ">= 0");
+    const std::string per_point = replace_once(replace_once(replace_once(replace_once(good, "stiffness = \"per_length\"\n", ""),
+                                                                         "cohesion = 2.0e5\ntensile_strength = 1.0e5\nresidual_mu = 0.5\n", ""),
+                                                            "dilation_deg = 20.0\n", ""),
+                                               "kn = 1.0e10", "kn = 1.0e8");
+    const std::string on_points = error_of("zero-slip-per-point", per_point);
+    expect_contains(on_points, "contact.dilation_zero_slip");
+    expect_contains(on_points, "per_length");
+}
+
 }  // namespace
 }  // namespace blockdem
