@@ -262,6 +262,8 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJoints) {
     const Model m = wall_with_associative_joints();
     const LimitResult lp = solve_limit_analysis(m, {.live_load_direction = {-1.0, 0.0}});
     ASSERT_EQ(lp.status, LimitStatus::collapse);
+    // (As built: settled with friction held, this per-length wall does not come to rest;
+    // docs/limit_analysis.md.) The collapse is read where the mechanism runs away, at 1 cm.
     const DemCollapse dem = tilt_until_collapse(m, std::atan(lp.lambda) / deg - 8.0, 1.0, 30.0, 1e-2, 1e-2, 1.0, std::nullopt);
     ASSERT_FALSE(dem.displacement.empty());
     const double dem_lambda = std::tan(dem.tilt_deg * deg);
