@@ -273,6 +273,10 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJoints) {
                 "(%+.2f %%), %zu blocks move, %zu of them in the LP's mechanism\n",
                 lp.lambda, count(lp_moving), dem_lambda, 100.0 * (dem_lambda / lp.lambda - 1.0), count(dem_moving),
                 count_both(dem_moving, lp_moving));
+    // (This protocol: the tilt set 8 deg below at t = 0 on the wall as built. The collapse
+    // depends on the start: from rest at 0 deg 0.4485, -5.1 %; settled 8 deg below, -9.9 %:
+    // docs/limit_analysis.md. Asserted: what this protocol gives, and the LP as upper bound.)
+    EXPECT_LT(dem_lambda, lp.lambda);
     EXPECT_NEAR(dem_lambda / lp.lambda, 1.0, 0.03);
     EXPECT_EQ(count_both(dem_moving, lp_moving), count(lp_moving));  // every brick of the LP's mechanism moves
     EXPECT_LE(count(dem_moving), count(lp_moving) + 4);
