@@ -52,7 +52,8 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
                       ContactEnergy& energy) {
     const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
     const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
-    const JointForce j = mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s);
+    const JointForce j = mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s,
+                                            {point.dilation_m, point.normal_force_n});
     const ContactForce& f = j.force;
     point.normal_force_n = f.normal_n;
     point.shear_spring_n = f.shear_spring_n;
@@ -61,11 +62,12 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
     point.shear_dashpot_n = f.shear_dashpot_n;
     point.sliding = f.sliding;
     point.bond = j.bond;
+    point.dilation_m = j.dilation_m;
     energy.normal_dashpot_j += f.normal_dashpot_work_j;
     energy.shear_dashpot_j += f.shear_dashpot_work_j;
     energy.friction_j += f.friction_work_j;
     energy.bond_breakage_j += j.bond_breakage_j;
-    energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond);
+    energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond, point.dilation_m);
     return f.normal_n * s.n + f.shear_n * s.t;
 }
 
@@ -303,11 +305,11 @@ double contact_elastic_energy(const World& w) {
             const JointPoint joint = joint_point_of(w.bodies, pair, stored, w.contact.rounding_m, pair.count + interior);
             for (std::uint32_t k = 0; k < pair.count; ++k)
                 energy += joint_elastic_energy(joint, pair.points[k].overlap_m, pair.points[k].shear_spring_n,
-                                               pair.points[k].bond);
+                                               pair.points[k].bond, pair.points[k].dilation_m);
             const JointPoint inner{2.0 * joint.kn_N_m, 2.0 * joint.ks_N_m, 2.0 * joint.area_m2};
             for (std::uint32_t k = 0; k < interior; ++k)
                 energy += joint_elastic_energy(inner, sub->points[k].overlap_m, sub->points[k].shear_spring_n,
-                                               sub->points[k].bond);
+                                               sub->points[k].bond, sub->points[k].dilation_m);
             return energy;
         }
         const ContactParameters params = softened(stored, pair.stiffness_scale);

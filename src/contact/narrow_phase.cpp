@@ -26,6 +26,9 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         gap_m = bonded_gap_m(w, pair);
     else if (!w.sub_contacts.empty() && pair.count > 0 && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
         gap_m = bonded_gap_m(w, pair);
+    // A dilated joint point pushes while the faces are apart by less than its dilation.
+    if (pair.count > 0 && w.contact.any_dilation) [[unlikely]]
+        gap_m = std::max(gap_m, dilated_gap_m(pair));
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.part_box_m[part_a];
