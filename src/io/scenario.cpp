@@ -516,9 +516,14 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
 }
 
 LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle) {
+    return load_scenario(load_toml_file(file), file, overrides, settle);
+}
+
+LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                             bool settle) {
     LoadedScenario s;
     s.file = file;
-    s.root = load_toml_file(file);
+    s.root = std::move(root);
     try {
         apply_overrides(s.root, overrides);
     } catch (const InputError& e) {

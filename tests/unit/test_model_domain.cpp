@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "io/input_error.hpp"
-#include "io/run_scenario.hpp"
+#include "run/run_scenario.hpp"
 #include "io/scenario.hpp"
 
 namespace blockdem {
