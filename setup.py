@@ -1,0 +1,28 @@
+"""pip's entry to the CMake build (pyproject.toml): builds the extension blockdem._core with
+CMake, for the interpreter pip runs, and puts it beside the package's .py files."""
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
+
+SOURCE_DIR = Path(__file__).resolve().parent
+
+
+class CMakeBuild(build_ext):
+    def build_extension(self, ext):
+        build_dir = Path(self.build_temp) / "cmake"
+        jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 2))
+        subprocess.run(["cmake", "-S", str(SOURCE_DIR), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
+                        f"-DPython_EXECUTABLE={sys.executable}", "-DBLOCKDEM_BUILD_PYTHON=ON",
+                        "-DBLOCKDEM_BUILD_TESTS=OFF", "-DBLOCKDEM_BUILD_BENCHMARKS=OFF"], check=True)
+        subprocess.run(["cmake", "--build", str(build_dir), "--target", "blockdem_python", "-j", jobs], check=True)
+        built = next((build_dir / "python" / "blockdem").glob("_core*.so"))
+        target = Path(self.get_ext_fullpath(ext.name))
+        target.parent.mkdir(parents=True, exist_ok=True)
+        self.copy_file(str(built), str(target))
+
+
+setup(ext_modules=[Extension("blockdem._core", sources=[])], cmdclass={"build_ext": CMakeBuild})
