@@ -9,5 +9,7 @@ namespace blockdem::python {
 void bind_errors(pybind11::module_& m);
 void bind_scenario(pybind11::module_& m);
 void bind_simulation(pybind11::module_& m);
+void bind_study(pybind11::module_& m);
+void bind_analysis(pybind11::module_& m);
 
 }  // namespace blockdem::python

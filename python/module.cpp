@@ -6,4 +6,6 @@ PYBIND11_MODULE(_core, m) {
     blockdem::python::bind_errors(m);
     blockdem::python::bind_scenario(m);
     blockdem::python::bind_simulation(m);
+    blockdem::python::bind_study(m);
+    blockdem::python::bind_analysis(m);
 }
