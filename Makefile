@@ -11,8 +11,8 @@ CORE_PACKAGES := g++ cmake make pkg-config libtomlplusplus-dev libcli11-dev libf
                  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
                  libopenmpi-dev openmpi-bin libhdf5-dev libglpk-dev libdxflib-dev
 # Packages for the Python module and its tests (docs/python.md): pybind11 builds it, numpy is its
-# arrays, pytest runs tests/python.
-PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools
+# arrays, pytest runs tests/python, setuptools and wheel serve `pip install --no-build-isolation .`.
+PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools python3-wheel
 # Packages for the checks (docs/checks.md): clang 14 with its sanitizer and libFuzzer runtimes
 # (libclang-rt-14-dev, only recommended by clang-14), its OpenMP runtime for the sanitized build,
 # and llvm-symbolizer (llvm-14) for readable sanitizer reports. `make test` runs the fuzz smoke.

@@ -13,11 +13,15 @@ SOURCE_DIR = Path(__file__).resolve().parent
 
 class CMakeBuild(build_ext):
     def build_extension(self, ext):
-        build_dir = Path(self.build_temp) / "cmake"
+        # BLOCKDEM_CMAKE_BUILD_DIR=build reuses the folder `make build` configured (its options
+        # kept); by default a folder of its own with only the module's targets.
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 2))
-        subprocess.run(["cmake", "-S", str(SOURCE_DIR), "-B", str(build_dir), "-DCMAKE_BUILD_TYPE=Release",
-                        f"-DPython_EXECUTABLE={sys.executable}", "-DBLOCKDEM_BUILD_PYTHON=ON",
-                        "-DBLOCKDEM_BUILD_TESTS=OFF", "-DBLOCKDEM_BUILD_BENCHMARKS=OFF"], check=True)
+        reused = os.environ.get("BLOCKDEM_CMAKE_BUILD_DIR")
+        build_dir = Path(reused) if reused else Path(self.build_temp) / "cmake"
+        options = [f"-DPython_EXECUTABLE={sys.executable}", "-DBLOCKDEM_BUILD_PYTHON=ON"]
+        if not reused:
+            options += ["-DCMAKE_BUILD_TYPE=Release", "-DBLOCKDEM_BUILD_TESTS=OFF", "-DBLOCKDEM_BUILD_BENCHMARKS=OFF"]
+        subprocess.run(["cmake", "-S", str(SOURCE_DIR), "-B", str(build_dir), *options], check=True)
         subprocess.run(["cmake", "--build", str(build_dir), "--target", "blockdem_python", "-j", jobs], check=True)
         built = next((build_dir / "python" / "blockdem").glob("_core*.so"))
         target = Path(self.get_ext_fullpath(ext.name))
