@@ -269,3 +269,151 @@ def test_rounded_corner_to_corner_impact_has_no_spin():
     assert np.abs(sim.angular_velocities).max() < 1e-9
     assert np.abs(sim.velocities[:, 1]).max() < 1e-9
     assert sim.velocities[1, 0] > 0.1  # they did meet and rebound
+
+
+def joint_contact(kn, ks, mu):
+    """Per-length joint stiffness [Pa/m], damped (h = 0.5) so that statics is reached."""
+    return {"stiffness": "per_length", "kn": kn, "ks": ks, "mu": mu, "h_n": 0.5, "h_s": 0.5}
+
+
+def derived_step_scene(bodies, contact, duration, **simulation):
+    sim = {"duration": duration, "gravity": G, "dt_safety": 0.3, "output_interval": 0.01}
+    sim.update(simulation)
+    return blockdem.Scenario.from_dict({"simulation": sim, "contact": contact, "bodies": bodies})
+
+
+def test_per_length_column_closes_each_joint_by_sigma_over_kn():
+    # Row "column of 4 blocks under gravity, stiffness = per_length": each joint closes by
+    # sigma / kn (JKN = 1e9 Pa/m), tolerance 1%. Blocks 0.5 x 0.25 m, 0.4 m thick, 100 kg.
+    width, height, thickness, mass = 0.5, 0.25, 0.4, 100.0
+    bodies = [{"name": "base", "kind": "fixed", "shape": "rectangle", "width": 1.0, "height": 0.2,
+               "center": [0.0, -0.1]}]
+    bodies += [{"name": f"block{i}", "kind": "dynamic", "shape": "rectangle", "width": width, "height": height,
+                "center": [0.0, (i + 0.5) * height], "mass": mass, "thickness": thickness} for i in range(4)]
+    sim = blockdem.Simulation(derived_step_scene(bodies, joint_contact(1e9, 0.5e9, 0.6), 0.3), history=False)
+    sim.run()
+    c = sim.contacts()
+    ids = [sim.body_id("base")] + [sim.body_id(f"block{i}") for i in range(4)]
+    for j in range(4):
+        joint = (c["body_a"] == min(ids[j], ids[j + 1])) & (c["body_b"] == max(ids[j], ids[j + 1]))
+        sigma = (4 - j) * mass * G / (width * thickness)
+        assert c["overlap"][joint].mean() == pytest.approx(sigma / 1e9, rel=0.01), f"joint {j}"
+    assert sim.energy()["balance_error"] < 1e-3
+
+
+def test_per_length_joint_shears_by_tau_over_ks():
+    # Row "flat block on a table tilted 10 deg, per-length joint": the base slips elastically by
+    # tau / ks before sliding (tan 10 deg < mu = 0.6), tolerance 1%.
+    width, height, mass, ks = 1.0, 0.1, 500.0, 5e8
+    bodies = [{"name": "table", "kind": "fixed", "shape": "rectangle", "width": 2.0, "height": 0.2, "center": [0.0, -0.1]},
+              {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": width, "height": height,
+               "center": [0.0, 0.05], "mass": mass}]
+    sim = blockdem.Simulation(derived_step_scene(bodies, joint_contact(1e9, ks, 0.6), 0.3, tilt_deg=10.0), history=False)
+    i = sim.body_id("block")
+    x0 = sim.positions[i, 0]
+    sim.run()
+    base_slip = sim.positions[i, 0] - x0 + sim.rotations[i] * 0.5 * height
+    expected = -mass * G * math.sin(math.radians(10.0)) / (ks * width * 1.0)
+    assert base_slip == pytest.approx(expected, rel=0.01)
+    assert not sim.contacts()["sliding"].any()
+
+
+def tilting_table(width, height, mu, start_deg, duration):
+    """The row's tilting table: a 2500 kg/m^3 block settled at start_deg, the tilt then rising
+    at 0.5 deg/s; the summary's table tilt at the block's first slip and first tipping."""
+    bodies = [{"name": "table", "kind": "fixed", "shape": "rectangle", "width": 2.0, "height": 0.2, "center": [0.0, -0.1]},
+              {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": width, "height": height,
+               "center": [0.0, 0.5 * height], "mass": 2500.0 * width * height}]
+    contact = {"kn": 1e8, "ks": 1e8, "mu": mu, "h_n": 0.3, "h_s": 1.0}
+    s = blockdem.Scenario.from_dict({
+        "simulation": {"duration": duration, "gravity": G, "tilt_deg": start_deg, "tilt_rate_deg_s": 0.5,
+                       "output_interval": 0.01},
+        "contact": contact, "bodies": bodies, "settling": {}})
+    sim = blockdem.Simulation(s, history=False)
+    summary = sim.run()
+    block = next(b for b in summary["bodies"] if b["name"] == "block")
+    return block["table_tilt_deg_at"]
+
+
+def test_tilting_table_slender_block_topples_at_atan_b_over_h():
+    # Row "tilting table at 0.5 deg/s: slender block (b/h = 0.25, mu = 0.6)": tips at
+    # atan(b/h) = 14.036 deg; the row's window 0 to +0.4 deg (the tilt keeps rising while the
+    # rotation grows to the detection size; tests/validation/test_tilting_table.cpp).
+    at = tilting_table(0.2, 0.8, 0.6, 12.0, 6.0)
+    expected = math.degrees(math.atan(0.25))
+    assert expected <= at["rocking_onset"] <= expected + 0.4
+    # The row's measured figure: the tilt from level last passing the critical angle, 0.05 deg.
+    assert at["overturning"] == pytest.approx(expected, abs=0.05)
+
+
+def test_tilting_table_squat_block_slides_at_atan_mu():
+    # Row "tilting table: squat block (b/h = 1, mu = 0.6)": slides at atan(mu) = 30.964 deg,
+    # window 0 to +0.4 deg.
+    at = tilting_table(0.4, 0.4, 0.6, 29.0, 6.0)
+    expected = math.degrees(math.atan(0.6))
+    assert expected <= at["slip_onset"] <= expected + 0.4
+
+
+def settled_block_on_tilt(tilt_deg, mu, duration, motion=None):
+    """A 0.2 x 0.1 m, 1 kg block on a level table tilted by tilt_deg (gravity turned), settled
+    with friction held ([settling]: kinetic ratio 1e-10), kn = ks = 1e6 N/m, h_n 0.3, h_s 1."""
+    bodies = [{"name": "table", "kind": "driven", "shape": "rectangle", "width": 2.0, "height": 0.2, "center": [0.0, -0.1],
+               "density": 1000.0},
+              {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": 0.2, "height": 0.1,
+               "center": [0.0, 0.05], "mass": 1.0}]
+    s = blockdem.Scenario.from_dict({
+        "simulation": {"duration": duration, "gravity": G, "tilt_deg": tilt_deg, "output_interval": 0.01},
+        "contact": {"kn": 1e6, "ks": 1e6, "mu": mu, "h_n": 0.3, "h_s": 1.0}, "bodies": bodies,
+        "settling": {"kinetic_ratio": 1e-10, "window": 0.05, "max_time": 2.0}})
+    if motion is not None:
+        s.set_motion(motion=motion)
+    return blockdem.Simulation(s, history=False)
+
+
+def test_settled_block_below_the_friction_angle_starts_in_equilibrium():
+    # Row "settled block on a 20 deg incline, mu = 0.5": starts in equilibrium, slip below 1e-9 m.
+    sim = settled_block_on_tilt(20.0, 0.5, 0.5)
+    start = sim.positions[sim.body_id("block")].copy()
+    sim.run()
+    assert np.abs(sim.positions[sim.body_id("block")] - start).max() < 1e-9
+
+
+def test_settled_block_above_the_friction_angle_slides_from_the_first_step():
+    # Row "settled block on a 30 deg incline, mu = 0.5": slip g (sin a - mu cos a) t^2 / 2 from
+    # t = 0, tolerance 0.2% (what settling leaves of the velocity is 0.07% at 0.1 s). As in
+    # tests/validation/test_incline_and_energy.cpp: a fixed slab turned by 30 deg, dt = 1e-5 s.
+    slope = math.radians(30.0)
+    c, s_ = math.cos(slope), math.sin(slope)
+    bodies = [{"name": "slab", "kind": "fixed", "shape": "rectangle", "width": 10.0, "height": 0.5, "center": [0.0, 0.0],
+               "rotation": slope},
+              {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": 0.2, "height": 0.1,
+               "center": [-0.3 * s_, 0.3 * c], "rotation": slope, "mass": 1.0}]
+    sim = blockdem.Simulation(blockdem.Scenario.from_dict({
+        "simulation": {"duration": 0.5, "dt": 1e-5, "gravity": G, "output_interval": 0.01},
+        "contact": {"kn": 1e6, "ks": 1e6, "mu": 0.5, "h_n": 0.3, "h_s": 1.0}, "bodies": bodies,
+        "settling": {"kinetic_ratio": 1e-10, "window": 0.05, "max_time": 2.0}}), history=False)
+    block = sim.body_id("block")
+    start = sim.positions[block].copy()
+    downhill = np.array([-c, -s_])
+    a = G * (s_ - 0.5 * c)
+    for t in (0.1, 0.2, 0.5):
+        sim.run(until=t)
+        assert (sim.positions[block] - start) @ downhill == pytest.approx(0.5 * a * t * t, rel=0.002), f"t = {t}"
+
+
+@pytest.mark.parametrize("amplitude", [3.0, 9.0])
+def test_tilted_table_shaken_along_its_surface_follows_newmark(amplitude):
+    # Row "table tilted 20 deg, shaken along its surface (3 and 9 m/s^2)": Newmark's block on an
+    # incline (blockdem.rigid_plastic_sliding with slope; asymmetric yield), final slip after
+    # 4 cycles of T = 0.5 s, tolerance 0.5% (the 1e6 N/m springs smear each stick-slip change).
+    sine = {"type": "sine", "amplitude": amplitude, "unit": "m/s^2", "period": 0.5, "cycles": 4}
+    sim = settled_block_on_tilt(20.0, 0.5, 2.5, motion=sine)
+    start = sim.positions[:, 0].copy()
+    sim.run()
+    moved = sim.positions[:, 0] - start
+    dem = moved[sim.body_id("block")] - moved[sim.body_id("table")]
+    ref = blockdem.rigid_plastic_sliding(blockdem.Motion.sine(amplitude, 0.5, cycles=4), 0.5, end=2.5, dt=1e-5,
+                                         slope=math.radians(20.0))
+    newmark = ref["displacement"][-1]
+    assert newmark < -0.01   # down the slope, by centimetres
+    assert dem == pytest.approx(newmark, rel=0.005)
