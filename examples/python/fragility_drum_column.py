@@ -33,7 +33,7 @@ def record_files(count):
     """The horizontal AT2 records, sorted by name; empty when the data set is absent."""
     if not RECORDS.is_dir():
         return []
-    files = sorted(f for f in RECORDS.glob("*.AT2") if f.name not in VERTICAL)
+    files = sorted(f for f in RECORDS.iterdir() if f.suffix.lower() == ".at2" and f.name not in VERTICAL)
     return files[:count] if count else files
 
 
