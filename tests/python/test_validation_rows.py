@@ -237,18 +237,27 @@ def test_interface_forces_of_a_drum_column_at_rest():
         assert c["normal_force"][joint].sum() == pytest.approx(above, rel=1e-4), drum
 
 
+# The rows' L: foot 0.4 x 0.15 m, stem 0.1 m wide and 0.8 m tall overall, standing on the foot's
+# left end; as rectangles (w, h, cx, cy): the foot, and the stem above it.
+L_OUTLINE = [[0, 0], [0.4, 0], [0.4, 0.15], [0.1, 0.15], [0.1, 0.8], [0, 0.8]]
+L_RECTANGLES = [(0.4, 0.15, 0.2, 0.075), (0.1, 0.65, 0.05, 0.475)]
+
+
+def l_area_centroid():
+    area = sum(w * h for w, h, _, _ in L_RECTANGLES)
+    return (area, sum(w * h * x for w, h, x, _ in L_RECTANGLES) / area,
+            sum(w * h * y for w, h, _, y in L_RECTANGLES) / area)
+
+
 def test_l_and_t_mass_properties():
     # Row "L and T sections as concave polygon bodies": area, centroid and polar inertia of
     # their rectangles by parallel axes, 1e-12 relative.
     law = {"kn": 1e8, "ks": 1e8, "mu": 0.6, "e": 0.5, "e_meaning": "rebound", "h_s": 0.0}
     rho = 2000.0  # [kg/m^3], unit thickness
-    L = [[0, 0], [0.4, 0], [0.4, 0.15], [0.1, 0.15], [0.1, 0.95], [0, 0.95]]   # foot 0.4 x 0.15, stem 0.1 x 0.8
-    bodies = [table_body(), {"name": "L", "kind": "dynamic", "shape": "polygon", "vertices": L, "density": rho}]
+    bodies = [table_body(), {"name": "L", "kind": "dynamic", "shape": "polygon", "vertices": L_OUTLINE, "density": rho}]
     sim = blockdem.Simulation(scene(bodies, law, 0.01, 1e-5), history=False)
-    rects = [(0.4, 0.15, 0.2, 0.075), (0.1, 0.8, 0.05, 0.55)]   # w, h, cx, cy
-    area = sum(w * h for w, h, _, _ in rects)
-    cx = sum(w * h * x for w, h, x, _ in rects) / area
-    cy = sum(w * h * y for w, h, _, y in rects) / area
+    area, cx, cy = l_area_centroid()
+    rects = L_RECTANGLES
     polar = sum(w * h * ((w * w + h * h) / 12 + (x - cx) ** 2 + (y - cy) ** 2) for w, h, x, y in rects)
     i = sim.body_id("L")
     assert sim.masses[i] == pytest.approx(rho * area, rel=1e-12)
@@ -417,3 +426,94 @@ def test_tilted_table_shaken_along_its_surface_follows_newmark(amplitude):
     newmark = ref["displacement"][-1]
     assert newmark < -0.01   # down the slope, by centimetres
     assert dem == pytest.approx(newmark, rel=0.005)
+
+
+def l_on_table(duration, tilt_deg=0.0, tilt_rate=0.0, kinetic_ratio=1e-8):
+    bodies = [{"name": "table", "kind": "fixed", "shape": "rectangle", "width": 2.0, "height": 0.2, "center": [0.2, -0.1]},
+              {"name": "L", "kind": "dynamic", "shape": "polygon", "vertices": L_OUTLINE, "density": 2500.0}]
+    return blockdem.Simulation(blockdem.Scenario.from_dict({
+        "simulation": {"duration": duration, "gravity": G, "tilt_deg": tilt_deg, "tilt_rate_deg_s": tilt_rate,
+                       "output_interval": 0.01},
+        "contact": {"kn": 1e8, "ks": 1e8, "mu": 0.6, "h_n": 0.3, "h_s": 0.3 if tilt_rate == 0.0 else 1.0},
+        "bodies": bodies, "settling": {"kinetic_ratio": kinetic_ratio}}), history=False)
+
+
+def test_l_block_rests_on_its_corners_by_the_lever_rule():
+    # Row "L block (foot 0.4 x 0.15 m, stem 0.1 x 0.8 m) settled on a table": corner supports by
+    # the lever rule about the centroid (2130.61 / 935.02 N), tolerance 1e-3 of the weight
+    # (settled to a kinetic ratio of 1e-13, as the C++ test: the forces then vibrate by < 7e-5 W).
+    sim = l_on_table(0.01, kinetic_ratio=1e-13)
+    sim.step(1)
+    _, cx, _ = l_area_centroid()
+    weight = sim.masses[sim.body_id("L")] * G
+    c = sim.contacts()
+    left = c["normal_force"][np.abs(c["x"]) < 0.01].sum()
+    right = c["normal_force"][np.abs(c["x"] - 0.4) < 0.01].sum()
+    assert weight * (0.4 - cx) / 0.4 == pytest.approx(2130.61, abs=0.01)
+    assert left == pytest.approx(weight * (0.4 - cx) / 0.4, abs=1e-3 * weight)
+    assert right == pytest.approx(weight * cx / 0.4, abs=1e-3 * weight)
+
+
+def test_l_block_overturns_on_a_tilting_table_when_its_centroid_passes_the_pivot():
+    # Row "L block on a tilting table at 0.5 deg/s, mu = 0.6": overturns at atan(x_c / y_c) =
+    # 23.321 deg, tolerance 0.05 deg; it tips 0 to 0.4 deg after (the detection's lag).
+    sim = l_on_table(6.0, tilt_deg=21.0, tilt_rate=0.5)
+    summary = sim.run()
+    at = next(b for b in summary["bodies"] if b["name"] == "L")["table_tilt_deg_at"]
+    _, cx, cy = l_area_centroid()
+    expected = math.degrees(math.atan(cx / cy))
+    assert expected == pytest.approx(23.321, abs=1e-3)
+    assert at["overturning"] == pytest.approx(expected, abs=0.05)
+    assert expected <= at["rocking_onset"] < expected + 0.4
+
+
+def test_rocking_onset_at_the_static_threshold():
+    # Row "rocking onset, slow ramp": the table's acceleration ramps to 1.2 g b/h over 6 s; the
+    # heel lifts (one contact point left) at a = g b/h, tolerance 2%.
+    threshold = G * 0.25
+    dt = 0.01
+    ramp = np.arange(601) * dt / 6.0 * 1.2 * threshold
+    s = blockdem.Scenario.from_dict({
+        "simulation": {"duration": 6.0, "dt": 2e-5, "gravity": G, "output_interval": 0.01},
+        "contact": {"kn": 1e9, "ks": 1e9, "mu": 2.0, "e": 0.2, "e_meaning": "paper", "h_s": 1.0},
+        "bodies": [dict(table_body(), density=1536.0),
+                   {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": 0.4, "height": 1.6,
+                    "center": [0.0, 0.8], "density": 1536.0}]})
+    s.set_motion(ramp, dt=dt)
+    sim = blockdem.Simulation(s, history=False)
+    sim.step(int(0.2 / sim.dt))
+    onset = None
+    while not sim.done:
+        sim.step(50)
+        if len(sim.contacts()) == 1:
+            onset = sim.accelerations[sim.body_id("table"), 0]
+            break
+    assert onset is not None, "no uplift up to 1.2 g b/h"
+    assert abs(onset) / threshold == pytest.approx(1.0, abs=0.02)
+
+
+def test_rounded_corners_leave_the_newmark_slip_unchanged():
+    # Row "rounded corners (rounding = 1e-3 of the block): Newmark slip": the paper's sliding
+    # block with r = 0.2 mm against Newmark's rigid-plastic block (blockdem.rigid_plastic_sliding,
+    # a = 3.5 cos(2 pi t)), tolerance 2% + u_e (u_e = mu m g / (2 ks) = 74 um), after 5 s.
+    s = blockdem.Scenario.from_file(SOURCE / "examples/paper/sliding.toml")
+    s.set("contact.rounding", 2e-4)
+    sim = blockdem.Simulation(s, history=False)
+    start = sim.positions[:, 0].copy()
+    sim.run()
+    moved = sim.positions[:, 0] - start
+    dem = moved[sim.body_id("block")] - moved[sim.body_id("table")]
+    ref = blockdem.rigid_plastic_sliding(blockdem.Motion.sine(3.5, 1.0, phase=math.pi / 2), 0.3, end=5.0, dt=1e-5)
+    u_e = 0.3 * 1.0 * G / (2 * 2.0e4)
+    assert dem == pytest.approx(ref["displacement"][-1], abs=0.02 * abs(ref["displacement"][-1]) + u_e)
+
+
+def test_a_block_on_too_soft_contacts_stops_as_penetration():
+    # Row "block on contacts 2000x too soft": the run stops with a penetration error (a
+    # SimulationError through Python), not a result.
+    law = {"kn": 10.0, "ks": 10.0, "mu": 0.5, "e": 0.4, "e_meaning": "paper", "h_s": 1.0}
+    block = {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": 0.5, "height": 0.2,
+             "center": [0.0, 0.1], "mass": 1.0}
+    sim = blockdem.Simulation(scene([table_body(), block], law, 5.0, 1e-3), history=False)
+    with pytest.raises(blockdem.SimulationError, match="penetration"):
+        sim.run()
