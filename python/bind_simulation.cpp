@@ -5,6 +5,7 @@
 // read-only, keep the simulation alive, and their data pointers stay the same from step to step
 // (the world's arrays are sized once, when it is built). The GIL is released while stepping;
 // the step's threads work as in the CLI (OpenMP, results independent of their number).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -59,16 +60,27 @@ public:
             throw std::logic_error(fmt::format("the simulation stopped on an error at t = {:.6g} s and cannot go on: {}",
                                                world().time_s, failure_));
         if (run_->finished()) throw std::logic_error("the simulation is finished (finish() was called): it cannot go on");
-        try {
-            py::gil_scoped_release release;
+        // In chunks, between which Ctrl-C (KeyboardInterrupt) is seen; the run does not depend on
+        // how it is cut (world/simulation.hpp, RunLoop), so an interrupted run can go on.
+        std::int64_t taken = 0;
+        do {
+            const std::int64_t chunk = std::min(steps - taken, steps_between_signal_checks);
+            std::int64_t got = 0;
+            try {
+                py::gil_scoped_release release;
 #ifdef _OPENMP
-            omp_set_num_threads(threads_);  // (per calling thread: Python's, which steps)
+                omp_set_num_threads(threads_);  // (per calling thread: the one that steps)
 #endif
-            return run_->step(steps);
-        } catch (const std::exception& e) {
-            failure_ = e.what();
-            throw;
-        }
+                got = run_->step(chunk);
+            } catch (const std::exception& e) {
+                failure_ = e.what();
+                throw;
+            }
+            taken += got;
+            if (got < chunk) break;  // the end of the run
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        } while (taken < steps);
+        return taken;
     }
 
     // Steps to `until` (default: the end), calling callback(sim) every `every` seconds of
@@ -141,6 +153,7 @@ public:
     bool failed() const { return !failure_.empty(); }
 
 private:
+    static constexpr std::int64_t steps_between_signal_checks = 256;
     std::unique_ptr<ScenarioRun> run_;
     int threads_ = 1;
     std::string failure_;   ///< what stopped the run; empty while it may go on

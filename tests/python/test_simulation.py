@@ -172,3 +172,15 @@ def test_many_simulations_do_not_leak():
         blockdem.Simulation(scenario, history=False).step(2)
     gc.collect()
     assert rss_kb() - before < 2048, "memory grew by more than 2 MiB over 1e5 simulations"
+
+
+def test_ctrl_c_interrupts_a_long_step_and_the_run_goes_on():
+    import _thread
+
+    sim = blockdem.Simulation(blockdem.Scenario.from_dict(block_on_table(duration=100.0)))
+    threading.Timer(0.05, _thread.interrupt_main).start()
+    with pytest.raises(KeyboardInterrupt):
+        sim.step(10**6)
+    reached = sim.step_index
+    assert 0 < reached < 10**6 and not sim.failed
+    assert sim.step(10) == 10 and sim.step_index == reached + 10
