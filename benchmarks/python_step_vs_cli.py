@@ -1,9 +1,10 @@
 """Stepping a 1e4-brick wall from Python against the CLI (docs/python.md, "Speed").
 
-    PYTHONPATH=build/python /usr/bin/python3 benchmarks/python_step_vs_cli.py [build/blockdem]
+    PYTHONPATH=build/python /usr/bin/python3 benchmarks/python_step_vs_cli.py [build/blockdem [repeats]]
 
 Prints body-steps/s of `blockdem run` (run_info.json's wall time: the stepping and the writers),
-of Simulation.step(1000), and of Simulation.run with a callback every 100 steps; three repeats,
+of Simulation.step(1000), and of Simulation.run with a callback every 100 steps; three repeats
+by default,
 each after the other, so that a loaded machine shows as spread. Not a test: nothing is asserted.
 """
 import json
@@ -53,12 +54,13 @@ period = 0.5
 
 def main():
     cli = sys.argv[1] if len(sys.argv) > 1 else "build/blockdem"
+    repeats = int(sys.argv[2]) if len(sys.argv) > 2 else 3
     steps = 1000
     with tempfile.TemporaryDirectory() as tmp:
         scenario_file = Path(tmp) / "wall.toml"
         scenario_file.write_text(WALL)
         scenario = blockdem.Scenario.from_file(scenario_file)
-        for repeat in range(3):
+        for repeat in range(repeats):
             out = Path(tmp) / f"cli{repeat}"
             subprocess.run([cli, "run", str(scenario_file), "--out", str(out), "-q", "--threads", "1"], check=True,
                            stdout=subprocess.DEVNULL)
