@@ -5,7 +5,9 @@
 // read-only, keep the simulation alive, and their data pointers stay the same from step to step
 // (the world's arrays are sized once, when it is built). The GIL is released while stepping;
 // the step's threads work as in the CLI (OpenMP, results independent of their number).
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
@@ -55,20 +57,37 @@ public:
 
     std::int64_t step(std::int64_t steps) {
         if (steps < 0) throw py::value_error(fmt::format("step(n) needs n >= 0, got {}", steps));
+        // One stepping thread at a time (the GIL is released while it steps).
+        if (stepping_.exchange(true)) throw std::logic_error("the simulation is being stepped in another thread");
+        struct Done {
+            std::atomic<bool>& flag;
+            ~Done() { flag = false; }
+        } done{stepping_};
         if (!failure_.empty())
             throw std::logic_error(fmt::format("the simulation stopped on an error at t = {:.6g} s and cannot go on: {}",
                                                world().time_s, failure_));
         if (run_->finished()) throw std::logic_error("the simulation is finished (finish() was called): it cannot go on");
-        try {
-            py::gil_scoped_release release;
+        // In chunks, between which Ctrl-C (KeyboardInterrupt) is seen; the run does not depend on
+        // how it is cut (world/simulation.hpp, RunLoop), so an interrupted run can go on.
+        std::int64_t taken = 0;
+        do {
+            const std::int64_t chunk = std::min(steps - taken, steps_between_signal_checks);
+            std::int64_t got = 0;
+            try {
+                py::gil_scoped_release release;
 #ifdef _OPENMP
-            omp_set_num_threads(threads_);  // (per calling thread: Python's, which steps)
+                omp_set_num_threads(threads_);  // (per calling thread: the one that steps)
 #endif
-            return run_->step(steps);
-        } catch (const std::exception& e) {
-            failure_ = e.what();
-            throw;
-        }
+                got = run_->step(chunk);
+            } catch (const std::exception& e) {
+                failure_ = e.what();
+                throw;
+            }
+            taken += got;
+            if (got < chunk) break;  // the end of the run
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        } while (taken < steps);
+        return taken;
     }
 
     // Steps to `until` (default: the end), calling callback(sim) every `every` seconds of
@@ -98,7 +117,7 @@ public:
 
     py::object finish() {
         if (!failure_.empty()) throw std::logic_error(fmt::format("the simulation stopped on an error: {}", failure_));
-        return json_to_python(run_->finish());
+        return json_to_python(scenario_run().finish());
     }
 
     // A body by name or id; only a dynamic body takes loads and velocities.
@@ -126,24 +145,31 @@ public:
         const std::uint32_t i = dynamic_body(body);
         if (!std::isfinite(force_n[0]) || !std::isfinite(force_n[1]) || !std::isfinite(torque_n_m))
             throw py::value_error("the force and torque must be finite numbers");
-        set_external_load(run_->world(), i, {force_n[0], force_n[1]}, torque_n_m);
+        set_external_load(scenario_run().world(), i, {force_n[0], force_n[1]}, torque_n_m);
     }
 
     void set_velocity(const py::handle& body, std::array<double, 2> velocity_m_s, double angular_velocity_rad_s) {
         const std::uint32_t i = dynamic_body(body);
         if (!std::isfinite(velocity_m_s[0]) || !std::isfinite(velocity_m_s[1]) || !std::isfinite(angular_velocity_rad_s))
             throw py::value_error("the velocity must be finite numbers");
-        set_body_velocity(run_->world(), i, {velocity_m_s[0], velocity_m_s[1]}, angular_velocity_rad_s);
+        set_body_velocity(scenario_run().world(), i, {velocity_m_s[0], velocity_m_s[1]}, angular_velocity_rad_s);
     }
 
     const World& world() const { return run_->world(); }
-    ScenarioRun& scenario_run() { return *run_; }
+    // What reads more than the body arrays, or changes the world, waits for no thread: it
+    // refuses while another thread steps (the contact table and the rows change then).
+    ScenarioRun& scenario_run() {
+        if (stepping_) throw std::logic_error("the simulation is being stepped in another thread: wait for step() to return");
+        return *run_;
+    }
     bool failed() const { return !failure_.empty(); }
 
 private:
+    static constexpr std::int64_t steps_between_signal_checks = 256;
     std::unique_ptr<ScenarioRun> run_;
     int threads_ = 1;
     std::string failure_;   ///< what stopped the run; empty while it may go on
+    std::atomic<bool> stepping_{false};   ///< a thread is in step() with the GIL released
 };
 
 }  // namespace
@@ -205,10 +231,10 @@ void bind_simulation(py::module_& m) {
              py::arg("angular_velocity") = 0.0,
              "Sets a dynamic body's velocity [m/s] and angular velocity [rad/s] for the next step; the kinetic "
              "energy it adds is booked as external work.")
-        .def("contacts", [](const Simulation& s) { return contacts_array(s.world()); },
+        .def("contacts", [](Simulation& s) { return contacts_array(s.scenario_run().world()); },
              "The contact points at t as a structured array (a copy): body_a, body_b, x, y [m], nx, ny (from a to b), "
              "normal_force, shear_force [N] (on b), overlap [m], sliding, bond.")
-        .def("energy", [](const Simulation& s) { return energy_dict(s.world().energy); },
+        .def("energy", [](Simulation& s) { return energy_dict(s.scenario_run().world().energy); },
              "The energy balance at t [J] and its relative error.")
         .def("history", [](Simulation& s) { return history_dict(s.scenario_run()); },
              "The output rows so far as numpy arrays (rows x recorded bodies), without CSV.")

@@ -172,3 +172,36 @@ def test_many_simulations_do_not_leak():
         blockdem.Simulation(scenario, history=False).step(2)
     gc.collect()
     assert rss_kb() - before < 2048, "memory grew by more than 2 MiB over 1e5 simulations"
+
+
+def test_ctrl_c_interrupts_a_long_step_and_the_run_goes_on():
+    import _thread
+
+    sim = blockdem.Simulation(blockdem.Scenario.from_dict(block_on_table(duration=100.0)))
+    threading.Timer(0.05, _thread.interrupt_main).start()
+    with pytest.raises(KeyboardInterrupt):
+        sim.step(10**6)
+    reached = sim.step_index
+    assert 0 < reached < 10**6 and not sim.failed
+    assert sim.step(10) == 10 and sim.step_index == reached + 10
+
+
+def test_a_second_thread_cannot_step_or_read_contacts_while_one_steps():
+    sim = blockdem.Simulation(blockdem.Scenario.from_dict(block_on_table(duration=50.0)))
+    worker = threading.Thread(target=sim.step, args=(300000,))
+    worker.start()
+    refused = {"step": False, "contacts": False}
+    while worker.is_alive():
+        try:
+            sim.step(1)
+        except RuntimeError as e:
+            refused["step"] = "another thread" in str(e)
+        try:
+            sim.contacts()
+        except RuntimeError as e:
+            refused["contacts"] = "another thread" in str(e)
+        if all(refused.values()):
+            break
+    worker.join()
+    assert all(refused.values())
+    assert len(sim.contacts()) == 2  # and all is well after it
