@@ -517,3 +517,82 @@ def test_a_block_on_too_soft_contacts_stops_as_penetration():
     sim = blockdem.Simulation(scene([table_body(), block], law, 5.0, 1e-3), history=False)
     with pytest.raises(blockdem.SimulationError, match="penetration"):
         sim.run()
+
+
+def test_t_section_mass_properties():
+    # Row "L and T sections as concave polygon bodies": the T (web 0.1 x 0.5 m, flange 0.6 x
+    # 0.1 m on top), area, centroid, polar inertia by parallel axes, 1e-12 relative.
+    law = {"kn": 1e8, "ks": 1e8, "mu": 0.6, "e": 0.5, "e_meaning": "rebound", "h_s": 0.0}
+    T = [[-0.05, 0.0], [0.05, 0.0], [0.05, 0.5], [0.3, 0.5], [0.3, 0.6], [-0.3, 0.6], [-0.3, 0.5], [-0.05, 0.5]]
+    rects = [(0.1, 0.5, 0.0, 0.25), (0.6, 0.1, 0.0, 0.55)]
+    rho = 2000.0
+    sim = blockdem.Simulation(scene([table_body(), {"name": "T", "kind": "dynamic", "shape": "polygon", "vertices": T,
+                                                    "density": rho}], law, 0.01, 1e-5), history=False)
+    area = sum(w * h for w, h, _, _ in rects)
+    cy = sum(w * h * y for w, h, _, y in rects) / area
+    polar = sum(w * h * ((w * w + h * h) / 12 + x ** 2 + (y - cy) ** 2) for w, h, x, y in rects)
+    i = sim.body_id("T")
+    assert sim.masses[i] == pytest.approx(rho * area, rel=1e-12)
+    assert sim.inertias[i] == pytest.approx(rho * polar, rel=1e-12)
+    assert sim.positions[i, 1] == pytest.approx(cy, rel=1e-12) and abs(sim.positions[i, 0]) < 1e-15
+
+
+def test_sliding_below_mu_g_stays_within_the_elastic_shear():
+    # Row "sliding below mu g (0.8 mu g)": the paper's block under 0.8 mu g cos(2 pi t) does not
+    # slide: its slip relative to the table stays within 2 x m a / (2 ks) (the two shear
+    # springs' elastic travel, doubled for the dynamic overshoot).
+    s = blockdem.Scenario.from_file(SOURCE / "examples/paper/sliding.toml")
+    s.set("simulation.duration", 3.0)
+    a = 0.8 * 0.3 * G
+    s.set_motion(motion={"type": "sine", "amplitude": a, "unit": "m/s^2", "period": 1.0, "phase_deg": 90})
+    sim = blockdem.Simulation(s)
+    sim.run()
+    h = sim.history()
+    slip = h["x"][:, h["bodies"].index("block")] - h["x"][:, h["bodies"].index("table")]
+    slip -= slip[0]
+    assert np.abs(slip).max() <= 2 * 1.0 * a / (2 * 2.0e4)
+
+
+def test_no_uplift_held_just_below_the_threshold():
+    # Row "rocking onset, slow ramp": "no uplift at 0.95 for 5 s": the table's acceleration rises
+    # to 0.95 g b/h in 2 s and holds; both corners stay on the table.
+    threshold = G * 0.25
+    t = np.arange(701) * 0.01
+    accel = np.minimum(t / 2.0, 1.0) * 0.95 * threshold
+    s = blockdem.Scenario.from_dict({
+        "simulation": {"duration": 7.0, "dt": 2e-5, "gravity": G, "output_interval": 0.01},
+        "contact": {"kn": 1e9, "ks": 1e9, "mu": 2.0, "e": 0.2, "e_meaning": "paper", "h_s": 1.0},
+        "bodies": [dict(table_body(), density=1536.0),
+                   {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": 0.4, "height": 1.6,
+                    "center": [0.0, 0.8], "density": 1536.0}]})
+    s.set_motion(accel, dt=0.01)
+    sim = blockdem.Simulation(s, history=False)
+    sim.step(int(0.2 / sim.dt))
+    while not sim.done:
+        sim.step(250)
+        assert len(sim.contacts()) == 2, f"lifted at t = {sim.t}"
+
+
+def test_bonded_block_breaks_in_tension_at_sigma_t_times_area():
+    # Row "direct tension of a bonded block, table accelerating up": a 100 kg block bonded under
+    # a driven ceiling accelerating up at 100 t m/s^2; the bond breaks at sigma_t A = 5000 N
+    # (sigma_t = 1e4 Pa, A = 0.5 m x 1 m), tolerance 1%.
+    # (h_n = 0.9: a scenario takes h_n below 1; the C++ test sets 1 on the model itself.)
+    contact = dict(joint_contact(1e9, 5e8, 0.6), cohesion=1e5, tensile_strength=1e4, h_n=0.9)
+    bodies = [{"name": "ceiling", "kind": "driven", "shape": "rectangle", "width": 1.0, "height": 0.2,
+               "center": [0.0, 0.1], "density": 1000.0, "bonded": True},
+              {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": 0.5, "height": 0.2,
+               "center": [0.0, -0.1], "mass": 100.0, "bonded": True}]
+    s = derived_step_scene(bodies, contact, 0.6)
+    s.set_motion(np.arange(61) * 0.01 * 100.0, dt=0.01, direction="vertical")
+    sim = blockdem.Simulation(s, history=False)
+    intact = 1   # BondState::intact
+    assert (sim.contacts()["bond"] == intact).sum() == 2
+    last_pull = None
+    while not sim.done:
+        c = sim.contacts()
+        if (c["bond"] == intact).sum() < 2:
+            break
+        last_pull = -c["normal_force"].sum()   # the normal points from the ceiling (a) down: a pull is < 0
+        sim.step(10)
+    assert last_pull == pytest.approx(5000.0, rel=0.01)
