@@ -52,8 +52,22 @@ public:
         };
         LoadedScenario loaded = scenario.load(true);
         run_ = std::make_unique<ScenarioRun>(std::move(loaded), request, history);
+        writes_files_ = out_dir.has_value();
         step(0);  // the state at t = 0 complete (accelerations included) before anything reads it
     }
+
+    // A run with files that is dropped before finish() ends them as an interrupted run does
+    // (rows flushed, summary.json written), so that no buffered row is lost.
+    ~Simulation() {
+        if (!writes_files_ || !run_ || run_->finished() || !failure_.empty()) return;
+        try {
+            run_->finish();
+        } catch (const std::exception&) {
+            // (A destructor cannot raise; a failed write was the disk's, as in the CLI's end.)
+        }
+    }
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
 
     std::int64_t step(std::int64_t steps) {
         if (steps < 0) throw py::value_error(fmt::format("step(n) needs n >= 0, got {}", steps));
@@ -170,6 +184,7 @@ private:
     int threads_ = 1;
     std::string failure_;   ///< what stopped the run; empty while it may go on
     std::atomic<bool> stepping_{false};   ///< a thread is in step() with the GIL released
+    bool writes_files_ = false;           ///< out_dir was given
 };
 
 }  // namespace

@@ -1,9 +1,9 @@
 #pragma once
 // The energy balance of a run. Stored energies are the current values; dissipated energies and
 // the table's work are running sums. With E0 the initial stored energy,
-//   kinetic + gravitational + elastic + dissipated + removed - table_work - tilt_work = E0
-// (with external_work added to the table's work when a caller applies loads: world/external_loads.hpp)
-// (up to the scheme's error), where removed is the kinetic and gravitational energy that bodies
+//   kinetic + gravitational + elastic + dissipated + removed - table_work - tilt_work - external_work = E0
+// (up to the scheme's error), where external_work is what a caller's loads and velocity changes did
+// (world/external_loads.hpp; 0 in a run of the CLI), removed is the kinetic and gravitational energy that bodies
 // leaving the model took with them (world/model_domain.hpp), gravitational is -m g . x, and
 // tilt_work is the work a turning gravity (a tilting table, tilt_rate_deg_s) did on the bodies,
 // -integral of dg/dt . sum(m x) dt (world/step.cpp),

@@ -205,3 +205,15 @@ def test_a_second_thread_cannot_step_or_read_contacts_while_one_steps():
     worker.join()
     assert all(refused.values())
     assert len(sim.contacts()) == 2  # and all is well after it
+
+
+def test_a_run_with_files_dropped_before_finish_ends_them(tmp_path):
+    sim = blockdem.Simulation(blockdem.Scenario.from_dict(block_on_table()), out_dir=tmp_path / "run")
+    sim.step(500)
+    del sim
+    gc.collect()
+    import json
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    assert summary["status"] == "interrupted" and summary["time_s"] == pytest.approx(0.05)
+    rows = (tmp_path / "run" / "history.csv").read_text().strip().splitlines()
+    assert rows[-1].startswith("0.05,")  # the time reached is the last row
