@@ -10,6 +10,9 @@ DEMO_OUT ?= out/demo
 CORE_PACKAGES := g++ cmake make pkg-config libtomlplusplus-dev libcli11-dev libfmt-dev \
                  nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev \
                  libopenmpi-dev openmpi-bin libhdf5-dev libglpk-dev libdxflib-dev
+# Packages for the Python module and its tests (docs/python.md): pybind11 builds it, numpy is its
+# arrays, pytest runs tests/python, setuptools and wheel serve `pip install --no-build-isolation .`.
+PYTHON_PACKAGES := pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools python3-wheel
 # Packages for the checks (docs/checks.md): clang 14 with its sanitizer and libFuzzer runtimes
 # (libclang-rt-14-dev, only recommended by clang-14), its OpenMP runtime for the sanitized build,
 # and llvm-symbolizer (llvm-14) for readable sanitizer reports. `make test` runs the fuzz smoke.
@@ -24,12 +27,12 @@ SANITIZE_DIR ?= build-sanitize
 FUZZ_DIR ?= $(BUILD_DIR)/fuzz
 FUZZ_SECONDS ?= 300
 
-.PHONY: all deps deps-view deps-check build test demo bench fuzz sanitize clean
+.PHONY: all deps deps-view deps-check build test demo bench fuzz sanitize clean python
 
 all: build
 
 deps:
-	@scripts/install-deps.sh $(CORE_PACKAGES)
+	@scripts/install-deps.sh $(CORE_PACKAGES) $(PYTHON_PACKAGES)
 
 deps-view:
 	@scripts/install-deps.sh $(VIEW_PACKAGES)
@@ -40,6 +43,11 @@ deps-check:
 build: deps
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE)
 	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# The module blockdem for this user (python3 -m site --user-site); without it, use
+# PYTHONPATH=$(BUILD_DIR)/python.
+python: build
+	cmake --install $(BUILD_DIR) --component python --prefix "$$(/usr/bin/python3 -m site --user-site)"
 
 test: build deps-view deps-check
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS)

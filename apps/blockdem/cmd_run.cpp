@@ -10,7 +10,7 @@
 
 #include "apps/blockdem/commands.hpp"
 #include "apps/blockdem/stop_signal.hpp"
-#include "io/run_scenario.hpp"
+#include "run/run_scenario.hpp"
 
 namespace blockdem::cli {
 namespace {

@@ -3,7 +3,7 @@
 //   /monitor  the response monitor behind summary.json (peaks, onsets, supporters, outcomes);
 //   /vtk      the times of the VTK frames written so far.
 // A recorder or monitor added later with state of its own writes a StatePart like these and
-// adds it to the run's list in io/run_scenario.cpp.
+// adds it to the run's list in run/scenario_run.cpp.
 #include "io/state_file.hpp"
 #include "io/vtk_writer.hpp"
 #include "world/response_monitor.hpp"

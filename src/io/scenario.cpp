@@ -17,6 +17,7 @@
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/scenario_folder.hpp"
+#include "io/series_motion_keys.hpp"
 #include "io/time_series_csv.hpp"
 #include "laws/material_stiffness.hpp"
 #include "laws/restitution.hpp"
@@ -449,11 +450,12 @@ double read_period(TableReader& t) {
 
 ComponentMotion read_component(TableReader t, const std::filesystem::path& scenario_dir) {
     const std::string type =
-        t.choice("type", {"sine", "one_sine", "one_cosine", "ricker", "csv", "record", "synthetic", "none"}, "");
+        t.choice("type", {"sine", "one_sine", "one_cosine", "ricker", "csv", "series", "record", "synthetic", "none"}, "");
     ComponentMotion motion = RestMotion{};
     if (type == "record") return read_record_motion(t, scenario_dir);
     if (type == "synthetic") return read_synthetic_motion(t);
     if (type == "csv") return read_time_series_csv_keys(t, scenario_dir);
+    if (type == "series") return read_series_motion_keys(t);
     if (type == "sine") {
         SineMotion m;
         m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
@@ -538,9 +540,14 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
 }
 
 LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle) {
+    return load_scenario(load_toml_file(file), file, overrides, settle);
+}
+
+LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                             bool settle) {
     LoadedScenario s;
     s.file = file;
-    s.root = load_toml_file(file);
+    s.root = std::move(root);
     try {
         apply_overrides(s.root, overrides);
     } catch (const InputError& e) {

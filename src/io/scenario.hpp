@@ -47,5 +47,9 @@ struct LoadedScenario {
 /// takes the settled state from its state file).
 LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                              bool settle = true);
+/// The same for a scenario already parsed (the Python module's from_toml and from_dict): `file`
+/// names it in messages, and its folder resolves relative file names.
+LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                             bool settle = true);
 
 }  // namespace blockdem

@@ -6,7 +6,7 @@
 
 #include "io/input_error.hpp"
 #include "io/overrides.hpp"
-#include "io/run_scenario.hpp"
+#include "run/run_scenario.hpp"
 #include "io/scenario.hpp"
 #include "study/convergence_csv.hpp"
 

@@ -210,16 +210,27 @@ void run_housner(const World& w, const SweepScenario& scenario, const CaseOption
 
 }  // namespace
 
-SweepScenario load_sweep_scenario(const std::filesystem::path& file) {
+namespace {
+
+SweepScenario sweep_scenario_from(LoadedScenario loaded, const std::filesystem::path& file) {
     SweepScenario s;
     s.file = file;
-    LoadedScenario loaded = load_scenario(file, {});
     s.root = loaded.root;
     // A bad initial state is bad input of the sweep, found before any case runs.
     if (!loaded.initial_state.empty()) start_case_from_state(loaded.world, loaded.initial_state, file);
     for (std::size_t i = 0; i < loaded.world.bodies.size(); ++i)
         if (loaded.world.bodies.kind[i] == BodyKind::dynamic) s.body_names.push_back(loaded.world.bodies.name[i]);
     return s;
+}
+
+}  // namespace
+
+SweepScenario load_sweep_scenario(const std::filesystem::path& file) {
+    return sweep_scenario_from(load_scenario(file, {}), file);
+}
+
+SweepScenario load_sweep_scenario(toml::table root, const std::filesystem::path& file) {
+    return sweep_scenario_from(load_scenario(std::move(root), file, {}), file);
 }
 
 CaseResult run_case(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c,

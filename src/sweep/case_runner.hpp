@@ -38,6 +38,9 @@ struct SweepScenario {
 
 /// Reads and validates the unvaried scenario. Throws InputError.
 SweepScenario load_sweep_scenario(const std::filesystem::path& file);
+/// The same for a scenario already parsed (the Python module's blockdem.sweep): `file` names it
+/// in messages, and its folder resolves relative file names.
+SweepScenario load_sweep_scenario(toml::table root, const std::filesystem::path& file);
 
 struct BodyOutcome {
     bool overturned = false;

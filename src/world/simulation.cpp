@@ -4,6 +4,9 @@
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <limits>
+#include <stdexcept>
+#include <utility>
 
 #include "world/step.hpp"
 
@@ -49,64 +52,115 @@ void finish_all(const World& w, const std::vector<Recorder*>& recorders) {
 
 }  // namespace
 
-RunEnd run_simulation(World& w, const RunOptions& options) {
-    using clock = std::chrono::steady_clock;
-    const auto started = clock::now();
-    auto last_report = started;
-    const std::int64_t steps = total_steps(w);
-    const std::int64_t every = steps_per_output(w);
-    auto stop_requested = [&] { return options.stop_requested && options.stop_requested->load(std::memory_order_relaxed); };
-    RunEnd end = RunEnd::completed;
-    const std::int64_t first = w.step_index;
-    try {
-        for (std::int64_t n = first;; ++n) {
-            // (A restored run does not save again the state it started from.)
-            if (options.on_save_point && (n > first || first == 0) && save_point_due(options.save_points, n))
-                options.on_save_point(w, std::find(options.save_points.steps.begin(), options.save_points.steps.end(), n) !=
-                                                 options.save_points.steps.end()
-                                             ? SaveReason::at_time
-                                             : SaveReason::every);
-            step_begin(w);
-            if (options.on_step) options.on_step(w);
-            const bool output_now = n % every == 0 || n == steps;
-            if (output_now)
-                for (Recorder* r : options.recorders) r->record(w);
-            if (n == steps) break;
-            if (stop_requested()) {
-                // The time reached is the last row of every file, also between output times.
-                if (!output_now)
-                    for (Recorder* r : options.recorders) r->record(w);
-                if (options.on_save_point) {
-                    // The world stays at the time recorded last (the summary reports it); the
-                    // state to go on from is the one after this step.
-                    World next = w;
-                    step_end(next);
-                    options.on_save_point(next, SaveReason::stopped);
-                }
-                end = RunEnd::stopped;
-                break;
-            }
-            step_end(w);
-            if (options.on_progress && (n & 255) == 0) {
-                const auto now = clock::now();
-                if (now - last_report > std::chrono::seconds(1)) {
-                    last_report = now;
-                    options.on_progress({w.time_s, w.settings.duration_s, w.step_index,
-                                         std::chrono::duration<double>(now - started).count()});
-                }
-            }
+RunLoop::RunLoop(World& w, RunOptions options)
+    : w_(w),
+      options_(std::move(options)),
+      steps_(total_steps(w)),
+      every_(steps_per_output(w)),
+      first_(w.step_index),
+      started_(std::chrono::steady_clock::now()),
+      last_report_(started_) {}
+
+void RunLoop::begin_step() {
+    const std::int64_t n = w_.step_index;
+    // (A restored run does not save again the state it started from.)
+    const auto& at = options_.save_points.steps;
+    if (options_.on_save_point && (n > first_ || first_ == 0) && save_point_due(options_.save_points, n))
+        options_.on_save_point(w_, std::find(at.begin(), at.end(), n) != at.end() ? SaveReason::at_time : SaveReason::every);
+    step_begin(w_);
+    begun_ = true;
+    if (options_.on_step) options_.on_step(w_);
+    output_now_ = n % every_ == 0 || n == steps_;
+    if (output_now_)
+        for (Recorder* r : options_.recorders) r->record(w_);
+    if (n == steps_) ended_ = true;
+}
+
+void RunLoop::end_step() {
+    const std::int64_t n = w_.step_index;
+    step_end(w_);
+    begun_ = false;
+    if (options_.on_progress && (n & 255) == 0) {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_report_ > std::chrono::seconds(1)) {
+            last_report_ = now;
+            options_.on_progress({w_.time_s, w_.settings.duration_s, w_.step_index,
+                                  std::chrono::duration<double>(now - started_).count()});
         }
-    } catch (...) {
-        // Keep what was written readable; a second failure (the same full disk) must not hide
-        // the first.
+    }
+}
+
+void RunLoop::fail_and_rethrow() {
+    failed_ = true;
+    ended_ = true;
+    // Keep what was written readable; a second failure (the same full disk) must not hide the
+    // first.
+    if (!finished_) {
+        finished_ = true;
         try {
-            finish_all(w, options.recorders);
+            finish_all(w_, options_.recorders);
         } catch (...) {
         }
-        throw;
     }
-    finish_all(w, options.recorders);
-    return end;
+    throw;
+}
+
+std::int64_t RunLoop::advance(std::int64_t steps) {
+    if (failed_) throw std::logic_error("the run failed earlier: it cannot go on");
+    std::int64_t taken = 0;
+    try {
+        if (!begun_ && !ended_) begin_step();
+        auto stop_requested = [&] {
+            return options_.stop_requested && options_.stop_requested->load(std::memory_order_relaxed);
+        };
+        while (!ended_ && taken < steps) {
+            if (stop_requested()) {
+                stop();
+                break;
+            }
+            end_step();
+            ++taken;
+            begin_step();
+        }
+    } catch (...) {
+        fail_and_rethrow();
+    }
+    return taken;
+}
+
+void RunLoop::stop() {
+    if (ended_) return;
+    try {
+        if (!begun_) begin_step();
+        if (ended_) return;  // (the start was the end)
+        // The time reached is the last row of every file, also between output times.
+        if (!output_now_)
+            for (Recorder* r : options_.recorders) r->record(w_);
+        if (options_.on_save_point) {
+            // The world stays at the time recorded last (the summary reports it); the state to
+            // go on from is the one after this step.
+            World next = w_;
+            step_end(next);
+            options_.on_save_point(next, SaveReason::stopped);
+        }
+        end_ = RunEnd::stopped;
+        ended_ = true;
+    } catch (...) {
+        fail_and_rethrow();
+    }
+}
+
+void RunLoop::finish() {
+    if (finished_) return;
+    finished_ = true;
+    finish_all(w_, options_.recorders);
+}
+
+RunEnd run_simulation(World& w, const RunOptions& options) {
+    RunLoop loop(w, options);
+    loop.advance(std::numeric_limits<std::int64_t>::max());
+    loop.finish();
+    return loop.end();
 }
 
 }  // namespace blockdem

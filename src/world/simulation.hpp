@@ -7,6 +7,7 @@
 // Save points (state files, io/state_file.hpp) fall between two steps, where the state is whole
 // (world/world_state.hpp); a run restored from one goes on from its step index.
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -63,6 +64,48 @@ std::int64_t steps_per_output(const World& w);
 std::int64_t output_rows_before(const World& w, std::int64_t n);
 /// The step index whose state is the time t_s (the nearest step, within the run).
 std::int64_t step_at_time(const World& w, double t_s);
+
+/// The run loop cut into pieces a caller can take one at a time (the Python module steps a run
+/// n steps at a time and reads the world in between). It pauses where the state at t is
+/// complete (after step_begin and the records of t, world/step.hpp), so that positions,
+/// velocities and accelerations read between two calls are all at w.time_s.
+class RunLoop {
+public:
+    /// The loop starts at w.step_index (0, or where a restored state left off). Nothing runs yet.
+    RunLoop(World& w, RunOptions options);
+    /// Takes up to `steps` steps (0: only completes the state at the start), fewer at the end of
+    /// the run or on a stop request. Returns the steps taken. An exception from the step or a
+    /// recorder finishes every recorder (the first exception propagates) and fails the loop:
+    /// advancing it again throws std::logic_error.
+    std::int64_t advance(std::int64_t steps);
+    /// Ends the run at the time reached, as a stop request does (RunEnd::stopped): the state at
+    /// that time is the last record, and the state to go on from is offered as a save point.
+    void stop();
+    /// Finishes every recorder, once (the first exception propagates).
+    void finish();
+    bool ended() const { return ended_; }
+    bool failed() const { return failed_; }
+    RunEnd end() const { return end_; }
+
+private:
+    void begin_step();
+    void end_step();
+    void fail_and_rethrow();
+
+    World& w_;
+    RunOptions options_;
+    std::int64_t steps_;         ///< total_steps(w)
+    std::int64_t every_;         ///< steps_per_output(w)
+    std::int64_t first_;         ///< the step index the loop started from
+    bool begun_ = false;         ///< the state at w.step_index is complete (begin_step ran)
+    bool output_now_ = false;    ///< that state was recorded
+    bool ended_ = false;
+    bool failed_ = false;
+    bool finished_ = false;
+    RunEnd end_ = RunEnd::completed;
+    std::chrono::steady_clock::time_point started_;
+    std::chrono::steady_clock::time_point last_report_;
+};
 
 /// Runs from w.step_index (0, or where a restored state left off) to the end, or until
 /// *options.stop_requested turns true (RunEnd::stopped, after the current step, with a last

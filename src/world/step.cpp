@@ -238,11 +238,13 @@ bool update_bodies(World& w) {
     w.gravity_now_m_s2 = gravity_at(w.settings, w.time_s);
     const Vec2 g = w.gravity_now_m_s2;
     const bool starting = !w.velocities_staggered;
+    const bool external = w.external_loads.any();
     // Body by body: its force sum, its velocity, its energy terms, while its data is at hand
     // (parallel.hpp, rules 1 to 3; the same arithmetic as the three separate passes).
     const BodyEnergy bodies = deterministic_sum(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t p) {
         const auto i = static_cast<std::size_t>(p);
         sum_body_force(w, i);
+        if (external) add_external_load(w, i);
         update_body_velocity(w.bodies, i, w.dt_s, starting);
         return body_energy_terms(w.bodies, i, g);
     });
@@ -347,6 +349,7 @@ void step_begin(World& w) {
 
 void step_end(World& w) {
     PhaseClock clock(w.timings);
+    if (w.external_loads.any()) w.energy.external_work_j += external_load_work(w);
     w.energy.table_work_j += update_positions(w);
     w.time_s += w.dt_s;
     ++w.step_index;

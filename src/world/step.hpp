@@ -5,7 +5,8 @@
 //   3. contacts, pair by pair in one pass: the narrow phase (contact points with feature ids,
 //      matched with last step's for their history), then the contact law into the pair's slot;
 //   4. bodies, one pass: each body's gravity plus its pairs' slots in table order
-//      (deterministic), its velocity to t + dt/2, its energy at t; then the stability check;
+//      (deterministic), plus a caller's external loads if any (world/external_loads.hpp), its
+//      velocity to t + dt/2, its energy at t; then the stability check;
 //      [the state at t is complete here: recorders read it]
 //   5. positions to t + dt (driven bodies exactly), and time advances.
 #include "world/world.hpp"

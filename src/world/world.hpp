@@ -13,6 +13,7 @@
 #include "contact/sub_contacts.hpp"
 #include "dynamics/stability_rows.hpp"
 #include "world/energy_ledger.hpp"
+#include "world/external_loads.hpp"
 #include "world/model.hpp"
 #include "world/model_domain.hpp"
 
@@ -182,6 +183,7 @@ struct World {
     StabilityRows stability_rows;         ///< scratch of the live stable-step check
     ModelDomain domain;                   ///< the model's extent and the bodies that left it
     StepTimings timings;
+    ExternalLoads external_loads;         ///< loads a caller applies (the Python module); none by default
 
     std::uint32_t body_id(const std::string& name) const;  ///< throws std::out_of_range
 };

@@ -8,8 +8,8 @@
 #include <filesystem>
 
 #include "io/input_error.hpp"
-#include "io/run_scenario.hpp"
 #include "io/scenario.hpp"
+#include "run/run_scenario.hpp"
 
 namespace blockdem {
 namespace {

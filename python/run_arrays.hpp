@@ -1,0 +1,31 @@
+#pragma once
+// The run's data as numpy: zero-copy read-only views of the world's body arrays, the contact
+// points as a structured array, the energy ledger and the rows kept in memory (run/run_trace.hpp).
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include "geometry/vec2.hpp"
+#include "run/scenario_run.hpp"
+#include "world/energy_ledger.hpp"
+#include "world/world.hpp"
+
+namespace blockdem::python {
+
+/// An N x 2 read-only view of a Vec2 array; `owner` (the Simulation) is kept alive by it.
+pybind11::array vec2_view(const std::vector<Vec2>& values, const pybind11::object& owner);
+/// An N read-only view of a double array.
+pybind11::array scalar_view(const std::vector<double>& values, const pybind11::object& owner);
+/// Every contact point of the table now (the two end points of each pair; the interior points
+/// of sub-contacts are not listed).
+pybind11::array contacts_array(const World& w);
+/// The ledger's terms [J] with the balance's residual and relative error.
+pybind11::dict energy_dict(const EnergyLedger& e);
+/// The rows of the run's RunTrace as arrays; raises when the run keeps none.
+pybind11::dict history_dict(const ScenarioRun& run);
+/// A JSON value (the summary) as Python dicts, lists and numbers.
+pybind11::object json_to_python(const nlohmann::json& value);
+
+}  // namespace blockdem::python
