@@ -139,18 +139,21 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
         const Vec3 side = cross(p1 - p0, n);  // outward in the face's plane, |side| = the edge's length
         // A corner on the side plane to round-off (faces that coincide, as drums stacked) counts
         // as inside: 1e-9 of the edge, so that it is neither dropped nor doubled by a crossing.
-        const double offset = dot(side, p0) + 1e-9 * dot(side, side);
+        const double plane = dot(side, p0);
+        const double slack = 1e-9 * dot(side, side);
         const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
         clipped.clear();
         for (std::size_t i = 0; i < polygon.size(); ++i) {
             const ClipCorner3d& here = polygon[i];
             const ClipCorner3d& next = polygon[(i + 1) % polygon.size()];
-            const double dh = dot(side, here.point_m) - offset;
-            const double dn = dot(side, next.point_m) - offset;
-            if (dh <= 0.0) clipped.push_back(here);
-            if ((dh <= 0.0) == (dn <= 0.0)) continue;
+            const double dh = dot(side, here.point_m) - plane;
+            const double dn = dot(side, next.point_m) - plane;
+            const bool here_in = dh <= slack;
+            if (here_in) clipped.push_back(here);
+            if (here_in == (dn <= slack)) continue;
             ClipCorner3d c;
-            c.point_m = here.point_m + (dh / (dh - dn)) * (next.point_m - here.point_m);
+            // On the plane itself: the slack decides in or out, not where the crossing is.
+            c.point_m = here.point_m + std::clamp(dh / (dh - dn), 0.0, 1.0) * (next.point_m - here.point_m);
             if (!here.line_is_reference) {  // an incident edge crossing this reference edge
                 c.feature_incident = here.line_after;
                 c.feature_reference = ref_edge;
@@ -161,8 +164,8 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
                 c.feature_reference = feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(nearer_u ? u : v));
                 c.feature_incident = feature_3d(FeatureKind3d::face, inc_face);
             }
-            c.line_after = dh <= 0.0 ? ref_edge : here.line_after;
-            c.line_is_reference = dh <= 0.0 ? true : here.line_is_reference;
+            c.line_after = here_in ? ref_edge : here.line_after;
+            c.line_is_reference = here_in ? true : here.line_is_reference;
             clipped.push_back(c);
         }
         std::swap(polygon, clipped);
