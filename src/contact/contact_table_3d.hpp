@@ -31,6 +31,7 @@ struct ContactPoint3d {
     double normal_dashpot_n = 0.0;  ///< [N] last step's normal dashpot force on b
     ShearHistory3d shear;           ///< [N] shear spring and dashpot force on b, in the tangent plane
     bool sliding = false;           ///< this step's state, for output
+    Vec3 force_n;                   ///< [N] this step's force on b (minus it on a), world frame
 };
 
 /// Gives each point of current (sorted by key, fresh from the narrow phase, history zero) the

@@ -42,9 +42,9 @@ struct WorldScratch3d {
     std::vector<Aabb3d> boxes;
     std::vector<std::uint8_t> is_static;
     std::vector<BodyPair> pairs;
-    std::vector<ContactGeometry3d> geometry;
+    std::vector<std::vector<ContactGeometry3d>> pair_points;  ///< per candidate pair, its points (kept: no allocation)
     std::vector<ContactPoint3d> previous;
-    ContactScratch3d clipping;
+    std::vector<ContactScratch3d> clipping;                   ///< one per thread
     GridBroadPhase3d broad_phase;
 };
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <numbers>
 #include <vector>
@@ -15,7 +16,12 @@
 #include "analysis/rigid_plastic_sliding.hpp"
 #include "laws/restitution.hpp"
 #include "support/table_run_3d.hpp"
+#include "scenes/brick_wall_3d.hpp"
 #include "world/step_3d.hpp"
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace blockdem {
 namespace {
@@ -235,6 +241,50 @@ TEST(World3d, EdgeOnEdgeCollisionKeepsTheMomenta) {
                 "kg m^2/s; upper box vz %.4f m/s after\n",
                 steps_in_contact, length(after.linear_kg_m_s - before.linear_kg_m_s),
                 length(after.angular_kg_m2_s - before.angular_kg_m2_s), w.bodies[1].velocity_m_s.z);
+}
+
+// The state of every body as bytes, and the ledger's.
+std::vector<unsigned char> state_bytes(const World3d& w) {
+    std::vector<unsigned char> bytes;
+    auto put = [&](const auto& v) {
+        const auto* p = reinterpret_cast<const unsigned char*>(&v);
+        bytes.insert(bytes.end(), p, p + sizeof v);
+    };
+    for (const RigidBody3d& b : w.bodies) {
+        put(b.position_m);
+        put(b.orientation);
+        put(b.velocity_m_s);
+        put(b.angular_momentum_kg_m2_s);
+    }
+    for (const ContactPoint3d& c : w.contacts) put(c.shear.spring_n);
+    put(w.ledger);
+    return bytes;
+}
+
+TEST(World3d, BrickWallIsTheSameBytesAtOneAndTwoThreads) {
+    // 300 boxes on a shaken base (more than 2048 points, so the loops do share out), 300 steps:
+    // each parallel loop writes its own slots and totals go by fixed chunks (world/parallel.hpp).
+#ifndef _OPENMP
+    GTEST_SKIP() << "built without OpenMP";
+#else
+    scenes::BrickWall3dDef def;
+    def.courses = 6;
+    def.bricks_per_course = 25;
+    def.shaking = SineMotion{3.0, 0.2, 0.0, 0.0, 0.0};
+    std::vector<std::vector<unsigned char>> runs;
+    std::size_t points = 0;
+    const int threads_before = omp_get_max_threads();
+    for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        World3d w = scenes::brick_wall_3d(def);
+        for (int i = 0; i < 300; ++i) step_3d(w);
+        points = w.contacts.size();
+        runs.push_back(state_bytes(w));
+    }
+    omp_set_num_threads(threads_before);
+    EXPECT_GT(points, 2048u);
+    EXPECT_EQ(runs[0], runs[1]);
+#endif
 }
 
 }  // namespace
