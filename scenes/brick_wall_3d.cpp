@@ -19,9 +19,12 @@ World3d brick_wall_3d(const BrickWall3dDef& def) {
     // Bricks of one shape: its hull once, then moved (the hull search is the costly part).
     const RigidBody3d brick = make_rigid_body_3d("brick", box_vertices(b, {}), def.density_kg_m3);
     for (int c = 0; c < def.courses; ++c) {
-        const double shift_m = (c % 2 == 1) ? -0.5 * b.x : 0.0;  // running bond
+        // Running bond: odd courses shifted by half a brick and one brick shorter, so that no
+        // brick overhangs the one below (the ends step back).
+        const bool odd = c % 2 == 1;
+        const double shift_m = odd ? 0.5 * b.x : 0.0;
         for (int y = 0; y < def.wythes; ++y) {
-            for (int k = 0; k < def.bricks_per_course; ++k) {
+            for (int k = 0; k < def.bricks_per_course - (odd ? 1 : 0); ++k) {
                 RigidBody3d r = brick;
                 r.name = fmt::format("brick_{}_{}_{}", c, y, k);
                 r.position_m = {(k + 0.5) * b.x + shift_m, (y + 0.5) * b.y, (c + 0.5) * b.z};

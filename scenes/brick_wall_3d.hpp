@@ -13,7 +13,10 @@ struct BrickWall3dDef {
     double density_kg_m3 = 2000.0;         ///< [kg/m^3]
     ContactParameters contact{.kn_N_m = 1e8, .ks_N_m = 1e8, .mu = 0.6, .h_n = 0.3, .h_s = 0.3};
     ComponentMotion shaking = SineMotion{1.0, 0.5, 0.0, 0.0, 0.0};  ///< along x
-    double dt_s = 1e-4;                    ///< [s]
+    /// [s] Measured: the settling wall's ledger closes to 3e-4 at 2.5e-5 s and 1.4e-4 at 1.25e-5 s,
+    /// but the shear dashpots of points with little effective mass go unstable at 5e-5 s (1.8e-2,
+    /// growing); a 3-D critical time step (as dynamics/critical_time_step.hpp in 2-D) is not built yet.
+    double dt_s = 2e-5;
 };
 
 /// The wall, every brick placed touching its neighbours; body 0 is the driven slab.

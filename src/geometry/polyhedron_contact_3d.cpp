@@ -23,8 +23,11 @@ Interval project(const PosedPolyhedron& p, Vec3 axis) {
     return r;
 }
 
-// The least overlap over the face normals of r: the separation (minus the overlap) of o beyond
-// each face's plane, the largest kept. Sets apart when a face normal separates them (on either side).
+// The least overlap over the face normals of r: how far o's deepest vertex lies beyond each
+// face's plane (negative: below it), the largest kept. Only the outward side of each face is
+// tested: the faces of A, the faces of B turned over and the edge pairs' cross products are the
+// normals of the Minkowski difference A - B, so if the bodies are apart one of these shows it
+// (the edge axes are tested both ways). Sets apart when a face plane separates them.
 struct FaceAxis {
     double separation_m = -std::numeric_limits<double>::infinity();
     std::uint32_t face = 0;
@@ -32,12 +35,12 @@ struct FaceAxis {
 
 FaceAxis best_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, bool& apart) {
     FaceAxis best;
+    const std::size_t vertices = o.shape->vertices_m.size();
     for (std::uint32_t f = 0; f < r.shape->faces.size(); ++f) {
         const Vec3 n = r.face_normals[f];
-        const Interval ri = project(r, n);
-        const Interval oi = project(o, n);
-        if (oi.hi < ri.lo) { apart = true; return best; }  // beyond the far side: another axis would say so too
-        const double separation = oi.lo - ri.hi;
+        double deepest = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < vertices; ++i) deepest = std::min(deepest, dot(n, o.vertices_m[i]));
+        const double separation = deepest - dot(n, r.vertices_m[r.shape->faces[f][0]]);
         if (separation > 0.0) { apart = true; return best; }
         if (separation > best.separation_m) best = {separation, f};
     }
