@@ -12,9 +12,8 @@ World3d brick_wall_3d(const BrickWall3dDef& def) {
     const Vec3 b = def.brick_m;
     const double length_m = (def.bricks_per_course + 1) * b.x;
     const double width_m = def.wythes * b.y + 2.0 * b.y;
-    add_body(w,
-             make_rigid_body_3d("base", box_vertices({length_m, width_m, b.z}, {0.5 * length_m - b.x, 0.5 * def.wythes * b.y, -0.5 * b.z}),
-                                def.density_kg_m3),
+    const Vec3 base_center_m{0.5 * length_m - b.x, 0.5 * def.wythes * b.y, -0.5 * b.z};
+    add_body(w, make_rigid_body_3d("base", box_vertices({length_m, width_m, b.z}, base_center_m), def.density_kg_m3),
              BodyKind3d::driven);
     // Bricks of one shape: its hull once, then moved (the hull search is the costly part).
     const RigidBody3d brick = make_rigid_body_3d("brick", box_vertices(b, {}), def.density_kg_m3);

@@ -15,7 +15,8 @@ struct Grid3d {
 
     // Clamped as doubles, then cast: a body 1e300 m away must not reach an undefined cast.
     std::int64_t index(double offset_m, std::int64_t count) const {
-        return static_cast<std::int64_t>(std::clamp(std::floor(offset_m / cell_m), 0.0, static_cast<double>(count - 1)));
+        const double cell = std::clamp(std::floor(offset_m / cell_m), 0.0, static_cast<double>(count - 1));
+        return static_cast<std::int64_t>(cell);
     }
     std::int64_t ix(double x) const { return index(x - origin.x, nx); }
     std::int64_t iy(double y) const { return index(y - origin.y, ny); }

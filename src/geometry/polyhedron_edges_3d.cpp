@@ -17,7 +17,8 @@ PolyhedronEdges polyhedron_edges(const Polyhedron& p) {
             const std::size_t v = face[(k + 1) % face.size()];
             const auto key = std::minmax(u, v);
             auto [it, added] = number.try_emplace(key, static_cast<std::uint32_t>(r.edges.size()));
-            if (added) r.edges.push_back({static_cast<std::uint32_t>(key.first), static_cast<std::uint32_t>(key.second)});
+            if (added)
+                r.edges.push_back({static_cast<std::uint32_t>(key.first), static_cast<std::uint32_t>(key.second)});
             r.face_edges[f].push_back(it->second);
         }
     }

@@ -188,8 +188,9 @@ LawTotals contact_law(World3d& w, ContactPoint3d& c, Vec3 table_step_m) {
 // table's order (serially), so that each body's sum has the same terms in the same order
 // whatever the thread count.
 void apply_contact_law(World3d& w, Vec3 table_step_m) {
-    const LawTotals t = deterministic_sum(static_cast<std::ptrdiff_t>(w.contacts.size()),
-                                          [&](std::ptrdiff_t i) { return contact_law(w, w.contacts[i], table_step_m); });
+    const auto points = static_cast<std::ptrdiff_t>(w.contacts.size());
+    const LawTotals t =
+        deterministic_sum(points, [&](std::ptrdiff_t i) { return contact_law(w, w.contacts[i], table_step_m); });
     for (const ContactPoint3d& c : w.contacts) {
         RigidBody3d& ba = w.bodies[c.key.body_a];
         RigidBody3d& bb = w.bodies[c.key.body_b];

@@ -100,7 +100,8 @@ TEST(PolyhedronContact3d, SeparatedBodiesGiveNoPoints) {
     const Posed a(box_vertices({3, 1, 1}, {0, 0, -half_diagonal}, from_rotation_vector({quarter, 0, 0})));
     const Posed b_apart(box_vertices({1, 3, 1}, {0, 0, half_diagonal + 1e-3}, from_rotation_vector({0, quarter, 0})));
     EXPECT_TRUE(contact(a, b_apart).empty());
-    const Posed b_touching(box_vertices({1, 3, 1}, {0, 0, half_diagonal - 1e-3}, from_rotation_vector({0, quarter, 0})));
+    const Posed b_touching(
+        box_vertices({1, 3, 1}, {0, 0, half_diagonal - 1e-3}, from_rotation_vector({0, quarter, 0})));
     const auto points = contact(a, b_touching);
     ASSERT_EQ(points.size(), 1u);
     EXPECT_EQ(feature_kind(points[0].feature_a), FeatureKind3d::edge);

@@ -209,7 +209,8 @@ TEST(World3d, EdgeOnEdgeCollisionKeepsTheMomenta) {
     w.dt_s = 1e-5;
     const double quarter = std::numbers::pi / 4.0;
     const double half_diagonal = 0.1 * std::sqrt(2.0);
-    RigidBody3d lower = box("lower", {0.6, 0.2, 0.2}, {0.05, 0.0, -half_diagonal}, 10.0, from_rotation_vector({quarter, 0, 0}));
+    RigidBody3d lower =
+        box("lower", {0.6, 0.2, 0.2}, {0.05, 0.0, -half_diagonal}, 10.0, from_rotation_vector({quarter, 0, 0}));
     RigidBody3d upper =
         box("upper", {0.2, 0.5, 0.2}, {0.0, 0.07, half_diagonal + 1e-4}, 4.0, from_rotation_vector({0, quarter, 0}));
     set_initial_velocity(lower, {0.1, 0.0, 0.5}, {0.0, 0.0, 0.3});
