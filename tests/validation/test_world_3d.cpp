@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "analysis/rigid_plastic_sliding.hpp"
+#include "dynamics/critical_time_step_3d.hpp"
 #include "laws/restitution.hpp"
 #include "support/table_run_3d.hpp"
 #include "scenes/brick_wall_3d.hpp"
@@ -289,6 +290,39 @@ TEST(World3d, FreeRockingOnAFixedBoxFollowsTheHalfSpaceRun) {
     std::printf("rocking on a fixed box: %d impacts in 2 s, largest difference from the half-space run %.2e rad "
                 "(release %.4f rad), energy balance error %.2e (half-space %.2e)\n",
                 impacts, worst_rad, theta0, w.ledger.balance_error(), half_space.ledger.balance_error());
+}
+
+TEST(World3d, StableTimeStepBoundsTheCubesRowsAndTheWallsInstability) {
+    // A cube of side a and mass m flat on a fixed slab, kn only: the rows of its normal direction
+    // are g = (z / sqrt(m), I^-1/2 (r x z)) with I = m a^2 / 6 and |r x z| components a/2, so the
+    // largest row (a rotation) sums to 4 kn (sqrt(6)/2)(1 + sqrt(6)) / m, and dt = 2 / sqrt of it.
+    World3d w;
+    w.contact = {.kn_N_m = 1e6, .ks_N_m = 0.0, .mu = 0.6, .h_n = 0.0, .h_s = 0.0};
+    add_slab(w, BodyKind3d::fixed);
+    add_body(w, box("cube", {0.5, 0.5, 0.5}, {0.0, 0.0, 0.25 - 1e-5}, 100.0), BodyKind3d::dynamic);
+    step_3d(w);
+    ASSERT_EQ(w.contacts.size(), 4u);
+    const double lambda = 4.0 * 1e6 * (std::sqrt(6.0) / 2.0) * (1.0 + std::sqrt(6.0)) / 100.0;
+    EXPECT_NEAR(live_time_step_3d(w).dt_s, 2.0 / std::sqrt(lambda), 1e-12);
+
+    // The settled 288-box wall: measured unstable at 5e-5 s, stable at 2.5e-5 s (docs/3d.md). The
+    // bound must lie below the unstable step, and a run at 0.9 of it closes its ledger.
+    scenes::BrickWall3dDef def;
+    def.courses = 6;
+    def.bricks_per_course = 25;
+    World3d wall = scenes::brick_wall_3d(def);
+    for (int i = 0; i < 200; ++i) step_3d(wall);
+    const CriticalTimeStep3d bound = live_time_step_3d(wall);
+    EXPECT_LT(bound.dt_s, 5e-5);
+    scenes::BrickWall3dDef at_bound = def;
+    at_bound.dt_s = 0.9 * bound.dt_s;
+    World3d stable = scenes::brick_wall_3d(at_bound);
+    while (stable.time_s < 0.01) step_3d(stable);
+    EXPECT_LT(stable.ledger.balance_error(), 2e-3);
+    std::printf("3-D stable step: cube %.4e s; wall %.3e s (body %u, omega %.0f rad/s, h %.2f), at 0.9 of it the "
+                "ledger closes to %.2e\n",
+                live_time_step_3d(w).dt_s, bound.dt_s, bound.body, bound.omega_rad_s, bound.h,
+                stable.ledger.balance_error());
 }
 
 // The state of every body as bytes, and the ledger's.
