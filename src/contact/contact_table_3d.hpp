@@ -1,0 +1,41 @@
+#pragma once
+// The 3-D contact table: this step's contact points, sorted by key, each with the history it
+// carries to the next step. A point's key is (body a, body b, feature of a, feature of b)
+// (geometry/polyhedron_contact_3d.hpp), so a point that the narrow phase finds again from the
+// same pair of features keeps its shear spring; one found for the first time starts at zero, and
+// one not found again is dropped (the 2-D table's rule, contact/contact_table.hpp).
+#include <compare>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/vec3.hpp"
+#include "laws/coulomb_slider_3d.hpp"
+
+namespace blockdem {
+
+struct ContactKey3d {
+    std::uint32_t body_a = 0;
+    std::uint32_t body_b = 0;     ///< body_a < body_b
+    std::uint32_t feature_a = 0;  ///< feature_3d of a
+    std::uint32_t feature_b = 0;  ///< feature_3d of b
+    friend constexpr auto operator<=>(const ContactKey3d&, const ContactKey3d&) = default;
+};
+
+struct ContactPoint3d {
+    ContactKey3d key;
+    Vec3 point_m;                   ///< [m]
+    Vec3 normal;                    ///< unit, from a to b
+    double overlap_m = 0.0;         ///< [m] > 0
+    double dashpot_mass_kg = 0.0;   ///< [kg] the pair's reduced mass over its points
+    // History carried to the next step.
+    double normal_dashpot_n = 0.0;  ///< [N] last step's normal dashpot force on b
+    ShearHistory3d shear;           ///< [N] shear spring and dashpot force on b, in the tangent plane
+    bool sliding = false;           ///< this step's state, for output
+    Vec3 force_n;                   ///< [N] this step's force on b (minus it on a), world frame
+};
+
+/// Gives each point of current (sorted by key, fresh from the narrow phase, history zero) the
+/// history of the point of previous (sorted by key) with the same key, by one merge pass.
+void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current);
+
+}  // namespace blockdem

@@ -1,0 +1,29 @@
+#pragma once
+// The stable time step of the 3-D scheme over the live contact table: the 2-D bound
+// (dynamics/critical_time_step.hpp, where the derivation is) with every body's six rows (x, y, z
+// and the three rotations). A contact point adds k g g^T for its normal (kn, cn) and for two
+// tangents (ks, cs), with g = M^-1/2 (-d, -(r_a x d) on a; d, r_b x d on b), M^-1/2 of a rotation
+// being R diag(I^-1/2) R^T in the world frame; Gershgorin's row sums bound the largest eigenvalues
+// of M^-1/2 K M^-1/2 and M^-1/2 C M^-1/2 (Lambda_K, Lambda_C), and the scheme is stable for
+//     (dt^2 / 4) Lambda_K + (dt / 2) Lambda_C < 1.
+// Why it is needed: the brick wall of scenes/brick_wall_3d.hpp with kn = ks = 1e8 N/m goes
+// unstable at dt = 5e-5 s through its shear dashpots (docs/3d.md), which one body's vertical
+// frequency sqrt(4 kn / m) does not show.
+#include <cstdint>
+
+#include "world/world_3d.hpp"
+
+namespace blockdem {
+
+struct CriticalTimeStep3d {
+    double dt_s = 0.0;         ///< [s] the bound (infinity: no dynamic body carries a point)
+    std::uint32_t body = 0;    ///< the body whose row sets Lambda_K
+    double omega_rad_s = 0.0;  ///< [rad/s] sqrt(Lambda_K)
+    double h = 0.0;            ///< [-] Lambda_C / (2 omega)
+};
+
+/// The bound over w.contacts, with each point's dashpots as the law applies them (the pair's
+/// reduced mass over its points).
+CriticalTimeStep3d live_time_step_3d(const World3d& w);
+
+}  // namespace blockdem

@@ -1,0 +1,224 @@
+#include "geometry/polyhedron_contact_3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace blockdem {
+namespace {
+
+struct Interval {
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -std::numeric_limits<double>::infinity();
+};
+
+Interval project(const PosedPolyhedron& p, Vec3 axis) {
+    Interval r;
+    const std::size_t n = p.shape->vertices_m.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const double s = dot(axis, p.vertices_m[i]);
+        r.lo = std::min(r.lo, s);
+        r.hi = std::max(r.hi, s);
+    }
+    return r;
+}
+
+// The least overlap over the face normals of r: how far o's deepest vertex lies beyond each
+// face's plane (negative: below it), the largest kept. Only the outward side of each face is
+// tested: the faces of A, the faces of B turned over and the edge pairs' cross products are the
+// normals of the Minkowski difference A - B, so if the bodies are apart one of these shows it
+// (the edge axes are tested both ways). Sets apart when a face plane separates them.
+struct FaceAxis {
+    double separation_m = -std::numeric_limits<double>::infinity();
+    std::uint32_t face = 0;
+};
+
+FaceAxis best_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, bool& apart) {
+    FaceAxis best;
+    const std::size_t vertices = o.shape->vertices_m.size();
+    for (std::uint32_t f = 0; f < r.shape->faces.size(); ++f) {
+        const Vec3 n = r.face_normals[f];
+        double deepest = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < vertices; ++i) deepest = std::min(deepest, dot(n, o.vertices_m[i]));
+        const double separation = deepest - dot(n, r.vertices_m[r.shape->faces[f][0]]);
+        if (separation > 0.0) { apart = true; return best; }
+        if (separation > best.separation_m) best = {separation, f};
+    }
+    return best;
+}
+
+struct EdgeAxis {
+    double separation_m = -std::numeric_limits<double>::infinity();
+    Vec3 axis;                      ///< from a to b
+    std::uint32_t direction_a = 0;
+    std::uint32_t direction_b = 0;
+};
+
+EdgeAxis best_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, bool& apart) {
+    EdgeAxis best;
+    for (std::uint32_t i = 0; i < a.edges->directions.size(); ++i) {
+        for (std::uint32_t j = 0; j < b.edges->directions.size(); ++j) {
+            Vec3 axis = cross(a.directions[i], b.directions[j]);
+            const double l = length(axis);
+            if (l < 1e-6) continue;  // parallel edges: their plane's normal is a face axis already tested
+            axis = (1.0 / l) * axis;
+            const Interval ai = project(a, axis);
+            const Interval bi = project(b, axis);
+            const double along = bi.lo - ai.hi;     // b beyond a along +axis
+            const double against = ai.lo - bi.hi;   // b beyond a along -axis
+            if (along > 0.0 || against > 0.0) { apart = true; return best; }
+            const double separation = std::max(along, against);
+            if (separation > best.separation_m) best = {separation, along >= against ? axis : -axis, i, j};
+        }
+    }
+    return best;
+}
+
+// The edge of p along direction d whose middle reaches furthest along axis (sign +1) or least (-1).
+std::uint32_t supporting_edge(const PosedPolyhedron& p, std::uint32_t direction, Vec3 axis, double sign) {
+    std::uint32_t best = 0;
+    double reach = -std::numeric_limits<double>::infinity();
+    for (std::uint32_t e = 0; e < p.edges->edges.size(); ++e) {
+        if (p.edges->edge_direction[e] != direction) continue;
+        const auto [u, v] = p.edges->edges[e];
+        const double s = sign * dot(axis, p.vertices_m[u] + p.vertices_m[v]);
+        if (s > reach) { reach = s; best = e; }
+    }
+    return best;
+}
+
+// Edge on edge: one point midway between the closest points of the two supporting edges. Returns
+// false when those closest points are not inside both edges (the axis is then not where the
+// edges cross, and a face axis makes the points instead).
+bool edge_contact(const PosedPolyhedron& a, const PosedPolyhedron& b, const EdgeAxis& e,
+                  std::vector<ContactGeometry3d>& out) {
+    const std::uint32_t ea = supporting_edge(a, e.direction_a, e.axis, 1.0);
+    const std::uint32_t eb = supporting_edge(b, e.direction_b, e.axis, -1.0);
+    const Vec3 p1 = a.vertices_m[a.edges->edges[ea][0]];
+    const Vec3 d1 = a.vertices_m[a.edges->edges[ea][1]] - p1;
+    const Vec3 p2 = b.vertices_m[b.edges->edges[eb][0]];
+    const Vec3 d2 = b.vertices_m[b.edges->edges[eb][1]] - p2;
+    const Vec3 r = p1 - p2;
+    const double aa = dot(d1, d1), bb = dot(d1, d2), ee = dot(d2, d2), c = dot(d1, r), f = dot(d2, r);
+    const double denominator = aa * ee - bb * bb;
+    if (!(denominator > 1e-12 * aa * ee)) return false;
+    const double s = (bb * f - c * ee) / denominator;
+    const double t = (aa * f - bb * c) / denominator;
+    constexpr double slack = 1e-9;
+    if (s < -slack || s > 1.0 + slack || t < -slack || t > 1.0 + slack) return false;
+    const Vec3 on_a = p1 + s * d1;
+    const Vec3 on_b = p2 + t * d2;
+    const double overlap_m = dot(e.axis, on_a - on_b);
+    if (overlap_m > 0.0)
+        out.push_back({0.5 * (on_a + on_b), e.axis, overlap_m, feature_3d(FeatureKind3d::edge, ea),
+                       feature_3d(FeatureKind3d::edge, eb)});
+    return true;
+}
+
+// Face contact: the incident face clipped by the side planes of the reference face (see the header).
+void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc, bool ref_is_a,
+                  ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
+    const Vec3 n = ref.face_normals[ref_face];
+    std::uint32_t inc_face = 0;
+    double most_opposed = std::numeric_limits<double>::infinity();
+    for (std::uint32_t f = 0; f < inc.shape->faces.size(); ++f) {
+        const double c = dot(inc.face_normals[f], n);
+        if (c < most_opposed) { most_opposed = c; inc_face = f; }
+    }
+    auto& polygon = scratch.polygon;
+    auto& clipped = scratch.clipped;
+    polygon.clear();
+    const auto& inc_corners = inc.shape->faces[inc_face];
+    for (std::size_t k = 0; k < inc_corners.size(); ++k)
+        polygon.push_back({inc.vertices_m[inc_corners[k]],
+                           feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(inc_corners[k])),
+                           feature_3d(FeatureKind3d::face, ref_face),
+                           feature_3d(FeatureKind3d::edge, inc.edges->face_edges[inc_face][k]), false});
+    const auto& ref_corners = ref.shape->faces[ref_face];
+    const std::size_t m = ref_corners.size();
+    for (std::size_t k = 0; k < m && !polygon.empty(); ++k) {
+        const Vec3 p0 = ref.vertices_m[ref_corners[k]];
+        const Vec3 p1 = ref.vertices_m[ref_corners[(k + 1) % m]];
+        const Vec3 side = cross(p1 - p0, n);  // outward in the face's plane, |side| = the edge's length
+        // A corner on the side plane to round-off (faces that coincide, as drums stacked) counts
+        // as inside: 1e-9 of the edge, so that it is neither dropped nor doubled by a crossing.
+        const double plane = dot(side, p0);
+        const double slack = 1e-9 * dot(side, side);
+        const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
+        clipped.clear();
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const ClipCorner3d& here = polygon[i];
+            const ClipCorner3d& next = polygon[(i + 1) % polygon.size()];
+            const double dh = dot(side, here.point_m) - plane;
+            const double dn = dot(side, next.point_m) - plane;
+            const bool here_in = dh <= slack;
+            if (here_in) clipped.push_back(here);
+            if (here_in == (dn <= slack)) continue;
+            ClipCorner3d c;
+            // On the plane itself: the slack decides in or out, not where the crossing is.
+            c.point_m = here.point_m + std::clamp(dh / (dh - dn), 0.0, 1.0) * (next.point_m - here.point_m);
+            if (!here.line_is_reference) {  // an incident edge crossing this reference edge
+                c.feature_incident = here.line_after;
+                c.feature_reference = ref_edge;
+            } else {  // two reference sides meet: a corner of the reference face inside the incident face
+                const std::size_t u = ref_corners[k];
+                const std::size_t v = ref_corners[(k + 1) % m];
+                const bool nearer_u = length(c.point_m - p0) <= length(c.point_m - p1);
+                c.feature_reference = feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(nearer_u ? u : v));
+                c.feature_incident = feature_3d(FeatureKind3d::face, inc_face);
+            }
+            c.line_after = here_in ? ref_edge : here.line_after;
+            c.line_is_reference = here_in ? true : here.line_is_reference;
+            clipped.push_back(c);
+        }
+        std::swap(polygon, clipped);
+    }
+    const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
+    for (const ClipCorner3d& c : polygon) {
+        const double depth_m = plane_m - dot(n, c.point_m);
+        if (depth_m <= 0.0) continue;
+        ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, ref_is_a ? n : -n, depth_m, c.feature_reference,
+                            c.feature_incident};
+        if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
+        out.push_back(g);
+    }
+}
+
+}  // namespace
+
+std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedron& b, ContactScratch3d& scratch,
+                                  std::vector<ContactGeometry3d>& out) {
+    bool apart = false;
+    const FaceAxis face_a = best_face_axis(a, b, apart);
+    if (apart) return 0;
+    const FaceAxis face_b = best_face_axis(b, a, apart);
+    if (apart) return 0;
+    const EdgeAxis edge = best_edge_axis(a, b, apart);
+    if (apart) return 0;
+    const std::size_t first = out.size();
+    // Overlaps (>= 0); a candidate replaces the preferred one only when it is clearly smaller.
+    constexpr double clearly = 0.95;
+    const bool use_b = -face_b.separation_m < clearly * -face_a.separation_m;
+    const double face_overlap_m = use_b ? -face_b.separation_m : -face_a.separation_m;
+    const bool use_edge = -edge.separation_m < clearly * face_overlap_m;
+    if (!use_edge || !edge_contact(a, b, edge, out)) {
+        if (use_b)
+            face_contact(b, face_b.face, a, false, scratch, out);
+        else
+            face_contact(a, face_a.face, b, true, scratch, out);
+    }
+    const auto key_less = [](const ContactGeometry3d& x, const ContactGeometry3d& y) {
+        return x.feature_a != y.feature_a ? x.feature_a < y.feature_a : x.feature_b < y.feature_b;
+    };
+    const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
+    std::sort(begin, out.end(), key_less);
+    // A key twice (a reference corner found from both its sides): the first stands for it.
+    out.erase(std::unique(begin, out.end(),
+                          [](const ContactGeometry3d& x, const ContactGeometry3d& y) {
+                              return x.feature_a == y.feature_a && x.feature_b == y.feature_b;
+                          }),
+              out.end());
+    return out.size() - first;
+}
+
+}  // namespace blockdem

@@ -1,0 +1,265 @@
+#include "world/step_3d.hpp"
+
+#include <algorithm>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "dynamics/rigid_rotation_3d.hpp"
+#include "laws/linear_spring_dashpot.hpp"
+#include "world/parallel.hpp"
+
+namespace blockdem {
+namespace {
+
+int thread_index() {
+#ifdef _OPENMP
+    return omp_get_thread_num();
+#else
+    return 0;
+#endif
+}
+
+int thread_count() {
+#ifdef _OPENMP
+    return omp_get_max_threads();
+#else
+    return 1;
+#endif
+}
+
+// Step 1: driven bodies ride the table; fixed ones stay.
+void place_driven_bodies(World3d& w, Vec3 displacement_m, Vec3 velocity_m_s) {
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        if (w.kinds[i] != BodyKind3d::driven) continue;
+        RigidBody3d& b = w.bodies[i];
+        b.position_m = w.rest_positions_m[i] + displacement_m;
+        b.velocity_m_s = velocity_m_s;
+        b.velocity_at_t_m_s = velocity_m_s;
+    }
+}
+
+// The offsets of each body's entries in the flat pose arrays, when the bodies changed.
+void size_pose_arrays(World3d& w) {
+    WorldScratch3d& s = w.scratch;
+    const std::size_t n = w.bodies.size();
+    if (s.vertex_start.size() == n + 1) return;
+    s.vertex_start.assign(n + 1, 0);
+    s.face_start.assign(n + 1, 0);
+    s.direction_start.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        s.vertex_start[i + 1] = s.vertex_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.vertices_m.size());
+        s.face_start[i + 1] = s.face_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.face_normals.size());
+        s.direction_start[i + 1] = s.direction_start[i] + static_cast<std::uint32_t>(w.edges[i].directions.size());
+    }
+    s.world_vertices_m.resize(s.vertex_start[n]);
+    s.world_normals.resize(s.face_start[n]);
+    s.world_directions.resize(s.direction_start[n]);
+    s.boxes.resize(n);
+    s.is_static.resize(n);
+}
+
+// Step 2: each body's vertices, normals and edge directions in the world frame, and its box.
+void pose_body(World3d& w, std::size_t i) {
+    WorldScratch3d& s = w.scratch;
+    const RigidBody3d& b = w.bodies[i];
+    Aabb3d box{b.position_m, b.position_m};
+    Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
+    for (std::size_t k = 0; k < b.shape.vertices_m.size(); ++k) {
+        const Vec3 v = b.position_m + rotate(b.orientation, b.shape.vertices_m[k]);
+        vertices[k] = v;
+        box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y), std::min(box.lo.z, v.z)};
+        box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y), std::max(box.hi.z, v.z)};
+    }
+    for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k)
+        s.world_normals[s.face_start[i] + k] = rotate(b.orientation, b.shape.face_normals[k]);
+    for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
+        s.world_directions[s.direction_start[i] + k] = rotate(b.orientation, w.edges[i].directions[k]);
+    s.boxes[i] = box;
+    s.is_static[i] = w.kinds[i] != BodyKind3d::dynamic;
+}
+
+PosedPolyhedron posed(const World3d& w, std::uint32_t i) {
+    const WorldScratch3d& s = w.scratch;
+    return {&w.bodies[i].shape, &w.edges[i], &s.world_vertices_m[s.vertex_start[i]], &s.world_normals[s.face_start[i]],
+            s.world_directions.data() + s.direction_start[i], w.bodies[i].position_m};
+}
+
+// The mass a pair's dashpots use (docs/physics.md, "Which mass the damping uses").
+double reduced_mass(const World3d& w, std::uint32_t a, std::uint32_t b) {
+    const bool da = w.kinds[a] == BodyKind3d::dynamic;
+    const bool db = w.kinds[b] == BodyKind3d::dynamic;
+    const double ma = w.bodies[a].mass_kg;
+    const double mb = w.bodies[b].mass_kg;
+    if (da && db) return ma * mb / (ma + mb);
+    return da ? ma : mb;
+}
+
+// Steps 3 and 4: this step's points, sorted by key, with last step's history. Each pair's points
+// go to its own slot (in parallel), then into the table in pair order (serially).
+void find_contacts(World3d& w) {
+    WorldScratch3d& s = w.scratch;
+    s.broad_phase.find_pairs(s.boxes, s.is_static, s.pairs);
+    if (s.pair_points.size() < s.pairs.size()) s.pair_points.resize(s.pairs.size());
+    if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
+    parallel_for(static_cast<std::ptrdiff_t>(s.pairs.size()), [&](std::ptrdiff_t k) {
+        auto& points = s.pair_points[k];
+        points.clear();
+        polyhedron_contact_3d(posed(w, s.pairs[k].first), posed(w, s.pairs[k].second), s.clipping[thread_index()],
+                              points);
+    });
+    std::swap(s.previous, w.contacts);
+    w.contacts.clear();
+    for (std::size_t k = 0; k < s.pairs.size(); ++k) {
+        const auto [a, b] = s.pairs[k];
+        const auto& points = s.pair_points[k];
+        if (points.empty()) continue;
+        const double share_kg = reduced_mass(w, a, b) / static_cast<double>(points.size());
+        for (const ContactGeometry3d& g : points) {
+            ContactPoint3d p;
+            p.key = {a, b, g.feature_a, g.feature_b};
+            p.point_m = g.point_m;
+            p.normal = g.normal;
+            p.overlap_m = g.overlap_m;
+            p.dashpot_mass_kg = share_kg;
+            w.contacts.push_back(p);
+        }
+    }
+    carry_history(s.previous, w.contacts);
+}
+
+// The velocity [m/s] of body b's material point at point_m, over the interval that ends at t.
+Vec3 point_velocity(const World3d& w, std::uint32_t i, Vec3 point_m) {
+    const RigidBody3d& b = w.bodies[i];
+    if (w.kinds[i] != BodyKind3d::dynamic) return b.velocity_m_s;
+    // The drift turned the body about this axis, so its world direction is the same at both ends.
+    const Vec3 omega_world = rotate(b.orientation, b.angular_velocity_body_rad_s);
+    return b.velocity_m_s + cross(omega_world, point_m - b.position_m);
+}
+
+// The energy terms of the law, totalled in deterministic chunks (world/parallel.hpp, rule 3).
+struct LawTotals {
+    double elastic_j = 0.0;
+    double normal_dashpot_j = 0.0;
+    double shear_dashpot_j = 0.0;
+    double friction_j = 0.0;
+    double table_work_j = 0.0;
+    LawTotals& operator+=(const LawTotals& o) {
+        elastic_j += o.elastic_j;
+        normal_dashpot_j += o.normal_dashpot_j;
+        shear_dashpot_j += o.shear_dashpot_j;
+        friction_j += o.friction_j;
+        table_work_j += o.table_work_j;
+        return *this;
+    }
+};
+
+// The law at one point: its force into its own slot, its energy terms returned.
+LawTotals contact_law(World3d& w, ContactPoint3d& c, Vec3 table_step_m) {
+    const ContactParameters& p = w.contact;
+    const std::uint32_t a = c.key.body_a;
+    const std::uint32_t b = c.key.body_b;
+    const Vec3 relative = point_velocity(w, b, c.point_m) - point_velocity(w, a, c.point_m);
+    const double normal_speed = dot(relative, c.normal);
+    const Vec3 tangential = relative - normal_speed * c.normal;
+    const DashpotCoefficients k = dashpot_coefficients(p, c.dashpot_mass_kg);
+    const ContactForce f =
+        linear_spring_dashpot(p, k, {c.overlap_m, normal_speed, 0.0}, {0.0, c.normal_dashpot_n, 0.0}, w.dt_s);
+    const ShearForce3d s = coulomb_slider_3d(p.ks_N_m, k.cs_N_s_m, p.mu * std::max(0.0, f.normal_n), tangential,
+                                             carry_to_normal(c.shear, c.normal), w.dt_s);
+    c.normal_dashpot_n = f.normal_dashpot_n;
+    c.shear = {s.spring_n, s.dashpot_n};
+    c.sliding = s.sliding;
+    c.force_n = f.normal_n * c.normal + s.total_n;
+    LawTotals t;
+    // The table's work: a driven body's force on the other, times the centred displacement.
+    if (w.kinds[a] == BodyKind3d::driven) t.table_work_j += dot(c.force_n, table_step_m);
+    if (w.kinds[b] == BodyKind3d::driven) t.table_work_j -= dot(c.force_n, table_step_m);
+    t.elastic_j = contact_elastic_energy(p, c.overlap_m, 0.0) +
+                  (p.ks_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / p.ks_N_m : 0.0);
+    t.normal_dashpot_j = f.normal_dashpot_work_j;
+    t.shear_dashpot_j = s.shear_dashpot_work_j;
+    t.friction_j = s.friction_work_j;
+    return t;
+}
+
+// Step 5: the law at every point (in parallel), its forces summed onto the bodies in the
+// table's order (serially), so that each body's sum has the same terms in the same order
+// whatever the thread count.
+void apply_contact_law(World3d& w, Vec3 table_step_m) {
+    const auto points = static_cast<std::ptrdiff_t>(w.contacts.size());
+    const LawTotals t =
+        deterministic_sum(points, [&](std::ptrdiff_t i) { return contact_law(w, w.contacts[i], table_step_m); });
+    for (const ContactPoint3d& c : w.contacts) {
+        RigidBody3d& ba = w.bodies[c.key.body_a];
+        RigidBody3d& bb = w.bodies[c.key.body_b];
+        bb.force_n += c.force_n;
+        bb.torque_n_m += cross(c.point_m - bb.position_m, c.force_n);
+        ba.force_n -= c.force_n;
+        ba.torque_n_m -= cross(c.point_m - ba.position_m, c.force_n);
+    }
+    EnergyLedger& ledger = w.ledger;
+    ledger.elastic_j = t.elastic_j;
+    ledger.normal_dashpot_j += t.normal_dashpot_j;
+    ledger.shear_dashpot_j += t.shear_dashpot_j;
+    ledger.friction_j += t.friction_j;
+    ledger.table_work_j += t.table_work_j;
+}
+
+struct BodyTotals {
+    double kinetic_j = 0.0;
+    double gravitational_j = 0.0;
+    BodyTotals& operator+=(const BodyTotals& o) {
+        kinetic_j += o.kinetic_j;
+        gravitational_j += o.gravitational_j;
+        return *this;
+    }
+};
+
+}  // namespace
+
+void step_3d(World3d& w) {
+    const double dt = w.dt_s;
+    const double t = w.time_s;
+    const Vec3 d_now = table_displacement(w.table, t);
+    const Vec3 d_before = table_displacement(w.table, t - dt);
+    const Vec3 d_after = table_displacement(w.table, t + dt);
+    const auto n = static_cast<std::ptrdiff_t>(w.bodies.size());
+    place_driven_bodies(w, d_now, (1.0 / dt) * (d_now - d_before));
+    size_pose_arrays(w);
+    parallel_for(n, [&](std::ptrdiff_t i) {
+        pose_body(w, static_cast<std::size_t>(i));
+        w.bodies[i].force_n = {0.0, 0.0, -w.gravity_m_s2 * w.bodies[i].mass_kg};
+        w.bodies[i].torque_n_m = {};
+    });
+    find_contacts(w);
+    // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
+    apply_contact_law(w, 0.5 * (d_after - d_before));
+
+    const bool starting = w.steps == 0;
+    const BodyTotals totals = deterministic_sum(n, [&](std::ptrdiff_t i) {
+        BodyTotals e;
+        if (w.kinds[i] != BodyKind3d::dynamic) return e;
+        RigidBody3d& b = w.bodies[i];
+        update_velocity_3d(b, dt, starting);
+        e.kinetic_j = kinetic_energy(b);
+        e.gravitational_j = b.mass_kg * w.gravity_m_s2 * b.position_m.z;
+        return e;
+    });
+    EnergyLedger& ledger = w.ledger;
+    ledger.kinetic_j = totals.kinetic_j;
+    ledger.gravitational_j = totals.gravitational_j;
+    if (starting) {
+        ledger.initial_j = ledger.stored_j();
+        ledger.initial_gravitational_j = ledger.gravitational_j;
+    }
+    ledger.peak_scale_j = std::max(ledger.peak_scale_j, ledger.current_scale_j());
+    parallel_for(n, [&](std::ptrdiff_t i) {
+        if (w.kinds[i] == BodyKind3d::dynamic) update_position_3d(w.bodies[i], dt);
+    });
+    w.time_s += dt;
+    ++w.steps;
+}
+
+}  // namespace blockdem

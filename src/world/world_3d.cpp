@@ -1,0 +1,50 @@
+#include "world/world_3d.hpp"
+
+namespace blockdem {
+
+std::uint32_t add_body(World3d& w, RigidBody3d body, BodyKind3d kind) {
+    w.edges.push_back(polyhedron_edges(body.shape));
+    w.rest_positions_m.push_back(body.position_m);
+    w.kinds.push_back(kind);
+    w.bodies.push_back(std::move(body));
+    return static_cast<std::uint32_t>(w.bodies.size() - 1);
+}
+
+Momentum3d momentum(const World3d& w) {
+    Momentum3d m;
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        if (w.kinds[i] != BodyKind3d::dynamic) continue;
+        const RigidBody3d& b = w.bodies[i];
+        const Vec3 p = b.mass_kg * b.velocity_m_s;
+        m.linear_kg_m_s += p;
+        m.angular_kg_m2_s += cross(b.position_m, p) + b.angular_momentum_kg_m2_s;
+    }
+    return m;
+}
+
+namespace {
+template <class T>
+std::size_t held(const std::vector<T>& v) { return v.capacity() * sizeof(T); }
+}  // namespace
+
+std::size_t memory_bytes(const World3d& w) {
+    std::size_t bytes = sizeof(World3d) + held(w.bodies) + held(w.kinds) + held(w.edges) + held(w.rest_positions_m) +
+                        held(w.contacts);
+    for (const RigidBody3d& b : w.bodies) {
+        bytes += b.name.capacity() + held(b.shape.vertices_m) + held(b.shape.faces) + held(b.shape.face_normals);
+        for (const auto& f : b.shape.faces) bytes += held(f);
+    }
+    for (const PolyhedronEdges& e : w.edges) {
+        bytes += held(e.edges) + held(e.face_edges) + held(e.directions) + held(e.edge_direction);
+        for (const auto& f : e.face_edges) bytes += held(f);
+    }
+    const WorldScratch3d& s = w.scratch;
+    bytes += held(s.vertex_start) + held(s.face_start) + held(s.direction_start) + held(s.world_vertices_m) +
+             held(s.world_normals) + held(s.world_directions) + held(s.boxes) + held(s.is_static) + held(s.pairs) +
+             held(s.pair_points) + held(s.previous) + held(s.clipping) + s.broad_phase.memory_bytes();
+    for (const auto& points : s.pair_points) bytes += held(points);
+    for (const ContactScratch3d& c : s.clipping) bytes += held(c.polygon) + held(c.clipped);
+    return bytes;
+}
+
+}  // namespace blockdem

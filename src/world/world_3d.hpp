@@ -1,0 +1,84 @@
+#pragma once
+// The 3-D world: many rigid convex polyhedra as plain arrays, the table's three-component motion,
+// the contact law's parameters, the contact table and the energy ledger (docs/3d.md). The 3-D
+// counterpart of world/world.hpp; the step is world/step_3d.hpp.
+#include <cstdint>
+#include <vector>
+
+#include "broad_phase/grid_broad_phase_3d.hpp"
+#include "contact/contact_table_3d.hpp"
+#include "dynamics/rigid_body_3d.hpp"
+#include "geometry/polyhedron_contact_3d.hpp"
+#include "geometry/polyhedron_edges_3d.hpp"
+#include "laws/contact_parameters.hpp"
+#include "motion/table_motion.hpp"
+#include "world/energy_ledger.hpp"
+
+namespace blockdem {
+
+/// How a body moves: by the contact forces and gravity, not at all, or with the table.
+enum class BodyKind3d : std::uint8_t { dynamic, fixed, driven };
+
+/// The table's motion: two horizontal components and the vertical one.
+struct TableMotion3d {
+    ComponentMotion x = RestMotion{};
+    ComponentMotion y = RestMotion{};
+    ComponentMotion z = RestMotion{};
+};
+
+/// The table's displacement at t_s [m].
+inline Vec3 table_displacement(const TableMotion3d& m, double t_s) {
+    return {sample(m.x, t_s).displacement_m, sample(m.y, t_s).displacement_m, sample(m.z, t_s).displacement_m};
+}
+
+/// Arrays rebuilt every step, kept so that a step allocates nothing in steady state.
+struct WorldScratch3d {
+    std::vector<std::uint32_t> vertex_start;  ///< per body, its first entry in world_vertices_m (and one past the last)
+    std::vector<std::uint32_t> face_start;    ///< likewise in world_normals
+    std::vector<std::uint32_t> direction_start;///< likewise in world_directions
+    std::vector<Vec3> world_vertices_m;       ///< [m]
+    std::vector<Vec3> world_normals;
+    std::vector<Vec3> world_directions;
+    std::vector<Aabb3d> boxes;
+    std::vector<std::uint8_t> is_static;
+    std::vector<BodyPair> pairs;
+    std::vector<std::vector<ContactGeometry3d>> pair_points;  ///< per candidate pair, its points (kept: no allocation)
+    std::vector<ContactPoint3d> previous;
+    std::vector<ContactScratch3d> clipping;                   ///< one per thread
+    GridBroadPhase3d broad_phase;
+};
+
+struct World3d {
+    std::vector<RigidBody3d> bodies;
+    std::vector<BodyKind3d> kinds;
+    std::vector<PolyhedronEdges> edges;     ///< per body, numbered once
+    std::vector<Vec3> rest_positions_m;     ///< [m] a driven body's centroid with the table at rest
+    ContactParameters contact;
+    TableMotion3d table;
+    double gravity_m_s2 = 9.81;             ///< [m/s^2] along -z
+    double dt_s = 1e-4;                     ///< [s]
+    double time_s = 0.0;                    ///< [s]
+    std::int64_t steps = 0;
+    EnergyLedger ledger;
+    std::vector<ContactPoint3d> contacts;   ///< this step's points, sorted by key
+    WorldScratch3d scratch;
+};
+
+/// Adds a body (made by make_rigid_body_3d) and returns its index.
+std::uint32_t add_body(World3d& w, RigidBody3d body, BodyKind3d kind);
+
+/// Total linear momentum [kg m/s] and angular momentum about the origin [kg m^2/s] of the dynamic
+/// bodies, from the half-step velocities and angular momenta of the last kick and the positions
+/// after the last drift: the form the scheme conserves exactly when the forces between bodies are
+/// equal and opposite at a common point (the drift moves a body along its half-step velocity, so
+/// r x m v does not change in it).
+struct Momentum3d {
+    Vec3 linear_kg_m_s;
+    Vec3 angular_kg_m2_s;
+};
+Momentum3d momentum(const World3d& w);
+
+/// Bytes the world holds (bodies, shapes, edges, contacts and scratch), for the memory per body.
+std::size_t memory_bytes(const World3d& w);
+
+}  // namespace blockdem
