@@ -10,6 +10,14 @@
 #include "world/parallel.hpp"
 
 namespace blockdem {
+namespace {
+
+PolygonView part_view(const Bodies& b, std::uint32_t part) {
+    return {&b.world_vertices_m[b.part_vertex_begin[part]], &b.world_normals[b.part_vertex_begin[part]],
+            b.part_vertex_count[part]};
+}
+
+}  // namespace
 
 OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
@@ -39,10 +47,8 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
         return none;
     }
-    const PolygonView a{&b.world_vertices_m[b.part_vertex_begin[part_a]], &b.world_normals[b.part_vertex_begin[part_a]],
-                        b.part_vertex_count[part_a]};
-    const PolygonView c{&b.world_vertices_m[b.part_vertex_begin[part_b]], &b.world_normals[b.part_vertex_begin[part_b]],
-                        b.part_vertex_count[part_b]};
+    const PolygonView a = part_view(b, part_a);
+    const PolygonView c = part_view(b, part_b);
     // Still apart along the edge that separated the pair last step: the pair (no points, no
     // reference) is already what collide_polygons would make it. (Bricks laid side by side
     // stay exactly touching, separation 0, until the load reaches them.)
@@ -71,9 +77,25 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
                         b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[part_b]] : nullptr);
     else
         collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, gap_m);
-    // Corners of one pair are at least a face apart, so 5% of the smaller part is "same place".
-    const double match_distance = 0.05 * std::min(b.part_radius_m[part_a], b.part_radius_m[part_b]);
-    return update_pair_geometry(pair, manifold, match_distance);
+    return update_pair_geometry(pair, manifold, part_match_distance_m(b, pair));
+}
+
+bool collide_parts(const World& w, const PairContact& pair, std::uint32_t reference, ContactManifold& manifold,
+                   AxisCache* cache, double gap_m) {
+    const Bodies& b = w.bodies;
+    const PolygonView a = part_view(b, pair.part_a);
+    const PolygonView c = part_view(b, pair.part_b);
+    if (w.contact.rounding_m > 0.0) {
+        AxisCache unused;
+        return collide_rounded(a, c, w.contact.rounding_m, reference, manifold, cache != nullptr ? *cache : unused, gap_m,
+                               b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[pair.part_a]] : nullptr,
+                               b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[pair.part_b]] : nullptr);
+    }
+    return collide_polygons(a, c, reference, manifold, cache, gap_m);
+}
+
+double part_match_distance_m(const Bodies& b, const PairContact& pair) {
+    return 0.05 * std::min(b.part_radius_m[pair.part_a], b.part_radius_m[pair.part_b]);
 }
 
 void update_contact_geometry(World& w) {
