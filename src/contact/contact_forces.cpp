@@ -56,6 +56,20 @@ struct JointPass {
     double dt_s;
 };
 
+// A point of a joint that is open and not bonded (a cracked point past which the crack opened,
+// kept with its face: sub_contacts.hpp) carries nothing: the law's dry point would still push
+// with its normal dashpot where the gap closes. What it held is let go as the dry point lets it
+// go when it opens: the last half interval of its normal dashpot, and the shear spring slides
+// to a zero cap (the slider books the release as friction work).
+JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, const ContactKinematics& k,
+                      const ContactHistory& previous, BondState bond, double dt_s) {
+    JointForce out;
+    out.bond = bond;
+    out.force.normal_dashpot_work_j = -0.5 * previous.normal_dashpot_n * k.normal_speed_m_s * dt_s;
+    coulomb_slider(joint.ks_N_m, dash.cs_N_s_m, 0.0, k.tangential_speed_m_s, previous, dt_s, out.force);
+    return out;
+}
+
 // The law at one point of a per-length joint: updates the point and the ledger's terms, and
 // returns the point's force on b. (Flattened: the law and the energy inline here, as the dry
 // law does in pair_law; a call per point cost a bonded wall a third of its step.)
@@ -63,7 +77,9 @@ struct JointPass {
                       ContactEnergy& energy) {
     const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
     const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
-    const JointForce j = mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s);
+    const JointForce j = point.overlap_m < 0.0 && point.bond != BondState::intact
+                             ? open_point(joint, dash, kin, point.history(), point.bond, s.dt_s)
+                             : mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s);
     const ContactForce& f = j.force;
     point.normal_force_n = f.normal_n;
     point.shear_spring_n = f.shear_spring_n;

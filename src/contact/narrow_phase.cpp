@@ -5,6 +5,7 @@
 
 #include "contact/bonded_pairs.hpp"
 #include "contact/contact_table.hpp"
+#include "contact/sub_contacts.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "geometry/rounded_contact.hpp"
 #include "world/parallel.hpp"
@@ -34,11 +35,16 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         gap_m = bonded_gap_m(w, pair);
     else if (!w.sub_contacts.empty() && pair.count > 0 && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
         gap_m = bonded_gap_m(w, pair);
+    // A joint discretised into sub-contacts stays one face while any of its points is in
+    // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
+    // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
+    const bool face_kept = !w.sub_contacts.empty() && w.sub_contacts[p].count > 0;
+    const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.part_box_m[part_a];
     const Aabb& box_b = b.part_box_m[part_b];
-    if (gap_m == 0.0 &&
+    if (collide_gap_m == 0.0 &&
         (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y)) {
         // (Reset only if set: a pair apart stays clean and its cache line is not written.)
         if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
@@ -72,11 +78,13 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
     if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
-        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache, gap_m,
+        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache, collide_gap_m,
                         b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[part_a]] : nullptr,
                         b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[part_b]] : nullptr);
     else
-        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, gap_m);
+        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, collide_gap_m);
+    if (face_kept) [[unlikely]]
+        keep_face_or_trim(manifold, gap_m, w.contact.sub_contacts);
     return update_pair_geometry(pair, manifold, part_match_distance_m(b, pair));
 }
 
