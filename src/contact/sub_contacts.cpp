@@ -8,17 +8,15 @@ namespace blockdem {
 
 namespace {
 
-// The broken states of the points, kept in broken_memory when they are dropped.
+// The broken states of the points, kept in broken_memory when they are dropped. (Rewritten
+// whole: points placed again took their broken states from it, so they hold all it held.)
 void remember_broken(SubContacts& sub) {
-    bool any = false;
-    for (std::uint32_t k = 0; k < sub.count; ++k) {
-        if (!is_broken(sub.points[k].bond)) continue;
-        const std::uint32_t shift = 2 * k;
-        sub.broken_memory = (sub.broken_memory & ~(3u << shift)) |
-                            (static_cast<std::uint32_t>(sub.points[k].bond) - 1u) << shift;
-        any = true;
-    }
-    if (any) sub.memory_first_m = sub.points[0].point_m;
+    if (sub.count == 0) return;
+    std::uint32_t memory = 0;
+    for (std::uint32_t k = 0; k < sub.count; ++k)
+        if (is_broken(sub.points[k].bond)) memory |= (static_cast<std::uint32_t>(sub.points[k].bond) - 1u) << (2 * k);
+    sub.broken_memory = memory;
+    sub.memory_first_m = memory != 0 ? sub.points[0].point_m : Vec2{};
 }
 
 // The remembered bond of interior point k of interior points in all (none if it was not broken).
