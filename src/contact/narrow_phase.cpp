@@ -35,10 +35,10 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         gap_m = bonded_gap_m(w, pair);
     else if (!w.sub_contacts.empty() && pair.count > 0 && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
         gap_m = bonded_gap_m(w, pair);
-    // A joint discretised into sub-contacts stays one face while any of its points is in
+    // A bonded joint discretised into sub-contacts stays one face while any of its points is in
     // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
     // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
-    const bool face_kept = !w.sub_contacts.empty() && w.sub_contacts[p].count > 0;
+    const bool face_kept = gap_m > 0.0 && !w.sub_contacts.empty() && w.sub_contacts[p].count > 0;
     const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.

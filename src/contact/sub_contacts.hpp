@@ -21,13 +21,14 @@
 // step's point k counted from either end (the ends may swap their order or their owners' ids:
 // contact_table.cpp), else new.
 //
-// Crack growth: a joint keeps all its n points while any of them is in contact or bonded. The
-// narrow phase then finds the face's two ends up to face_gap_m apart instead of dropping an end
-// that opened (keep_face_or_trim), so that each point along the joint keeps its own bond, intact
-// or broken, and its shear history while the crack opens past it: a bonded joint cracks point by
-// point. A point that is open (negative overlap) and not bonded carries nothing
-// (contact_forces.cpp). Once no point is in contact or bonded, the face is an ordinary contact
-// again and the interior points are dropped (their dashpots' last half interval booked as for
+// Crack growth: a joint that holds an intact bond keeps all its n points while any of them is
+// within the bond's gap. The narrow phase then finds the face's two ends up to face_gap_m apart
+// instead of dropping an end that opened (keep_face_or_trim), so that each point along the
+// joint keeps its own bond, intact or broken, and its shear history while the crack opens past
+// it: a bonded joint cracks point by point. A point that is open (negative overlap) and not
+// bonded carries nothing (contact_forces.cpp). Once no interior point is within the gap, or no
+// bond is left, the face is an ordinary contact again (a dry face rocking onto one end is the
+// one-point contact it was before) and the interior points are dropped (their dashpots' last half interval booked as for
 // any opened point). Which of them were broken is remembered (broken_memory), as the pair
 // remembers its broken corners, so that a crack that closes again is broken still: a broken
 // point never bonds again.
