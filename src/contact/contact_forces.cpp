@@ -62,9 +62,10 @@ struct JointPass {
 // go when it opens: the last half interval of its normal dashpot, and the shear spring slides
 // to a zero cap (the slider books the release as friction work).
 JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, const ContactKinematics& k,
-                      const ContactHistory& previous, BondState bond, double dt_s) {
+                      const ContactHistory& previous, BondState bond, double dilation_m, double dt_s) {
     JointForce out;
     out.bond = bond;
+    out.dilation_m = dilation_m;  // (kept, as the dilating law keeps an open point's)
     out.force.normal_dashpot_work_j = -0.5 * previous.normal_dashpot_n * k.normal_speed_m_s * dt_s;
     coulomb_slider(joint.ks_N_m, dash.cs_N_s_m, 0.0, k.tangential_speed_m_s, previous, dt_s, out.force);
     return out;
@@ -77,9 +78,11 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
                       ContactEnergy& energy) {
     const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
     const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
-    const JointForce j = point.overlap_m < 0.0 && point.bond != BondState::intact
-                             ? open_point(joint, dash, kin, point.history(), point.bond, s.dt_s)
-                             : mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s);
+    // (Open: apart by more than the point's dilation, which the dilating law adds to the overlap.)
+    const JointForce j = point.overlap_m + point.dilation_m < 0.0 && point.bond != BondState::intact
+                             ? open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, s.dt_s)
+                             : mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s,
+                                                  {point.dilation_m, point.normal_force_n});
     const ContactForce& f = j.force;
     point.normal_force_n = f.normal_n;
     point.shear_spring_n = f.shear_spring_n;
@@ -88,11 +91,12 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
     point.shear_dashpot_n = f.shear_dashpot_n;
     point.sliding = f.sliding;
     point.bond = j.bond;
+    point.dilation_m = j.dilation_m;
     energy.normal_dashpot_j += f.normal_dashpot_work_j;
     energy.shear_dashpot_j += f.shear_dashpot_work_j;
     energy.friction_j += f.friction_work_j;
     energy.bond_breakage_j += j.bond_breakage_j;
-    energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond);
+    energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond, point.dilation_m);
     return f.normal_n * s.n + f.shear_n * s.t;
 }
 
@@ -326,11 +330,11 @@ double contact_elastic_energy(const World& w) {
             const JointPoint joint = joint_point_of(w.bodies, pair, stored, w.contact.rounding_m, pair.count + interior);
             for (std::uint32_t k = 0; k < pair.count; ++k)
                 energy += joint_elastic_energy(joint, pair.points[k].overlap_m, pair.points[k].shear_spring_n,
-                                               pair.points[k].bond);
+                                               pair.points[k].bond, pair.points[k].dilation_m);
             const JointPoint inner{2.0 * joint.kn_N_m, 2.0 * joint.ks_N_m, 2.0 * joint.area_m2};
             for (std::uint32_t k = 0; k < interior; ++k)
                 energy += joint_elastic_energy(inner, sub->points[k].overlap_m, sub->points[k].shear_spring_n,
-                                               sub->points[k].bond);
+                                               sub->points[k].bond, sub->points[k].dilation_m);
             return energy;
         }
         const ContactParameters params = softened(stored, pair.stiffness_scale);

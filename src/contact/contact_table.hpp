@@ -4,6 +4,7 @@
 // Entries are sorted by (a, b); a point is matched to last step's point with the same feature
 // id (the corner it belongs to), so a contact keeps its history while it stays closed and
 // starts from zero when it is new; a point that opened is dropped with its history.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -16,16 +17,18 @@ namespace blockdem {
 
 /// One contact point: its geometry, its forces and its history.
 struct ContactPoint {
+    // (The 4-byte and 1-byte members first, together: the struct stays 80 bytes with dilation_m.)
     std::uint32_t feature = 0;     ///< make_feature(owner, corner): the identity
+    bool sliding = false;
+    BondState bond = BondState::none;  ///< the point's bond (history; laws/mohr_coulomb_joint.hpp)
     Vec2 point_m;                  ///< [m] world position
     double overlap_m = 0.0;        ///< [m]
-    double normal_force_n = 0.0;   ///< [N] on b along the pair normal
+    double normal_force_n = 0.0;   ///< [N] on b along the pair normal (a dilating joint's law reads last step's)
     double shear_spring_n = 0.0;   ///< [N] shear spring force on b along the tangent (history)
     double shear_force_n = 0.0;    ///< [N] total shear force on b along the tangent
     double normal_dashpot_n = 0.0; ///< [N] the normal dashpot's part of normal_force_n (history)
     double shear_dashpot_n = 0.0;  ///< [N] the shear dashpot's part of shear_force_n (history)
-    bool sliding = false;
-    BondState bond = BondState::none;  ///< the point's bond (history; laws/mohr_coulomb_joint.hpp)
+    double dilation_m = 0.0;       ///< [m] accumulated joint dilation u_d (history; per-length joints only)
 
     /// What the contact law carries over to the next step (laws/linear_spring_dashpot.hpp).
     ContactHistory history() const { return {shear_spring_n, normal_dashpot_n, shear_dashpot_n}; }
@@ -34,8 +37,11 @@ struct ContactPoint {
         normal_dashpot_n = old.normal_dashpot_n;
         shear_dashpot_n = old.shear_dashpot_n;
         bond = old.bond;
+        normal_force_n = old.normal_force_n;
+        dilation_m = old.dilation_m;
     }
 };
+static_assert(sizeof(ContactPoint) == 80, "the contact table's points: keep them at 80 bytes (cache lines)");
 
 /// PairContact::broken_features: none; else the feature id, with broken_in_shear set for a
 /// shear failure (feature ids use the low 17 bits: polygon_contact.hpp).
@@ -90,9 +96,18 @@ struct OpenedPoints {
     OpenedPoint points[2];
 };
 
-/// Updates a pair with this step's geometry: matched points keep their shear history. A point
-/// matches last step's point with the same feature id, or else an unmatched old point closer
-/// than match_distance_m (see the .cpp for why). Returns the old points that opened.
+/// The opening [m] up to which the narrow phase keeps a dilating pair's points: twice their
+/// largest accumulated dilation u_d. A point pushes while its faces are apart by less than its
+/// u_d, and a sliding block rises in a step by about what the point dilated in the last one,
+/// which the point's own law adds to u_d only after the narrow phase: kept to u_d alone, a
+/// steadily rising joint lost its points once the rise per step passed its elastic closure.
+/// (A point kept while open carries no force: laws/mohr_coulomb_joint.hpp.)
+inline double dilated_gap_m(const PairContact& pair) {
+    double largest_m = 0.0;
+    for (std::uint32_t k = 0; k < pair.count; ++k) largest_m = std::max(largest_m, pair.points[k].dilation_m);
+    return 2.0 * largest_m;
+}
+
 /// True while some point of the pair holds an intact bond (the narrow phase then keeps points
 /// that opened slightly: contact/narrow_phase.cpp).
 inline bool has_intact_bond(const PairContact& pair) {
@@ -101,6 +116,9 @@ inline bool has_intact_bond(const PairContact& pair) {
     return false;
 }
 
+/// Updates a pair with this step's geometry: matched points keep their shear history. A point
+/// matches last step's point with the same feature id, or else an unmatched old point closer
+/// than match_distance_m (see the .cpp for why). Returns the old points that opened.
 OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m);
 
 }  // namespace blockdem

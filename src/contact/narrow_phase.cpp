@@ -39,6 +39,9 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
     // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
     const bool face_kept = gap_m > 0.0 && !w.sub_contacts.empty() && w.sub_contacts[p].count > 0;
+    // A dilated joint point pushes while the faces are apart by less than its dilation.
+    if (pair.count > 0 && w.contact.any_dilation) [[unlikely]]
+        gap_m = std::max(gap_m, dilated_gap_m(pair));
     const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.

@@ -79,10 +79,12 @@ SimulationSettings read_settings(TableReader t) {
 // The joint keys (laws/mohr_coulomb_joint.hpp): strengths per unit area of joint, so only
 // with stiffness = "per_length"; a table that switches to per-point drops the inherited ones.
 void read_joint_keys(TableReader& t, ContactParameters& p) {
-    const char* keys[] = {"cohesion", "tensile_strength", "residual_mu"};
+    const char* keys[] = {"cohesion", "tensile_strength", "residual_mu", "dilation_deg", "dilation_zero_slip"};
     if (p.stiffness == StiffnessBasis::per_point) {
         p.cohesion_pa = p.tensile_strength_pa = 0.0;
         p.residual_mu = -1.0;
+        p.tan_dilation = 0.0;
+        p.dilation_zero_slip_m = 0.0;
         for (const char* key : keys)
             if (t.has(key))
                 t.fail(key, fmt::format("is a joint property and needs per-length stiffness, but per-point is set here "
@@ -104,6 +106,25 @@ void read_joint_keys(TableReader& t, ContactParameters& p) {
                fmt::format("the residual friction residual_mu = {} is above the peak friction mu = {}: a joint cannot "
                            "be stronger once broken",
                            p.residual_mu, p.mu));
+    if (auto dilation = t.optional_number("dilation_deg")) {
+        if (!(*dilation >= 0.0 && *dilation < 45.0))
+            t.fail("dilation_deg", fmt::format("is the joint's dilation angle and must lie in [0, 45) degrees, got {}",
+                                               *dilation));
+        p.tan_dilation = std::tan(*dilation * pi / 180.0);
+    }
+    if (auto zero_slip = t.optional_number("dilation_zero_slip")) {
+        if (!(*zero_slip >= 0.0))
+            t.fail("dilation_zero_slip", fmt::format("is the dilatant slip [m] after which a joint stops dilating and "
+                                                     "must be >= 0 (0: no limit), got {}",
+                                                     *zero_slip));
+        p.dilation_zero_slip_m = *zero_slip;
+    }
+    // (The friction that bounds it is the one the sliding point has: the residual one once broken.)
+    if (p.tan_dilation > residual_friction(p) * (1.0 + 1e-12))
+        t.fail(t.has("dilation_deg") ? "dilation_deg" : "mu",
+               fmt::format("the dilation angle {:.6g} deg is above the joint's friction angle {:.6g} deg: a joint "
+                           "cannot dilate more than associative friction",
+                           std::atan(p.tan_dilation) * 180.0 / pi, std::atan(residual_friction(p)) * 180.0 / pi));
 }
 
 ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_mu,
@@ -359,6 +380,7 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
                                                    "the pair {} / {} has per-point stiffness",
                                                    pairs.materials[i / pairs.materials.size()],
                                                    pairs.materials[i % pairs.materials.size()]));
+    pairs.refresh_any_dilation();
     t.reject_unknown_keys();
     return pairs;
 }

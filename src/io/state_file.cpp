@@ -358,6 +358,7 @@ void write_contacts(StateGroup g, const std::vector<PairContact>& c) {
     g.write("point_shear_dashpot_n", point_column<double>(c, [](const ContactPoint& q) { return q.shear_dashpot_n; }), 2);
     g.write("point_sliding", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.sliding); }), 2);
     g.write("point_bond", point_column<std::uint8_t>(c, [](const ContactPoint& q) { return std::uint8_t(q.bond); }), 2);
+    g.write("point_dilation_m", point_column<double>(c, [](const ContactPoint& q) { return q.dilation_m; }), 2);
     std::vector<std::uint32_t> broken;
     for (const PairContact& p : c) broken.insert(broken.end(), p.broken_features, p.broken_features + 2);
     g.write("broken_features", broken, 2);
@@ -385,6 +386,9 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
     // (Files written before bonds existed have no bond column: no point was bonded then.)
     const std::vector<std::uint8_t> bond =
         g.has("point_bond") ? g.flags("point_bond", 2 * n, 2) : std::vector<std::uint8_t>(2 * a.size(), 0);
+    // (Files written before joints dilated have no dilation column: no point had dilated.)
+    const std::vector<double> dilation =
+        g.has("point_dilation_m") ? g.doubles("point_dilation_m", 2 * n, 2) : std::vector<double>(2 * a.size(), 0.0);
     // (Files written before broken corners were remembered have none.)
     const std::vector<std::uint32_t> broken =
         g.has("broken_features") ? g.indices("broken_features", 2 * n, 2) : std::vector<std::uint32_t>(2 * a.size(), no_feature);
@@ -412,8 +416,8 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
         p.axis_cache = {separating[i], incident[i], others[i], drift[i], margin[i], turn[i]};
         for (std::size_t k = 0; k < 2; ++k) {
             const std::size_t j = 2 * i + k;
-            p.points[k] = {feature[j], point[j], overlap[j], normal_force[j], spring[j], shear[j], normal_dashpot[j],
-                           shear_dashpot[j], sliding[j] != 0, static_cast<BondState>(bond[j])};
+            p.points[k] = {feature[j], sliding[j] != 0, static_cast<BondState>(bond[j]), point[j], overlap[j], normal_force[j],
+                           spring[j], shear[j], normal_dashpot[j], shear_dashpot[j], dilation[j]};
         }
     }
     return out;
@@ -451,6 +455,7 @@ void write_sub_contacts(StateGroup g, const std::vector<SubContacts>& sub) {
     g.write("point_shear_dashpot_n", points_of.operator()<double>([](const ContactPoint& q) { return q.shear_dashpot_n; }));
     g.write("point_sliding", points_of.operator()<std::uint8_t>([](const ContactPoint& q) { return std::uint8_t(q.sliding); }));
     g.write("point_bond", points_of.operator()<std::uint8_t>([](const ContactPoint& q) { return std::uint8_t(q.bond); }));
+    g.write("point_dilation_m", points_of.operator()<double>([](const ContactPoint& q) { return q.dilation_m; }));
 }
 
 std::vector<SubContacts> read_sub_contacts(const StateGroup& g, std::size_t pair_count) {
@@ -471,6 +476,8 @@ std::vector<SubContacts> read_sub_contacts(const StateGroup& g, std::size_t pair
                               normal_dashpot = g.doubles("point_normal_dashpot_n", total),
                               shear_dashpot = g.doubles("point_shear_dashpot_n", total);
     const std::vector<std::uint8_t> sliding = g.flags("point_sliding", total), bond = g.flags("point_bond", total);
+    const std::vector<double> dilation =
+        g.has("point_dilation_m") ? g.doubles("point_dilation_m", total) : std::vector<double>(total, 0.0);
     // (Files from before the broken points' memory have none.)
     const std::vector<std::uint32_t> memory = g.has("broken_memory") ? g.indices("broken_memory", static_cast<std::int64_t>(pair_count))
                                                                      : std::vector<std::uint32_t>(pair_count, 0);
@@ -491,8 +498,8 @@ std::vector<SubContacts> read_sub_contacts(const StateGroup& g, std::size_t pair
             if (bond[j] > std::uint8_t(BondState::broken_shear))
                 throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: point {} has no "
                                                                    "valid bond state", g.path(), j + 1));
-            out[i].points[k] = {feature[j], point[j], overlap[j], normal_force[j], spring[j], shear[j], normal_dashpot[j],
-                                shear_dashpot[j], sliding[j] != 0, static_cast<BondState>(bond[j])};
+            out[i].points[k] = {feature[j], sliding[j] != 0, static_cast<BondState>(bond[j]), point[j], overlap[j], normal_force[j],
+                                spring[j], shear[j], normal_dashpot[j], shear_dashpot[j], dilation[j]};
         }
     }
     return out;

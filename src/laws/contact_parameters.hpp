@@ -40,6 +40,8 @@ struct ContactParameters {
     double cohesion_pa = 0.0;          ///< [Pa] c of an intact bond
     double tensile_strength_pa = 0.0;  ///< [Pa] sigma_t of an intact bond
     double residual_mu = -1.0;         ///< [-] friction after the bond broke; < 0: mu
+    double tan_dilation = 0.0;         ///< [-] tan(psi): a sliding dry joint point opens by this per unit of slip
+    double dilation_zero_slip_m = 0.0;  ///< [m] dilatant slip after which a point stops dilating (its u_d <= tan(psi) x this); 0: none
 };
 
 /// The friction of a point whose bond broke: residual_mu, or mu when none was given.

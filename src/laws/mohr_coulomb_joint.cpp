@@ -31,14 +31,74 @@ ContactForce dry_point(const ContactParameters& p, double friction, const JointP
     return linear_spring_dashpot(dry, c, closed, previous, dt_s);
 }
 
+// The dry point with dilation (header comment). Its trial is the point on s = overlap + u_d
+// with no new dilation, spring and dashpot linear (no clamp: the trial is no state). If last
+// step's spring force plus this step's increment is past the trial's cap by excess_n, the
+// slider slips by du_p and the point dilates by tan(psi) du_p, which raises the normal force by
+// (kn + C_n / dt) tan(psi) du_p (spring and dashpot both act on s) and the cap by friction
+// times that; the spring ends on the cap when
+//   excess_n - ks du_p = friction (kn + C_n / dt) tan(psi) du_p,
+// which gives du_p: the slip of the faces less what the spring takes up, as in an elastic-
+// plastic return to the cap. Why the trial is linear and counts from last step's force: in
+// steady sliding a free joint's faces open in a step by what the point dilated in the last
+// one, so the trial's s falls by about that (and below zero once the step's dilation passes
+// the joint's elastic closure), and its dashpot sees that opening rate; the step's dilation
+// restores both. Clamping the trial, or relaxing the spring to the trial's cap first, counts
+// that dip as no slip: the point then stopped dilating, or dilated by only
+// ks / (ks + friction kn tan(psi)) of tan(psi) times its slip. The forces are then the dry
+// point's on the dilated s, with the dashpot on ds/dt: a free joint opening by its own dilation
+// is no impact (on the geometric rate, the dashpot held a sliding block down by
+// C_n tan(psi) v_s). A point that does not dilate is the dry point on s; one open (s <= 0), which
+// the narrow phase keeps while it may close again by dilating, carries nothing, its dashpot
+// included.
+JointForce dilating_dry_point(const ContactParameters& p, double friction, const JointPoint& point,
+                              const DashpotCoefficients& c, const ContactKinematics& k, const ContactHistory& previous,
+                              double dt_s, const DilationHistory& h) {
+    JointForce out;
+    out.dilation_m = h.dilation_m;
+    ContactKinematics dilated = k;
+    dilated.overlap_m = k.overlap_m + h.dilation_m;
+    const double linear_normal_n = point.kn_N_m * dilated.overlap_m - c.cn_N_s_m * k.normal_speed_m_s;
+    const double trial_n = previous.shear_spring_n - point.ks_N_m * k.tangential_speed_m_s * dt_s;
+    const double excess_n = std::abs(trial_n) - friction * linear_normal_n;
+    if (excess_n > 0.0) {
+        const double stiffening_n_m = point.kn_N_m + c.cn_N_s_m / dt_s;
+        const double slip_m = excess_n / (point.ks_N_m + friction * p.tan_dilation * stiffening_n_m);
+        double increment_m = p.tan_dilation * slip_m;
+        if (p.dilation_zero_slip_m > 0.0)
+            increment_m = std::min(increment_m, std::max(0.0, p.tan_dilation * p.dilation_zero_slip_m - h.dilation_m));
+        // (Dilating, the point must end closed and pushing; else it does not dilate.)
+        if (increment_m > 0.0 && dilated.overlap_m + increment_m > 0.0 &&
+            linear_normal_n + stiffening_n_m * increment_m > 0.0) {
+            dilated.overlap_m += increment_m;
+            dilated.normal_speed_m_s -= increment_m / dt_s;
+            out.force = dry_point(p, friction, point, c, dilated, previous, dt_s);
+            out.dilation_m = h.dilation_m + increment_m;
+            // The normal element took (F_n,last + F_n) du_d / 2 more than the bodies' normal
+            // motion gave it: that work came from the slip (docs/physics.md, "Dilation").
+            out.force.friction_work_j -= 0.5 * (h.normal_force_n + out.force.normal_n) * increment_m;
+            return out;
+        }
+    }
+    out.force = dry_point(p, friction, point, dilated.overlap_m > 0.0 ? c : DashpotCoefficients{}, dilated, previous, dt_s);
+    return out;
+}
+
 }  // namespace
 
 JointForce mohr_coulomb_joint(const ContactParameters& p, const JointPoint& point, const DashpotCoefficients& c,
-                              const ContactKinematics& k, const ContactHistory& previous, BondState bond, double dt_s) {
+                              const ContactKinematics& k, const ContactHistory& previous, BondState bond, double dt_s,
+                              const DilationHistory& dilation) {
     JointForce out;
     out.bond = bond;
     if (bond != BondState::intact) {
-        out.force = dry_point(p, bond == BondState::none ? p.mu : residual_friction(p), point, c, k, previous, dt_s);
+        const double friction = bond == BondState::none ? p.mu : residual_friction(p);
+        if (p.tan_dilation > 0.0) [[unlikely]] {
+            out = dilating_dry_point(p, friction, point, c, k, previous, dt_s, dilation);
+            out.bond = bond;
+            return out;
+        }
+        out.force = dry_point(p, friction, point, c, k, previous, dt_s);
         return out;
     }
     ContactForce& f = out.force;
@@ -66,8 +126,9 @@ JointForce mohr_coulomb_joint(const ContactParameters& p, const JointPoint& poin
     return out;
 }
 
-double joint_elastic_energy(const JointPoint& point, double overlap_m, double shear_spring_n, BondState bond) {
-    const double normal_m = bond == BondState::intact ? overlap_m : std::max(0.0, overlap_m);
+double joint_elastic_energy(const JointPoint& point, double overlap_m, double shear_spring_n, BondState bond,
+                            double dilation_m) {
+    const double normal_m = bond == BondState::intact ? overlap_m : std::max(0.0, overlap_m + dilation_m);
     const double shear_j = point.ks_N_m > 0.0 ? 0.5 * shear_spring_n * shear_spring_n / point.ks_N_m : 0.0;
     return 0.5 * point.kn_N_m * normal_m * normal_m + shear_j;
 }

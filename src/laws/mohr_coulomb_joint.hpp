@@ -13,10 +13,23 @@
 //            the point continues as a dry one with the residual friction;
 //   dry point (never bonded, or broken): the linear spring-dashpot-slider of
 //            laws/linear_spring_dashpot.hpp with no tension, friction mu (residual_mu once
-//            broken).
+//            broken);
+//   dilation (as UDEC's joint dilation angle psi; dry points only): the point carries its
+//            accumulated dilation u_d [m], and its normal spring and dashpot act on overlap + u_d.
+//            A step on which the slider slips by du_p (the part of this step's shear
+//            displacement that the spring does not take) adds tan(psi) du_p to u_d, and this
+//            step's normal force already includes it: u_d, the normal force and the friction cap
+//            are solved together (closed form: the cap rises with the slip), so the point ends
+//            on its Coulomb cap. In steady sliding du_p is the whole shear increment, UDEC's
+//            |du_s|. With dilation_zero_slip z, u_d stops at tan(psi) z. A confined joint's
+//            normal force rises by kn du_d; a free one opens.
 // Energy: a breaking bond releases what its springs stored beyond what the dry point keeps;
 // that step's whole release (normal spring in tension, shear spring down to the residual cap)
-// is booked as bond_breakage_j, so the ledger stays closed.
+// is booked as bond_breakage_j, so the ledger stays closed. A dilating step moves
+// (F_n,last + F_n) du_d / 2 (the normal force's trapezoid over the dilation) from the slip's
+// friction work into the normal spring and dashpot: the normal element then takes from the
+// bodies what it stores and damps on overlap + u_d, and the ledger closes per step
+// (docs/physics.md, "Dilation").
 // Signs as in linear_spring_dashpot.hpp: n from a to b, t = n turned counter-clockwise, forces on b.
 #include <cstdint>
 
@@ -64,17 +77,26 @@ struct JointForce {
     ContactForce force;
     BondState bond = BondState::none;
     double bond_breakage_j = 0.0;  ///< [J] released by a bond that broke this step
+    double dilation_m = 0.0;       ///< [m] the point's accumulated dilation u_d after the step
+};
+
+/// What a dilating point carries from the last step besides ContactHistory.
+struct DilationHistory {
+    double dilation_m = 0.0;      ///< [m] accumulated dilation u_d before the step
+    double normal_force_n = 0.0;  ///< [N] last step's normal force (spring and dashpot), for the dilation's work
 };
 
 /// Advances one point of a per-length joint by dt (laws as in the header comment). p: the
 /// pair's parameters (friction, strengths); point: its stiffness and area; bond: its state
-/// before the step.
+/// before the step; dilation: u_d and last step's normal force (read only where p.tan_dilation > 0).
 JointForce mohr_coulomb_joint(const ContactParameters& p, const JointPoint& point, const DashpotCoefficients& c,
-                              const ContactKinematics& k, const ContactHistory& previous, BondState bond, double dt_s);
+                              const ContactKinematics& k, const ContactHistory& previous, BondState bond, double dt_s,
+                              const DilationHistory& dilation = {});
 
-/// Elastic energy stored in one joint point's springs [J]: the normal spring only in
-/// compression unless the bond is intact.
-double joint_elastic_energy(const JointPoint& point, double overlap_m, double shear_spring_n, BondState bond);
+/// Elastic energy stored in one joint point's springs [J]: the normal spring (on overlap +
+/// dilation_m) only in compression unless the bond is intact.
+double joint_elastic_energy(const JointPoint& point, double overlap_m, double shear_spring_n, BondState bond,
+                            double dilation_m = 0.0);
 
 /// The opening [m] at which an intact bond's spring alone reaches the tensile strength,
 /// sigma_t / JKN (the narrow phase keeps bonded points open by up to twice that).

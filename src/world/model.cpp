@@ -23,12 +23,18 @@ std::uint32_t MaterialPairs::id(const std::string& material) const {
 void MaterialPairs::set(std::uint32_t i, std::uint32_t j, const ContactParameters& p) {
     parameters[i * materials.size() + j] = p;
     parameters[j * materials.size() + i] = p;
+    refresh_any_dilation();
+}
+
+void MaterialPairs::refresh_any_dilation() {
+    any_dilation = std::any_of(parameters.begin(), parameters.end(), [](const ContactParameters& p) { return p.tan_dilation > 0.0; });
 }
 
 MaterialPairs MaterialPairs::uniform(const ContactParameters& p) {
     MaterialPairs pairs;
     pairs.materials = {"default"};
     pairs.parameters = {p};
+    pairs.refresh_any_dilation();
     return pairs;
 }
 

@@ -51,12 +51,16 @@ struct MaterialPairs {
     double rounding_m = 0.0;
     /// [contact] sub_contacts: the points of an edge-to-edge per-length contact (contact/sub_contacts.hpp)
     std::uint32_t sub_contacts = 2;
+    /// Some pair's joints dilate (ContactParameters::tan_dilation > 0): the narrow phase then
+    /// keeps dilated points (contact/narrow_phase.cpp). Kept by set, uniform and refresh_any_dilation.
+    bool any_dilation = false;
 
     std::uint32_t id(const std::string& material) const;  ///< throws std::out_of_range
     const ContactParameters& at(std::uint32_t i, std::uint32_t j) const {
         return parameters[i * materials.size() + j];
     }
     void set(std::uint32_t i, std::uint32_t j, const ContactParameters& p);
+    void refresh_any_dilation();
     /// One material, one parameter set.
     static MaterialPairs uniform(const ContactParameters& p);
 };

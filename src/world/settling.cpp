@@ -57,22 +57,32 @@ struct HeldWhileSettling {
     TableMotion shaking;
     double tilt_rate_rad_s;
     std::vector<double> mu;
+    std::vector<double> tan_dilation;
 };
 
 HeldWhileSettling hold(World& w, const SettlingSettings& settings) {
-    HeldWhileSettling held{w.table_motion, w.settings.tilt_rate_rad_s, {}};
+    HeldWhileSettling held{w.table_motion, w.settings.tilt_rate_rad_s, {}, {}};
     w.table_motion = TableMotion{};
     w.settings.tilt_rate_rad_s = 0.0;
     for (const ContactParameters& p : w.contact.parameters) held.mu.push_back(p.mu);
+    for (const ContactParameters& p : w.contact.parameters) held.tan_dilation.push_back(p.tan_dilation);
+    // (Held friction holds dilation too: against a cap of 1e6 x F_n a joint's return to the cap
+    // is all dilation, so every point that began to open would dilate until it pushed again.)
     if (settings.friction == SettlingFriction::held)
-        for (ContactParameters& p : w.contact.parameters) p.mu = held_friction_mu;
+        for (ContactParameters& p : w.contact.parameters) {
+            p.mu = held_friction_mu;
+            p.tan_dilation = 0.0;
+        }
     return held;
 }
 
 void release(World& w, const HeldWhileSettling& held) {
     w.table_motion = held.shaking;
     w.settings.tilt_rate_rad_s = held.tilt_rate_rad_s;
-    for (std::size_t k = 0; k < held.mu.size(); ++k) w.contact.parameters[k].mu = held.mu[k];
+    for (std::size_t k = 0; k < held.mu.size(); ++k) {
+        w.contact.parameters[k].mu = held.mu[k];
+        w.contact.parameters[k].tan_dilation = held.tan_dilation[k];
+    }
 }
 
 // The largest displacement and rotation of any dynamic body since settling started.

@@ -120,5 +120,43 @@ kn = 1.0e8
     expect_contains(e, "per-point stiffness given where per-length is set");
 }
 
+TEST(JointKeys, DilationAngleIsReadAndBounded) {
+    const std::string good = replace_once(bonded_block, "residual_mu = 0.5", "residual_mu = 0.5\ndilation_deg = 20.0");
+    const LoadedScenario s = load_scenario(testing::write_scenario("joint-keys", "dilation", good), {});
+    EXPECT_DOUBLE_EQ(s.world.contact.at(0, 0).tan_dilation, std::tan(20.0 * std::acos(-1.0) / 180.0));
+    EXPECT_TRUE(s.world.contact.any_dilation);
+    // Out of [0, 45), above the (residual) friction angle 26.6 deg, or on a per-point contact: refused.
+    const std::string too_large = error_of("dilation-45", replace_once(good, "dilation_deg = 20.0", "dilation_deg = 45.0"));
+    expect_contains(too_large, "contact.dilation_deg");
+    expect_contains(too_large, "[0, 45)");
+    const std::string above = error_of("dilation-phi", replace_once(good, "dilation_deg = 20.0", "dilation_deg = 30.0"));
+    expect_contains(above, "contact.dilation_deg");
+    expect_contains(above, "above the joint's friction angle");
+    const std::string per_point = replace_once(replace_once(replace_once(good, "stiffness = \"per_length\"\n", ""),
+                                                            "cohesion = 2.0e5\ntensile_strength = 1.0e5\nresidual_mu = 0.5\n", ""),
+                                               "kn = 1.0e10", "kn = 1.0e8");
+    const std::string on_points = error_of("dilation-per-point", per_point);
+    expect_contains(on_points, "contact.dilation_deg");
+    expect_contains(on_points, "per_length");
+}
+
+TEST(JointKeys, ZeroDilationSlipIsReadAndBounded) {
+    const std::string good =
+        replace_once(bonded_block, "residual_mu = 0.5", "residual_mu = 0.5\ndilation_deg = 20.0\ndilation_zero_slip = 0.002");
+    const LoadedScenario s = load_scenario(testing::write_scenario("joint-keys", "zero-slip", good), {});
+    EXPECT_DOUBLE_EQ(s.world.contact.at(0, 0).dilation_zero_slip_m, 0.002);
+    const std::string negative =
+        error_of("zero-slip-negative", replace_once(good, "dilation_zero_slip = 0.002", "dilation_zero_slip = -0.002"));
+    expect_contains(negative, "contact.dilation_zero_slip");
+    expect_contains(negative, ">= 0");
+    const std::string per_point = replace_once(replace_once(replace_once(replace_once(good, "stiffness = \"per_length\"\n", ""),
+                                                                         "cohesion = 2.0e5\ntensile_strength = 1.0e5\nresidual_mu = 0.5\n", ""),
+                                                            "dilation_deg = 20.0\n", ""),
+                                               "kn = 1.0e10", "kn = 1.0e8");
+    const std::string on_points = error_of("zero-slip-per-point", per_point);
+    expect_contains(on_points, "contact.dilation_zero_slip");
+    expect_contains(on_points, "per_length");
+}
+
 }  // namespace
 }  // namespace blockdem

@@ -3,6 +3,7 @@
 // stopped; the file round trip loses nothing; bad files are refused with the file's name.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -155,6 +156,43 @@ TEST_F(StateFileTest, SubContactsGoOnBitForBit) {
     EXPECT_EQ(state.world().energy.bond_breakage_j, 0.0);
     EXPECT_GT(straight.energy.bond_breakage_j, 0.0);
     EXPECT_TRUE(same_bits(straight.energy.bond_breakage_j, restored.energy.bond_breakage_j));
+}
+
+// A block sliding down a 40 deg table on a dilating joint (psi = 20 deg): saved while it
+// slides and has dilated, it goes on bit for bit (the points' dilation is history).
+Model dilating_slide() {
+    ContactParameters p;
+    p.stiffness = StiffnessBasis::per_length;
+    p.kn_pa_m = 1e9;
+    p.ks_pa_m = 5e8;
+    p.mu = 0.6;
+    p.h_n = p.h_s = 0.5;
+    p.tan_dilation = std::tan(20.0 * std::numbers::pi / 180.0);
+    Model m = testing::model_with({testing::rectangle_body("table", BodyKind::fixed, 3.0, 0.2, {0.0, -0.1}),
+                                   testing::rectangle_body("block", BodyKind::dynamic, 2.0, 0.05, {0.0, 0.025}, 0.0, 1000.0)},
+                                  p, 0.0, 9.81, 1.0);
+    m.settings.dt_s.reset();
+    m.settings.dt_safety = 0.3;
+    m.settings.tilt_rad = 40.0 * std::numbers::pi / 180.0;
+    return m;
+}
+
+TEST_F(StateFileTest, DilatedJointGoesOnBitForBit) {
+    World straight = build_world(dilating_slide());
+    ResponseMonitor straight_monitor(straight);
+    advance(straight, straight_monitor, 1000);
+    const fs::path file = temp_file("dilating.h5");
+    write_state_file(file, straight, {"save_state", "dilating", "", "", 0}, {});
+    World restored = build_world(dilating_slide());
+    ResponseMonitor restored_monitor(restored);
+    const StateFile state(file);
+    restore_state(restored, state.world());
+    ASSERT_EQ(restored.contacts.size(), 1u);
+    EXPECT_GT(restored.contacts[0].points[0].dilation_m, 1e-4);  // it had dilated when saved (0.43 mm)
+    EXPECT_TRUE(same_bits(restored.contacts[0].points[0].dilation_m, straight.contacts[0].points[0].dilation_m));
+    advance(straight, straight_monitor, 1000);
+    advance(restored, restored_monitor, 1000);
+    EXPECT_TRUE(same_bits(straight.bodies.position_m[1], restored.bodies.position_m[1]));
 }
 
 TEST_F(StateFileTest, RoundTripKeepsTheHistoryOfEveryContact) {

@@ -1,0 +1,87 @@
+#pragma once
+// Unit quaternions for orientations: q = (w, x, y, z) turns the body frame into the world frame,
+// r_world = q r_body q*. Composition q1 * q2 applies q2 first. Rotation vectors (axis times angle
+// [rad]) map to quaternions exactly (exp), which is how the integrator turns a body by omega dt.
+#include <cmath>
+
+#include "geometry/matrix_3d.hpp"
+#include "geometry/vec3.hpp"
+
+namespace blockdem {
+
+struct Quaternion {
+    double w = 1.0;
+    double x = 0.0;
+    double y = 0.0;
+    double z = 0.0;
+};
+
+constexpr Quaternion operator*(Quaternion a, Quaternion b) {
+    return {a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+            a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+constexpr Quaternion conjugate(Quaternion q) { return {q.w, -q.x, -q.y, -q.z}; }
+inline Quaternion normalized(Quaternion q) {
+    const double l = std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+    return {q.w / l, q.x / l, q.y / l, q.z / l};
+}
+
+/// The vector v (body frame) turned into the world frame by the unit quaternion q.
+constexpr Vec3 rotate(Quaternion q, Vec3 v) {
+    // v + 2 w (u x v) + 2 u x (u x v), u the vector part: fewer products than q v q*.
+    const Vec3 u{q.x, q.y, q.z};
+    const Vec3 t = 2.0 * cross(u, v);
+    return v + q.w * t + cross(u, t);
+}
+/// The world vector v expressed in the body frame of q.
+constexpr Vec3 rotate_inverse(Quaternion q, Vec3 v) { return rotate(conjugate(q), v); }
+
+/// The rotation by |v| [rad] about v: exp of the rotation vector, exact for any angle.
+inline Quaternion from_rotation_vector(Vec3 v) {
+    const double angle = length(v);
+    if (angle < 1e-8) {
+        // sin(a/2)/a = 1/2 - a^2/48 + ...: the series to round-off below 1e-8.
+        const double half = 0.5 - angle * angle / 48.0;
+        return normalized(Quaternion{1.0 - angle * angle / 8.0, half * v.x, half * v.y, half * v.z});
+    }
+    const double s = std::sin(0.5 * angle) / angle;
+    return {std::cos(0.5 * angle), s * v.x, s * v.y, s * v.z};
+}
+
+/// The rotation vector (axis times angle [rad], angle in [0, pi]) of the unit quaternion q.
+inline Vec3 rotation_vector(Quaternion q) {
+    if (q.w < 0.0) q = {-q.w, -q.x, -q.y, -q.z};  // the same rotation, the shorter way round
+    const double s = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
+    if (s < 1e-12) return {2.0 * q.x, 2.0 * q.y, 2.0 * q.z};
+    const double angle = 2.0 * std::atan2(s, q.w);
+    return (angle / s) * Vec3{q.x, q.y, q.z};
+}
+
+/// The rotation matrix of the unit quaternion q (columns: the body axes in the world frame).
+constexpr Matrix3d rotation_matrix(Quaternion q) {
+    return Matrix3d::from_columns(rotate(q, {1, 0, 0}), rotate(q, {0, 1, 0}), rotate(q, {0, 0, 1}));
+}
+
+/// The unit quaternion of a rotation matrix (det +1), by the largest of the four squares
+/// (Shepperd 1978), so that no division is by a small number.
+inline Quaternion from_rotation_matrix(const Matrix3d& r) {
+    const auto& m = r.m;
+    const double t = m[0][0] + m[1][1] + m[2][2];
+    Quaternion q;
+    if (t >= m[0][0] && t >= m[1][1] && t >= m[2][2]) {
+        const double s = 2.0 * std::sqrt(1.0 + t);
+        q = {0.25 * s, (m[2][1] - m[1][2]) / s, (m[0][2] - m[2][0]) / s, (m[1][0] - m[0][1]) / s};
+    } else if (m[0][0] >= m[1][1] && m[0][0] >= m[2][2]) {
+        const double s = 2.0 * std::sqrt(1.0 + m[0][0] - m[1][1] - m[2][2]);
+        q = {(m[2][1] - m[1][2]) / s, 0.25 * s, (m[0][1] + m[1][0]) / s, (m[0][2] + m[2][0]) / s};
+    } else if (m[1][1] >= m[2][2]) {
+        const double s = 2.0 * std::sqrt(1.0 + m[1][1] - m[0][0] - m[2][2]);
+        q = {(m[0][2] - m[2][0]) / s, (m[0][1] + m[1][0]) / s, 0.25 * s, (m[1][2] + m[2][1]) / s};
+    } else {
+        const double s = 2.0 * std::sqrt(1.0 + m[2][2] - m[0][0] - m[1][1]);
+        q = {(m[1][0] - m[0][1]) / s, (m[0][2] + m[2][0]) / s, (m[1][2] + m[2][1]) / s, 0.25 * s};
+    }
+    return normalized(q);
+}
+
+}  // namespace blockdem

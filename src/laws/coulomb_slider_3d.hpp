@@ -1,0 +1,75 @@
+#pragma once
+// The shear half of the contact law (laws/linear_spring_dashpot.hpp) in 3-D: the shear spring
+// force is a vector in the contact's tangent plane, built incrementally from the tangential slip,
+// with the Coulomb cap on its length, so that friction is isotropic and the slip's direction is
+// the force's. Everything else is the 2-D slider's, term by term (coulomb_slider): the spring
+// first relaxes to a cap that fell, the dashpot acts only while the point sticks, and the work
+// is taken by the trapezoid so that the energy ledger closes.
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/vec3.hpp"
+
+namespace blockdem {
+
+/// Shear history of one 3-D contact point (zero for a new contact).
+struct ShearHistory3d {
+    Vec3 spring_n;   ///< [N] shear spring force on b, in the tangent plane
+    Vec3 dashpot_n;  ///< [N] last step's shear dashpot force on b
+};
+
+/// This step's shear forces and dissipation.
+struct ShearForce3d {
+    Vec3 spring_n;                      ///< [N] shear spring force on b: the history to carry
+    Vec3 total_n;                       ///< [N] spring plus dashpot, capped
+    Vec3 dashpot_n;                     ///< [N] the dashpot's part of total_n
+    bool sliding = false;
+    double friction_work_j = 0.0;       ///< [J] dissipated by sliding over the last interval
+    double shear_dashpot_work_j = 0.0;  ///< [J] dissipated by the shear dashpot over the last interval
+};
+
+/// v scaled down to length at most limit (v itself when shorter).
+inline Vec3 capped_length(Vec3 v, double limit) {
+    const double l = length(v);
+    return l > limit ? (l > 0.0 ? (limit / l) * v : Vec3{}) : v;
+}
+
+/// The history carried into a contact frame whose normal turned from old_normal to new_normal
+/// (unit vectors): the vectors lose their new normal component and keep their length, which
+/// turns them with the frame to first order in the turn. A fixed normal leaves them unchanged.
+inline ShearHistory3d carry_to_normal(ShearHistory3d h, Vec3 new_normal) {
+    const auto carry = [&](Vec3 v) {
+        const Vec3 in_plane = v - dot(v, new_normal) * new_normal;
+        const double l = length(in_plane);
+        return l > 0.0 ? (length(v) / l) * in_plane : Vec3{};
+    };
+    return {carry(h.spring_n), carry(h.dashpot_n)};
+}
+
+/// ks [N/m], cs [N s/m], limit_n = mu F_n [N], tangential_velocity_m_s: (v_b - v_a) at the point,
+/// in the tangent plane, over the interval that ends now.
+inline ShearForce3d coulomb_slider_3d(double ks_N_m, double cs_N_s_m, double limit_n, Vec3 tangential_velocity_m_s,
+                                      const ShearHistory3d& previous, double dt_s) {
+    ShearForce3d f;
+    const Vec3 last = previous.spring_n;
+    const Vec3 capped_last = capped_length(last, limit_n);
+    const Vec3 increment_m = dt_s * tangential_velocity_m_s;
+    const Vec3 trial = capped_last - ks_N_m * increment_m;
+    if (length(trial) > limit_n || !(capped_last == last)) {
+        f.sliding = true;
+        f.spring_n = capped_length(trial, limit_n);
+        f.total_n = f.spring_n;
+        const double work_on_bodies_j = 0.5 * dot(last + f.spring_n, increment_m);
+        const double stored_change_j =
+            ks_N_m > 0.0 ? 0.5 * (dot(f.spring_n, f.spring_n) - dot(last, last)) / ks_N_m : 0.0;
+        f.friction_work_j = -work_on_bodies_j - stored_change_j;
+    } else {
+        f.spring_n = trial;
+        f.total_n = capped_length(trial - cs_N_s_m * tangential_velocity_m_s, limit_n);
+        f.dashpot_n = f.total_n - trial;
+    }
+    f.shear_dashpot_work_j = -0.5 * dot(previous.dashpot_n + f.dashpot_n, increment_m);
+    return f;
+}
+
+}  // namespace blockdem
