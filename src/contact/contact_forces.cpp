@@ -78,8 +78,9 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
                       ContactEnergy& energy) {
     const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
     const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
-    // (Open: apart by more than the point's dilation, which the dilating law adds to the overlap.)
-    const JointForce j = point.overlap_m + point.dilation_m < 0.0 && point.bond != BondState::intact
+    // (A dilating joint's law treats its open points itself: its trial may dip below zero
+    // overlap in steady sliding and dilate back: laws/mohr_coulomb_joint.cpp.)
+    const JointForce j = point.overlap_m < 0.0 && point.bond != BondState::intact && s.params.tan_dilation == 0.0
                              ? open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, s.dt_s)
                              : mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s,
                                                   {point.dilation_m, point.normal_force_n});
