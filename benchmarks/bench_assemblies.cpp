@@ -42,6 +42,12 @@ void BM_KeyedWall(benchmark::State& state) {
 }
 BENCHMARK(BM_KeyedWall)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 
+// S3 with every joint bonded (per-length stiffness, cohesion, tension; docs/performance.md, "Joints").
+void BM_BondedWall(benchmark::State& state) {
+    run(state, build_world(scenes::bonded_wall_scene(static_cast<int>(state.range(0)), 1e9)));
+}
+BENCHMARK(BM_BondedWall)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+
 void BM_RockSlope(benchmark::State& state) {
     run(state, build_world(scenes::rock_slope_scene(static_cast<int>(state.range(0)), 1e9)));
 }

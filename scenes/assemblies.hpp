@@ -83,6 +83,14 @@ Polygon keyed_brick(Vec2 origin_m, double length_m, double height_m, double key_
 /// touches its neighbours at many more points than a plain one, which S3's 1e-4 s exceeds.
 Model keyed_wall_scene(int bricks, double duration_s = 1.0);
 
+/// Scene S3 with bonded joints (docs/performance.md, "Joints"): the same bricks, table and
+/// motion, stiffness per length JKN = JKS = 1.2e9 Pa/m (a point standing for 0.05 m of a 1 m
+/// deep joint, the end of a bed or head joint of S3, then has S3's 6e7 N/m), cohesion 2e5 Pa
+/// and tensile strength 1e5 Pa, every brick bonded to the bricks it touches at the start (not
+/// to the table). The strengths are well above the 0.3 g wall's stresses, so the bonds stay
+/// intact: the scene times an intact bonded wall.
+Model bonded_wall_scene(int bricks, double duration_s = 1.0);
+
 /// One set of parallel joints. The dip is the angle of the joint trace from +x, counter-
 /// clockwise [deg]; spacing is measured normal to the joints; each gap is spacing x (1 + spacing
 /// spread x u) and each joint's dip is dip + dip spread x u, u uniform in [-1, 1].

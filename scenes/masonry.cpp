@@ -222,4 +222,17 @@ Model keyed_wall_scene(int bricks, double duration_s) {
     return m;
 }
 
+Model bonded_wall_scene(int bricks, double duration_s) {
+    Model m = s3_wall_scene(bricks, duration_s);
+    ContactParameters joint = m.contact.at(0, 0);
+    joint.stiffness = StiffnessBasis::per_length;
+    joint.kn_pa_m = joint.kn_N_m / 0.05;  // S3's point stiffness for 0.05 m x 1 m of joint
+    joint.ks_pa_m = joint.ks_N_m / 0.05;
+    joint.cohesion_pa = 2e5;
+    joint.tensile_strength_pa = 1e5;
+    m.contact = MaterialPairs::uniform(joint);
+    for (std::size_t i = 1; i < m.bodies.size(); ++i) m.bodies[i].bond_group = 1;  // bodies[0] is the table
+    return m;
+}
+
 }  // namespace blockdem::scenes

@@ -1,4 +1,4 @@
-// `blockdem bench [--scene wall|keyed_wall|slope|rockfill] [--sizes 100,1000] [--threads 1,2] ...`
+// `blockdem bench [--scene wall|keyed_wall|bonded_wall|slope|rockfill] [--sizes 100,1000] [--threads 1,2] ...`
 // Throughput of the time step on the benchmark scenes (docs/performance.md): block-steps/s,
 // contact-steps/s, time per step split by phase, memory per block, speedup with threads. The
 // stepping loop alone is timed (scene building and --warmup steps are not), and each case is
@@ -82,7 +82,8 @@ Model make_scene(const std::string& scene, int n) {
     if (scene == "slope") return scenes::rock_slope_scene(n, 1e9);
     if (scene == "rockfill") return scenes::rockfill_scene(n, 1e9);
     if (scene == "keyed_wall") return scenes::keyed_wall_scene(n, 1e9);
-    throw std::invalid_argument("unknown scene '" + scene + "' (wall, keyed_wall, slope, rockfill)");
+    if (scene == "bonded_wall") return scenes::bonded_wall_scene(n, 1e9);
+    throw std::invalid_argument("unknown scene '" + scene + "' (wall, keyed_wall, bonded_wall, slope, rockfill)");
 }
 
 
@@ -199,7 +200,7 @@ void run_bench(const BenchOptions& o) {
 void add_bench_command(CLI::App& app) {
     auto* cmd = app.add_subcommand("bench", "Time the step on the benchmark scenes (docs/performance.md)");
     auto o = std::make_shared<BenchOptions>();
-    cmd->add_option("--scene", o->scenes, "wall (scene S3), keyed_wall (S3 of concave keyed bricks), slope (jointed rock), rockfill (Voronoi); repeatable")
+    cmd->add_option("--scene", o->scenes, "wall (scene S3), keyed_wall (S3 of concave keyed bricks), bonded_wall (S3 with bonded per-length joints), slope (jointed rock), rockfill (Voronoi); repeatable")
         ->delimiter(',')
         ->capture_default_str();
     cmd->add_option("--sizes", o->sizes, "numbers of blocks, e.g. 100,1000,10000")

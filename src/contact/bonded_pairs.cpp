@@ -3,23 +3,13 @@
 #include <algorithm>
 
 #include "contact/contact_table.hpp"
+#include "contact/narrow_phase.hpp"
 #include "contact/sub_contacts.hpp"
 #include "geometry/polygon_contact.hpp"
-#include "geometry/rounded_contact.hpp"
 #include "laws/mohr_coulomb_joint.hpp"
 
 namespace blockdem {
 namespace {
-
-PolygonView view_of(const Bodies& b, std::uint32_t i) {
-    return {&b.world_vertices_m[b.vertex_begin[i]], &b.world_normals[b.vertex_begin[i]], b.vertex_count[i]};
-}
-
-// Corners of one pair are at least a face apart, so 5% of the smaller body is "same place"
-// (as in narrow_phase.cpp).
-double match_distance_m(const Bodies& b, const PairContact& pair) {
-    return 0.05 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
-}
 
 // What "touching" means at the start: apart by no more than round-off of the body size (the
 // start overlap check allows as much the other way).
@@ -39,23 +29,20 @@ std::size_t bond_touching_pairs(World& w) {
         if (b.is_static[pair.a] && b.is_static[pair.b]) continue;  // nothing moves between them
         // (The scenario reader allows bonds only with per-length stiffness.)
         if (w.contact.at(b.material[pair.a], b.material[pair.b]).stiffness != StiffnessBasis::per_length) continue;
-        // The points bonded are those the narrow phase will keep: with rounded corners, those of
-        // the rounded outlines (the ends of the straight part of the joint).
+        // The points bonded are those the narrow phase will keep: those of the pair's two convex
+        // parts (a concave body bonds along the parts that touch: an L on a block along one leg),
+        // and with rounded corners those of the rounded outlines (the ends of the straight part
+        // of the joint).
         ContactManifold manifold;
-        const PolygonView a = view_of(b, pair.a);
-        const PolygonView c = view_of(b, pair.b);
-        AxisCache unused;
-        const bool touching = w.contact.rounding_m > 0.0
-                                  ? collide_rounded(a, c, w.contact.rounding_m, no_reference, manifold, unused, touching_gap_m(b, pair))
-                                  : collide_polygons(a, c, no_reference, manifold, nullptr, touching_gap_m(b, pair));
-        if (!touching) continue;
+        if (!collide_parts(w, pair, no_reference, manifold, nullptr, touching_gap_m(b, pair))) continue;
         pair.axis_cache = AxisCache{};
-        update_pair_geometry(pair, manifold, match_distance_m(b, pair));
+        update_pair_geometry(pair, manifold, part_match_distance_m(b, pair));
         for (std::uint32_t k = 0; k < pair.count; ++k) pair.points[k].bond = BondState::intact;
         bonded += pair.count;
         // The interior points of an edge-to-edge joint are bonded with its ends (sub_contacts.hpp).
         if (pair.count == 2 && p < w.sub_contacts.size()) {
-            place_sub_points(w.sub_contacts[p], pair, w.contact.sub_contacts, match_distance_m(b, pair), BondState::intact);
+            place_sub_points(w.sub_contacts[p], pair, w.contact.sub_contacts, part_match_distance_m(b, pair),
+                             BondState::intact);
             bonded += w.sub_contacts[p].count;
         }
     }

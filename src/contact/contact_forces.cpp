@@ -1,10 +1,14 @@
 #include "contact/contact_forces.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "laws/linear_spring_dashpot.hpp"
 #include "laws/mohr_coulomb_joint.hpp"
 #include "world/parallel.hpp"
+
+// The joint law's one compilation: here, so that it inlines into joint_point_step (CMakeLists.txt).
+#include "laws/mohr_coulomb_joint.cpp"
 
 namespace blockdem {
 namespace {
@@ -37,6 +41,12 @@ ContactEnergy dropped_sub_points_work(const Bodies& b, const PairContact& pair, 
     return energy;
 }
 
+// The dashpots of a joint point (dashpot_coefficients with the point's own stiffnesses; the
+// pair's parameters are not copied for it, a copy per pair showed in profiles).
+DashpotCoefficients joint_dashpots(const ContactParameters& p, const JointPoint& joint, double mass_kg) {
+    return {2.0 * p.h_n * std::sqrt(mass_kg * joint.kn_N_m), 2.0 * p.h_s * std::sqrt(mass_kg * joint.ks_N_m)};
+}
+
 // What one pass of the per-length law over a pair shares between its points.
 struct JointPass {
     const Bodies& b;
@@ -46,14 +56,34 @@ struct JointPass {
     double dt_s;
 };
 
+// A point of a joint that is open and not bonded (a cracked point past which the crack opened,
+// kept with its face: sub_contacts.hpp) carries nothing: the law's dry point would still push
+// with its normal dashpot where the gap closes. What it held is let go as the dry point lets it
+// go when it opens: the last half interval of its normal dashpot, and the shear spring slides
+// to a zero cap (the slider books the release as friction work).
+JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, const ContactKinematics& k,
+                      const ContactHistory& previous, BondState bond, double dilation_m, double dt_s) {
+    JointForce out;
+    out.bond = bond;
+    out.dilation_m = dilation_m;  // (kept, as the dilating law keeps an open point's)
+    out.force.normal_dashpot_work_j = -0.5 * previous.normal_dashpot_n * k.normal_speed_m_s * dt_s;
+    coulomb_slider(joint.ks_N_m, dash.cs_N_s_m, 0.0, k.tangential_speed_m_s, previous, dt_s, out.force);
+    return out;
+}
+
 // The law at one point of a per-length joint: updates the point and the ledger's terms, and
-// returns the point's force on b.
-Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint& joint, const DashpotCoefficients& dash,
+// returns the point's force on b. (Flattened: the law and the energy inline here, as the dry
+// law does in pair_law; a call per point cost a bonded wall a third of its step.)
+[[gnu::flatten]] Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint& joint, const DashpotCoefficients& dash,
                       ContactEnergy& energy) {
     const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
     const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
-    const JointForce j = mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s,
-                                            {point.dilation_m, point.normal_force_n});
+    // (A dilating joint's law treats its open points itself: its trial may dip below zero
+    // overlap in steady sliding and dilate back: laws/mohr_coulomb_joint.cpp.)
+    const JointForce j = point.overlap_m < 0.0 && point.bond != BondState::intact && s.params.tan_dilation == 0.0
+                             ? open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, s.dt_s)
+                             : mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s,
+                                                  {point.dilation_m, point.normal_force_n});
     const ContactForce& f = j.force;
     point.normal_force_n = f.normal_n;
     point.shear_spring_n = f.shear_spring_n;
@@ -79,7 +109,8 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
 // points' dashpots together give the pair the requested damping ratio. Kept apart from
 // pair_law so that the per-point law's loop is what it was. mass_sharing_points: the active
 // points of the body pair over all its part pairs (concave bodies), pair.count otherwise.
-[[gnu::noinline]] ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
+// (Flattened, as joint_point_step: the pair's points in one body of code.)
+[[gnu::noinline, gnu::flatten]] ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
                                                  std::uint32_t sub_contacts, SubContacts* sub, double dt_s,
                                                  std::uint32_t mass_sharing_points, PairForces& out) {
     ContactEnergy energy;
@@ -94,13 +125,10 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
     const JointPoint joint = joint_point_of(b, pair, stored, rounding_m, points);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const double end_share = pair.count == 2 ? 2.0 * (points - 1) : 1.0;
-    ContactParameters point_params = stored;
-    point_params.kn_N_m = joint.kn_N_m;
-    point_params.ks_N_m = joint.ks_N_m;
     // (An end's share: 1 / (2 (n - 1)) of the mass for an edge contact, all of it for a corner,
     // and of that the part pair's share of the body pair's points.)
     const double pair_share = static_cast<double>(mass_sharing_points) / pair.count;
-    const DashpotCoefficients dash = dashpot_coefficients(point_params, reduced_mass / (end_share * pair_share));
+    const DashpotCoefficients dash = joint_dashpots(stored, joint, reduced_mass / (end_share * pair_share));
     double deepest_m = 0.0;
     for (std::uint32_t k = 0; k < pair.count; ++k) {
         ContactPoint& point = pair.points[k];
@@ -113,9 +141,7 @@ Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint&
     if (points > 2) {
         // Interior points: twice an end's tributary length, stiffness and mass share.
         const JointPoint inner{2.0 * joint.kn_N_m, 2.0 * joint.ks_N_m, 2.0 * joint.area_m2};
-        point_params.kn_N_m = inner.kn_N_m;
-        point_params.ks_N_m = inner.ks_N_m;
-        const DashpotCoefficients inner_dash = dashpot_coefficients(point_params, 2.0 * reduced_mass / end_share);
+        const DashpotCoefficients inner_dash = joint_dashpots(stored, inner, 2.0 * reduced_mass / end_share);
         for (std::uint32_t k = 0; k < sub->count; ++k) {
             ContactPoint& point = sub->points[k];
             const Vec2 on_b = joint_point_step(pass, point, inner, inner_dash, energy);

@@ -5,11 +5,20 @@
 
 #include "contact/bonded_pairs.hpp"
 #include "contact/contact_table.hpp"
+#include "contact/sub_contacts.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "geometry/rounded_contact.hpp"
 #include "world/parallel.hpp"
 
 namespace blockdem {
+namespace {
+
+PolygonView part_view(const Bodies& b, std::uint32_t part) {
+    return {&b.world_vertices_m[b.part_vertex_begin[part]], &b.world_normals[b.part_vertex_begin[part]],
+            b.part_vertex_count[part]};
+}
+
+}  // namespace
 
 OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
@@ -26,14 +35,19 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         gap_m = bonded_gap_m(w, pair);
     else if (!w.sub_contacts.empty() && pair.count > 0 && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
         gap_m = bonded_gap_m(w, pair);
+    // A bonded joint discretised into sub-contacts stays one face while any of its points is in
+    // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
+    // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
+    const bool face_kept = gap_m > 0.0 && !w.sub_contacts.empty() && w.sub_contacts[p].count > 0;
     // A dilated joint point pushes while the faces are apart by less than its dilation.
     if (pair.count > 0 && w.contact.any_dilation) [[unlikely]]
         gap_m = std::max(gap_m, dilated_gap_m(pair));
+    const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.
     const Aabb& box_a = b.part_box_m[part_a];
     const Aabb& box_b = b.part_box_m[part_b];
-    if (gap_m == 0.0 &&
+    if (collide_gap_m == 0.0 &&
         (box_a.hi.x < box_b.lo.x || box_b.hi.x < box_a.lo.x || box_a.hi.y < box_b.lo.y || box_b.hi.y < box_a.lo.y)) {
         // (Reset only if set: a pair apart stays clean and its cache line is not written.)
         if (pair.axis_cache.separating != no_reference || pair.axis_cache.others_max_separation_m < INFINITY)
@@ -42,10 +56,8 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
         return none;
     }
-    const PolygonView a{&b.world_vertices_m[b.part_vertex_begin[part_a]], &b.world_normals[b.part_vertex_begin[part_a]],
-                        b.part_vertex_count[part_a]};
-    const PolygonView c{&b.world_vertices_m[b.part_vertex_begin[part_b]], &b.world_normals[b.part_vertex_begin[part_b]],
-                        b.part_vertex_count[part_b]};
+    const PolygonView a = part_view(b, part_a);
+    const PolygonView c = part_view(b, part_b);
     // Still apart along the edge that separated the pair last step: the pair (no points, no
     // reference) is already what collide_polygons would make it. (Bricks laid side by side
     // stay exactly touching, separation 0, until the load reaches them.)
@@ -69,14 +81,32 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
     if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
-        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache, gap_m,
+        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache, collide_gap_m,
                         b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[part_a]] : nullptr,
                         b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[part_b]] : nullptr);
     else
-        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, gap_m);
-    // Corners of one pair are at least a face apart, so 5% of the smaller part is "same place".
-    const double match_distance = 0.05 * std::min(b.part_radius_m[part_a], b.part_radius_m[part_b]);
-    return update_pair_geometry(pair, manifold, match_distance);
+        collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, collide_gap_m);
+    if (face_kept) [[unlikely]]
+        keep_face_or_trim(manifold, gap_m, w.contact.sub_contacts);
+    return update_pair_geometry(pair, manifold, part_match_distance_m(b, pair));
+}
+
+bool collide_parts(const World& w, const PairContact& pair, std::uint32_t reference, ContactManifold& manifold,
+                   AxisCache* cache, double gap_m) {
+    const Bodies& b = w.bodies;
+    const PolygonView a = part_view(b, pair.part_a);
+    const PolygonView c = part_view(b, pair.part_b);
+    if (w.contact.rounding_m > 0.0) {
+        AxisCache unused;
+        return collide_rounded(a, c, w.contact.rounding_m, reference, manifold, cache != nullptr ? *cache : unused, gap_m,
+                               b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[pair.part_a]] : nullptr,
+                               b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[pair.part_b]] : nullptr);
+    }
+    return collide_polygons(a, c, reference, manifold, cache, gap_m);
+}
+
+double part_match_distance_m(const Bodies& b, const PairContact& pair) {
+    return 0.05 * std::min(b.part_radius_m[pair.part_a], b.part_radius_m[pair.part_b]);
 }
 
 void update_contact_geometry(World& w) {

@@ -2,10 +2,56 @@
 
 #include <algorithm>
 
+#include "world/world.hpp"
+
 namespace blockdem {
+
+namespace {
+
+// The broken states of the points, kept in broken_memory when they are dropped. (Rewritten
+// whole: points placed again took their broken states from it, so they hold all it held.)
+void remember_broken(SubContacts& sub) {
+    if (sub.count == 0) return;
+    std::uint32_t memory = 0;
+    for (std::uint32_t k = 0; k < sub.count; ++k)
+        if (is_broken(sub.points[k].bond)) memory |= (static_cast<std::uint32_t>(sub.points[k].bond) - 1u) << (2 * k);
+    sub.broken_memory = memory;
+    sub.memory_first_m = memory != 0 ? sub.points[0].point_m : Vec2{};
+}
+
+// The remembered bond of interior point k of interior points in all (none if it was not broken).
+BondState remembered_bond(const SubContacts& sub, std::uint32_t k) {
+    const std::uint32_t bits = (sub.broken_memory >> (2 * k)) & 3u;
+    return bits == 0 ? BondState::none : static_cast<BondState>(bits + 1);
+}
+
+}  // namespace
+
+double face_gap_m(const Bodies& b, const PairContact& pair) {
+    return 0.25 * std::min(b.part_radius_m[pair.part_a], b.part_radius_m[pair.part_b]);
+}
+
+void keep_face_or_trim(ContactManifold& manifold, double gap_m, std::uint32_t n) {
+    if (manifold.count == 2) {
+        const double first_m = manifold.points[0].overlap_m;
+        const double change_m = manifold.points[1].overlap_m - first_m;
+        for (std::uint32_t k = 0; k + 2 < n; ++k)
+            if (first_m + sub_point_fraction(k, n) * change_m > -gap_m) return;  // (as collide_polygons' test)
+    }
+    std::uint32_t kept = 0;
+    for (std::uint32_t i = 0; i < manifold.count; ++i)
+        if (manifold.points[i].overlap_m > -gap_m) manifold.points[kept++] = manifold.points[i];
+    if (kept == manifold.count) return;
+    manifold.count = kept;
+    if (kept == 0)
+        manifold = ContactManifold{};
+    else
+        manifold.stiffness_scale = 1.0;  // (a one-point contact is not softened: polygon_contact.cpp)
+}
 
 DroppedSubPoints drop_sub_points(SubContacts& sub) {
     DroppedSubPoints dropped;
+    remember_broken(sub);
     for (std::uint32_t k = 0; k < sub.count; ++k) dropped.points[dropped.count++] = sub.points[k];
     sub.count = 0;
     return dropped;
@@ -32,6 +78,14 @@ DroppedSubPoints place_sub_points(SubContacts& sub, const PairContact& pair, std
     DroppedSubPoints dropped;
     if (!keep) dropped = drop_sub_points(sub);
     SubContacts old = sub;
+    // Fresh points where broken ones were dropped start broken (the header): counted from the
+    // end nearer where point 0 was.
+    bool memory_reversed = false;
+    if (!keep && sub.broken_memory != 0) {
+        const Vec2 last_m = first_m + sub_point_fraction(interior - 1, n) * span_m;
+        const Vec2 next_to_first_m = first_m + sub_point_fraction(0, n) * span_m;
+        memory_reversed = length(last_m - sub.memory_first_m) < length(next_to_first_m - sub.memory_first_m);
+    }
     for (std::uint32_t k = 0; k < interior; ++k) {
         ContactPoint& p = sub.points[k];
         if (keep) {
@@ -39,6 +93,10 @@ DroppedSubPoints place_sub_points(SubContacts& sub, const PairContact& pair, std
         } else {
             p = ContactPoint{};
             p.bond = new_bond;
+            if (old.broken_memory != 0) [[unlikely]] {
+                const BondState remembered = remembered_bond(old, memory_reversed ? interior - 1 - k : k);
+                if (remembered != BondState::none) p.bond = remembered;
+            }
         }
         const double s = sub_point_fraction(k, n);
         p.feature = sub_point_feature(k);

@@ -16,17 +16,30 @@
 //
 // Storage: the interior points live in a side array aligned with the contact table
 // (World::sub_contacts), allocated only when n > 2 and carried through the table's merges, so
-// the common two-point contact costs nothing more. They exist while the pair has two points;
-// when it has fewer they are dropped (their dashpots' last half interval booked as for any
-// opened point). Identity: the interior point k of a pair, counted from one end: kept from step
-// to step when it is within the match distance of last step's point k counted from either end
-// (the ends may swap their order or their owners' ids: contact_table.cpp), else new.
+// the common two-point contact costs nothing more. Identity: the interior point k of a pair,
+// counted from one end: kept from step to step when it is within the match distance of last
+// step's point k counted from either end (the ends may swap their order or their owners' ids:
+// contact_table.cpp), else new.
+//
+// Crack growth: a joint that holds an intact bond keeps all its n points while any of them is
+// within the bond's gap. The narrow phase then finds the face's two ends up to face_gap_m apart
+// instead of dropping an end that opened (keep_face_or_trim), so that each point along the
+// joint keeps its own bond, intact or broken, and its shear history while the crack opens past
+// it: a bonded joint cracks point by point. A point that is open (negative overlap) and not
+// bonded carries nothing (contact_forces.cpp). Once no interior point is within the gap, or no
+// bond is left, the face is an ordinary contact again (a dry face rocking onto one end is the
+// one-point contact it was before) and the interior points are dropped (their dashpots' last half interval booked as for
+// any opened point). Which of them were broken is remembered (broken_memory), as the pair
+// remembers its broken corners, so that a crack that closes again is broken still: a broken
+// point never bonds again.
 #include <cstdint>
 #include <vector>
 
 #include "contact/contact_table.hpp"
 
 namespace blockdem {
+
+struct Bodies;
 
 /// The most points an edge-to-edge contact may be discretised into ([contact] sub_contacts).
 inline constexpr std::uint32_t max_sub_contacts = 16;
@@ -36,7 +49,22 @@ struct SubContacts {
     std::uint32_t count = 0;                       ///< interior points held: 0, or sub_contacts - 2
     Vec2 normal;                                   ///< the pair's unit normal when they were placed
     ContactPoint points[max_sub_contacts - 2];     ///< from the pair's points[0] towards points[1]
+    /// The bonds of interior points that were dropped broken, 2 bits per point k (0: none, else
+    /// the BondState broken_tension or broken_shear less 1), and where point 0 was then [m]:
+    /// the order of the points when they are placed again.
+    std::uint32_t broken_memory = 0;
+    Vec2 memory_first_m;
 };
+
+/// The gap up to which the narrow phase finds the ends of a face with sub-contacts [m]: a
+/// quarter of the smaller part's radius, far more than a crack opens while some of the face's
+/// points still touch, and far less than the parts' size.
+double face_gap_m(const Bodies& b, const PairContact& pair);
+
+/// After the narrow phase of a face with sub-contacts found with face_gap_m: keeps both ends
+/// when some interior point of n lies within gap_m (the pair's own gap: its bond's, or 0), else
+/// drops the ends beyond gap_m as collide_polygons with gap_m would.
+void keep_face_or_trim(ContactManifold& manifold, double gap_m, std::uint32_t n);
 
 /// The feature id of interior point k (k = 0 next to points[0]): marks it as no corner.
 constexpr std::uint32_t sub_point_feature(std::uint32_t k) { return 0x80000000u | (k + 1); }

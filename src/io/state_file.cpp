@@ -426,13 +426,15 @@ std::vector<PairContact> read_contacts(const StateGroup& g, std::size_t body_cou
 // The interior points of sub-contacts (contact/sub_contacts.hpp): each pair's count, then its
 // points in one flat list, pair after pair.
 void write_sub_contacts(StateGroup g, const std::vector<SubContacts>& sub) {
-    std::vector<std::uint32_t> count;
-    std::vector<Vec2> normal;
+    std::vector<std::uint32_t> count, memory;
+    std::vector<Vec2> normal, memory_first;
     std::vector<ContactPoint> points;
     for (const SubContacts& s : sub) {
         count.push_back(s.count);
         normal.push_back(s.normal);
         points.insert(points.end(), s.points, s.points + s.count);
+        memory.push_back(s.broken_memory);
+        memory_first.push_back(s.memory_first_m);
     }
     auto points_of = [&]<class T>(auto field) {
         std::vector<T> out;
@@ -441,6 +443,8 @@ void write_sub_contacts(StateGroup g, const std::vector<SubContacts>& sub) {
     };
     g.write("count", count);
     g.write("normal", normal);
+    g.write("broken_memory", memory);
+    g.write("memory_first_m", memory_first);
     g.write("point_feature", points_of.operator()<std::uint32_t>([](const ContactPoint& q) { return q.feature; }));
     g.write("point_m", points_of.operator()<Vec2>([](const ContactPoint& q) { return q.point_m; }));
     g.write("point_overlap_m", points_of.operator()<double>([](const ContactPoint& q) { return q.overlap_m; }));
@@ -474,11 +478,22 @@ std::vector<SubContacts> read_sub_contacts(const StateGroup& g, std::size_t pair
     const std::vector<std::uint8_t> sliding = g.flags("point_sliding", total), bond = g.flags("point_bond", total);
     const std::vector<double> dilation =
         g.has("point_dilation_m") ? g.doubles("point_dilation_m", total) : std::vector<double>(total, 0.0);
+    // (Files from before the broken points' memory have none.)
+    const std::vector<std::uint32_t> memory = g.has("broken_memory") ? g.indices("broken_memory", static_cast<std::int64_t>(pair_count))
+                                                                     : std::vector<std::uint32_t>(pair_count, 0);
+    const std::vector<Vec2> memory_first = g.has("memory_first_m") ? g.vectors("memory_first_m", static_cast<std::int64_t>(pair_count))
+                                                                   : std::vector<Vec2>(pair_count);
     std::vector<SubContacts> out(pair_count);
     std::size_t j = 0;
     for (std::size_t i = 0; i < pair_count; ++i) {
         out[i].count = count[i];
         out[i].normal = normal[i];
+        // (2 bits a point, 1 or 2 for a broken one: sub_contacts.hpp.)
+        if ((memory[i] & (memory[i] >> 1) & 0x55555555u) != 0)
+            throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: pair {} remembers "
+                                                               "an invalid bond state", g.path(), i + 1));
+        out[i].broken_memory = memory[i];
+        out[i].memory_first_m = memory_first[i];
         for (std::uint32_t k = 0; k < count[i]; ++k, ++j) {
             if (bond[j] > std::uint8_t(BondState::broken_shear))
                 throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: point {} has no "

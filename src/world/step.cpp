@@ -289,13 +289,23 @@ void check_stability(const World& w, bool state_finite) {
         // A linear spring's overlap falls as 1/kn under a steady load and as 1/sqrt(kn) in an
         // impact; the suggestion takes the impact rule, so it brings the overlap to 1% either way.
         const double ratio = watch.max_overlap_ratio;
+        const double raise = (ratio / overlap_warning_ratio) * (ratio / overlap_warning_ratio);
+        // (kn is read in the unit of the pair's stiffness basis: a joint's JKN in Pa/m, whose
+        // point stiffness JKN L t the overlap answered to.)
+        const ContactParameters& p =
+            w.contact.at(b.material[watch.max_overlap_pair_a], b.material[watch.max_overlap_pair_b]);
+        const std::string kn_advice =
+            p.stiffness == StiffnessBasis::per_length
+                ? fmt::format("raise kn (now {:.4g} Pa/m per unit joint area, {:.4g} N/m at this point) to about {:.3g} Pa/m",
+                              p.kn_pa_m, watch.max_overlap_kn_N_m, p.kn_pa_m * raise)
+                : fmt::format("raise kn (now {:.4g} N/m) to about {:.3g} N/m", watch.max_overlap_kn_N_m,
+                              watch.max_overlap_kn_N_m * raise);
         throw SimulationError(fmt::format(
             "penetration: bodies '{}' and '{}' overlap by {:.4g} m at t = {:.6g} s (step {}), {:.3g} of the least width "
             "of the thinner body; the limit is {:g} (simulation.max_overlap). The contact is too soft for its load: "
-            "raise kn (now {:.4g} N/m) to about {:.3g} N/m for an overlap near 1%",
+            "{} for an overlap near 1%",
             b.name[watch.max_overlap_pair_a], b.name[watch.max_overlap_pair_b], watch.max_overlap_m, w.time_s,
-            w.step_index, ratio, w.settings.max_overlap_ratio, watch.max_overlap_kn_N_m,
-            watch.max_overlap_kn_N_m * (ratio / overlap_warning_ratio) * (ratio / overlap_warning_ratio)));
+            w.step_index, ratio, w.settings.max_overlap_ratio, kn_advice));
     }
     const double error = w.energy.balance_error();
     // (The first steps are skipped: every term is still near zero and their ratio means little.)

@@ -90,6 +90,28 @@ TEST(Penetration, SinkingBlockIsStoppedWithThePairAndASuggestedStiffness) {
     EXPECT_GT(w.bodies.position_m[1].y, 0.0) << "stopped before it passed through";
 }
 
+// The same block on a per-length joint far too soft for it: the suggestion is a JKN in Pa/m, the
+// unit the scenario's kn has then, with the point stiffness it gave (JKN L t = 40 x 0.25 x 1 =
+// 10 N/m at each end of the 0.5 m face).
+TEST(Penetration, PerLengthJointSuggestsAStiffnessPerUnitArea) {
+    BodyDef table = testing::rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0.0, -0.1});
+    BodyDef block = testing::rectangle_body("block", BodyKind::dynamic, 0.5, 0.2, {0.0, 0.1});
+    ContactParameters joint = testing::contact(10.0, 0.3, 0.28, 1.0);
+    joint.stiffness = StiffnessBasis::per_length;
+    joint.kn_pa_m = joint.ks_pa_m = 40.0;
+    World w = build_world(testing::model_with({table, block}, joint, 1e-4, 9.81, 5.0));
+    try {
+        while (w.time_s < 5.0) step(w);
+        FAIL() << "the block sank through without a word";
+    } catch (const SimulationError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("raise kn (now 40 Pa/m per unit joint area, 10 N/m at this point) to about"),
+                  std::string::npos) << message;
+        EXPECT_NE(message.find(" Pa/m for an overlap near 1%"), std::string::npos) << message;
+        EXPECT_EQ(message.find("N/m) to about"), std::string::npos) << message;
+    }
+}
+
 TEST(Penetration, StiffContactsRecordTheirDeepestOverlap) {
     BodyDef table = testing::rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0.0, -0.1});
     BodyDef block = testing::rectangle_body("block", BodyKind::dynamic, 0.5, 0.2, {0.0, 0.1});

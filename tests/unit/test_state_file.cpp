@@ -143,6 +143,8 @@ TEST_F(StateFileTest, SubContactsGoOnBitForBit) {
             const SubContacts& a = straight.sub_contacts[p];
             const SubContacts& b = restored.sub_contacts[p];
             ASSERT_EQ(a.count, b.count);
+            EXPECT_EQ(a.broken_memory, b.broken_memory);
+            EXPECT_TRUE(same_bits(a.memory_first_m, b.memory_first_m));
             for (std::uint32_t k = 0; k < a.count; ++k) {
                 EXPECT_TRUE(same_bits(a.points[k].shear_spring_n, b.points[k].shear_spring_n));
                 EXPECT_EQ(a.points[k].bond, b.points[k].bond);
