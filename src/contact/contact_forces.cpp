@@ -7,8 +7,6 @@
 #include "laws/mohr_coulomb_joint.hpp"
 #include "world/parallel.hpp"
 
-// The joint law's one compilation: here, so that it inlines into joint_point_step (CMakeLists.txt).
-#include "laws/mohr_coulomb_joint.cpp"
 
 namespace blockdem {
 namespace {
@@ -79,7 +77,7 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
     const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
     const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
     // (A dilating joint's law treats its open points itself: its trial may dip below zero
-    // overlap in steady sliding and dilate back: laws/mohr_coulomb_joint.cpp.)
+    // overlap in steady sliding and dilate back: laws/mohr_coulomb_joint.hpp.)
     const JointForce j = point.overlap_m < 0.0 && point.bond != BondState::intact && s.params.tan_dilation == 0.0
                              ? open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, s.dt_s)
                              : mohr_coulomb_joint(s.params, joint, dash, kin, point.history(), point.bond, s.dt_s,
