@@ -43,7 +43,21 @@ std::string outcome_words(const nlohmann::json& body) {
     return fmt::format("{} (from t = {:.3f} s)", outcome == "rocked_and_slid" ? "rocked and slid" : outcome, t);
 }
 
+// A 3-D run's lines (docs/3d.md, "Outputs").
+void print_outcome_3d(const nlohmann::json& summary, const std::string& out_dir) {
+    for (const auto& body : summary["bodies"]) {
+        if (body["kind"] != "dynamic") continue;
+        fmt::print("{}: {}; peak tilt {:.4g} rad at t = {:.3f} s, slip ({:.4g}, {:.4g}) m\n", body["name"].get<std::string>(),
+                   body["overturned"].get<bool>() ? "OVERTURNED" : "stands", body["peak_tilt_rad"].get<double>(),
+                   body["peak_tilt_time_s"].get<double>(), body["slip_m"][0].get<double>(), body["slip_m"][1].get<double>());
+    }
+    fmt::print("energy balance error {:.3g} of the largest term; results in {}/ (history.csv, energy.csv, summary.json, "
+               "vtk/bodies.pvd)\n",
+               summary["energy_j"]["balance_error_relative"].get<double>(), out_dir);
+}
+
 void print_outcome(const nlohmann::json& summary, const std::string& out_dir) {
+    if (summary.value("dimension", 2) == 3) return print_outcome_3d(summary, out_dir);
     for (const auto& body : summary["bodies"]) {
         if (body["kind"] != "dynamic") continue;
         fmt::print("{}: {}; peak rotation {:.4g} rad, peak base slip {:.4g} m, peak displacement relative to {} {:.4g} m\n",

@@ -16,7 +16,9 @@
 #include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
+#include "io/scenario_3d.hpp"
 #include "io/scenario_folder.hpp"
+#include "io/scenario_keys.hpp"
 #include "io/series_motion_keys.hpp"
 #include "io/time_series_csv.hpp"
 #include "laws/material_stiffness.hpp"
@@ -128,8 +130,11 @@ void read_joint_keys(TableReader& t, ContactParameters& p) {
                            std::atan(p.tan_dilation) * 180.0 / pi, std::atan(residual_friction(p)) * 180.0 / pi));
 }
 
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
 ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_mu,
-                                          bool require_stiffness, const std::string& base_meaning = "paper") {
+                                          bool require_stiffness, const std::string& base_meaning) {
     ContactParameters p = base;
     const std::string basis = t.choice("stiffness", {"per_point", "per_length"}, to_string(base.stiffness));
     p.stiffness = basis == "per_length" ? StiffnessBasis::per_length : StiffnessBasis::per_point;
@@ -186,6 +191,8 @@ ContactParameters read_contact_parameters(TableReader& t, const ContactParameter
     }
     return p;
 }
+
+namespace {
 
 // young_modulus and poisson_ratio of one table ([contact] or [contact.materials.NAME]), each
 // falling back to base; nullopt when the table gives neither and there is no base.
@@ -386,6 +393,9 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
     return pairs;
 }
 
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
 std::optional<double> read_angle(TableReader& t, const std::string& base) {
     const auto rad = t.optional_number(base);
     const auto deg = t.optional_number(base + "_deg");
@@ -393,6 +403,8 @@ std::optional<double> read_angle(TableReader& t, const std::string& base) {
     if (deg) return *deg * pi / 180.0;
     return rad;
 }
+
+namespace {
 
 BodyDef read_body(TableReader t) {
     BodyDef b;
@@ -448,6 +460,9 @@ double read_period(TableReader& t) {
     return period ? *period : 1.0 / *frequency;
 }
 
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
 ComponentMotion read_component(TableReader t, const std::filesystem::path& scenario_dir) {
     const std::string type =
         t.choice("type", {"sine", "one_sine", "one_cosine", "ricker", "csv", "series", "record", "synthetic", "none"}, "");
@@ -482,6 +497,8 @@ ComponentMotion read_component(TableReader t, const std::filesystem::path& scena
     t.reject_unknown_keys();
     return motion;
 }
+
+namespace {
 
 TableMotion read_table_motion(TableReader t, const std::filesystem::path& scenario_dir) {
     TableMotion m;
@@ -534,7 +551,9 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     model.contact = read_contact(top.table("contact"), model.bodies);
     check_bonds_have_joints(top.table("contact"), model);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
-    top.allow({"title", "description", "output", "sensors"});  // read by load_scenario: not physics
+    if (scenario_dimension(root, file) == 3)
+        top.fail("dimension", "is 3: this command reads 2-D scenarios; a 3-D one runs with `blockdem run` (docs/3d.md)");
+    top.allow({"title", "description", "output", "sensors", "dimension"});  // read by load_scenario: not physics
     top.reject_unknown_keys();
     return model;
 }

@@ -1,0 +1,165 @@
+#include "run/run_scenario_3d.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "io/energy_writer.hpp"
+#include "io/history_3d_writer.hpp"
+#include "io/input_error.hpp"
+#include "io/output_file.hpp"
+#include "io/output_folder.hpp"
+#include "io/scenario_3d.hpp"
+#include "io/toml_format.hpp"
+#include "io/vtk_3d_writer.hpp"
+#include "world/simulation_error.hpp"
+#include "world/step_3d.hpp"
+
+namespace blockdem {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kind_name(BodyKind3d k) {
+    return k == BodyKind3d::dynamic ? "dynamic" : k == BodyKind3d::fixed ? "fixed" : "driven";
+}
+
+nlohmann::json vec(Vec3 v) { return {v.x, v.y, v.z}; }
+
+nlohmann::json summary_of(const LoadedScenario3d& s, const World3d& w, const ResponseMonitor3d& monitor,
+                          const std::string& status, const std::string& error) {
+    nlohmann::json bodies = nlohmann::json::array();
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        const RigidBody3d& b = w.bodies[i];
+        const BodyResponse3d& r = monitor.bodies()[i];
+        const Vec3 slip = slip_m(w, r, i);
+        bodies.push_back({{"name", b.name},
+                          {"kind", kind_name(w.kinds[i])},
+                          {"mass_kg", b.mass_kg},
+                          {"position_m", vec(b.position_m)},
+                          {"rotation_vector_rad", vec(rotation_vector(turn_since_start(w, r, i)))},
+                          {"peak_tilt_rad", r.peak_tilt_rad},
+                          {"peak_tilt_time_s", r.peak_tilt_time_s},
+                          {"peak_tilt_axis", vec(r.peak_tilt_axis)},
+                          {"overturning_angle_rad", r.overturning_angle_rad},
+                          {"overturned", monitor.overturned(w, i)},
+                          {"slip_m", {slip.x, slip.y}},
+                          {"peak_slip_m", r.peak_slip_m}});
+    }
+    const EnergyLedger& e = w.ledger;
+    nlohmann::json summary = {
+        {"status", status},
+        {"scenario", s.file.string()},
+        {"dimension", 3},
+        {"time_s", w.time_s},
+        {"end_time_s", s.duration_s},
+        {"steps", w.steps},
+        {"dt_s", w.dt_s},
+        {"critical_dt_s", std::isfinite(s.critical_dt_s) ? nlohmann::json(s.critical_dt_s) : nlohmann::json(nullptr)},
+        {"contact_points", w.contacts.size()},
+        {"bodies", bodies},
+        {"energy_j",
+         {{"kinetic", e.kinetic_j},
+          {"gravitational_change", e.gravitational_j - e.initial_gravitational_j},
+          {"elastic", e.elastic_j},
+          {"normal_dashpot", e.normal_dashpot_j},
+          {"shear_dashpot", e.shear_dashpot_j},
+          {"friction", e.friction_j},
+          {"table_work", e.table_work_j},
+          {"residual", e.residual_j()},
+          {"balance_error_relative", e.balance_error()}}}};
+    if (!error.empty()) summary["error"] = error;
+    return summary;
+}
+
+// The writers of a run with a folder.
+struct Writers {
+    std::unique_ptr<History3dWriter> history;
+    std::unique_ptr<OutputFile> energy;
+    std::unique_ptr<Vtk3dWriter> vtk;
+
+    void record(const World3d& w, const ResponseMonitor3d& monitor) {
+        history->record(w, monitor);
+        energy->append(energy_csv_row(w.time_s, w.ledger));
+    }
+};
+
+}  // namespace
+
+nlohmann::json run_scenario_3d(toml::table root, const RunRequest& request) {
+    const auto started = std::chrono::steady_clock::now();
+    const auto wall_s = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
+    if (!request.restart.empty() || !request.save_state_times_s.empty() || request.save_state_every_s > 0.0)
+        throw InputError({request.scenario.string(), "dimension", 0, 0},
+                         "state files (--save-state, --restart) are 2-D only so far: a 3-D run goes from t = 0 to the end");
+    LoadedScenario3d s = load_scenario_3d(std::move(root), request.scenario, request.overrides);
+    World3d& w = s.world;
+    const fs::path& out = request.out_dir;
+    Writers writers;
+    if (!out.empty()) {
+        prepare_output_folder(out, request.force);
+        write_output_file(out / "scenario.toml", fmt::format("{} ({}, after --set)\n{}", scenario_copy_marker,
+                                                             request.scenario.string(), toml_text(s.root)));
+        writers.history = std::make_unique<History3dWriter>(out / "history.csv", w);
+        writers.energy = std::make_unique<OutputFile>(out / "energy.csv");
+        writers.energy->append(energy_csv_header);
+        if (s.output.vtk.value_or(true)) writers.vtk = std::make_unique<Vtk3dWriter>(out / "vtk", s.output.vtk_interval_s);
+    }
+    ResponseMonitor3d monitor(w);
+    // Output rows at whole multiples of the interval (times are sums of dt: half a step of slack).
+    std::int64_t rows = 0;
+    const auto record = [&] {
+        monitor.update(w);
+        if (out.empty()) return;
+        if (w.time_s >= static_cast<double>(rows) * s.output_interval_s - 0.5 * w.dt_s) {
+            writers.record(w, monitor);
+            ++rows;
+        }
+        if (writers.vtk) writers.vtk->record(w, monitor);
+    };
+    const auto finish = [&](const std::string& status, const std::string& error) {
+        nlohmann::json summary = summary_of(s, w, monitor, status, error);
+        if (!out.empty()) {
+            writers.history->finish();
+            writers.energy->close();
+            if (writers.vtk) {
+                writers.vtk->finish();
+                summary["vtk_frames"] = writers.vtk->frames_written();
+            }
+            write_output_file(out / "summary.json", summary.dump(2) + "\n");
+        }
+        summary["run_folder"] = out.string();
+        summary["wall_time_s"] = wall_s();
+        summary["state_files"] = nlohmann::json::array();
+        return summary;
+    };
+    std::string status = "completed";
+    try {
+        record();
+        double last_progress_s = 0.0;
+        while (w.time_s < s.duration_s - 0.5 * w.dt_s) {
+            if (request.stop_requested && request.stop_requested->load()) {
+                status = "interrupted";
+                break;
+            }
+            step_3d(w);
+            record();
+            if (request.on_progress && wall_s() - last_progress_s >= 2.0) {
+                last_progress_s = wall_s();
+                request.on_progress({w.time_s, s.duration_s, w.steps, last_progress_s});
+            }
+        }
+    } catch (const SimulationError& e) {
+        finish("failed", e.what());
+        throw;
+    } catch (const OutputError& e) {
+        finish("failed", e.what());
+        throw;
+    }
+    return finish(status, "");
+}
+
+}  // namespace blockdem
