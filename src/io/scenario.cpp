@@ -533,6 +533,8 @@ toml::table load_toml_file(const std::filesystem::path& file) {
 
 Model read_model(const toml::table& root, const std::string& file, const std::filesystem::path& scenario_dir) {
     TableReader top(root, file, "");
+    if (scenario_dimension(root, file) == 3)
+        top.fail("dimension", "is 3: this command reads 2-D scenarios; a 3-D one runs with `blockdem run` (docs/3d.md)");
     Model model;
     model.settings = read_settings(top.table("simulation"));
     const std::vector<TableReader> body_tables = top.table_array("bodies");
@@ -551,8 +553,6 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     model.contact = read_contact(top.table("contact"), model.bodies);
     check_bonds_have_joints(top.table("contact"), model);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
-    if (scenario_dimension(root, file) == 3)
-        top.fail("dimension", "is 3: this command reads 2-D scenarios; a 3-D one runs with `blockdem run` (docs/3d.md)");
     top.allow({"title", "description", "output", "sensors", "dimension"});  // read by load_scenario: not physics
     top.reject_unknown_keys();
     return model;
