@@ -21,13 +21,14 @@ History3dWriter::History3dWriter(const std::filesystem::path& file, const World3
 void History3dWriter::record(const World3d& w, const ResponseMonitor3d& monitor) {
     std::string row = fmt::format("{:.9g}", w.time_s);
     for (std::size_t i : bodies_) {
-        const RigidBody3d& b = w.bodies[i];
         const Quaternion q = turn_since_start(w, monitor.bodies()[i], i);
         const Vec3 r = rotation_vector(q);
+        const Vec3 x = position_now_m(w, i);
+        const Vec3 v = velocity_now_m_s(w, i);
         fmt::format_to(std::back_inserter(row), ",{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.12g},{:.9g},{:.9g},{:.9g},"
                                                 "{:.9g},{:.9g},{:.9g},{:.9g}",
-                       b.position_m.x, b.position_m.y, b.position_m.z, q.w, q.x, q.y, q.z, r.x, r.y, r.z, tilt_rad(q),
-                       b.velocity_at_t_m_s.x, b.velocity_at_t_m_s.y, b.velocity_at_t_m_s.z);
+                       x.x, x.y, x.z, q.w, q.x, q.y, q.z, r.x, r.y, r.z, tilt_rad(q),
+                       v.x, v.y, v.z);
     }
     out_.append(row + "\n");
 }

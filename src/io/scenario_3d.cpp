@@ -57,6 +57,7 @@ SimulationSettings read_settings_3d(TableReader t) {
     s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -z and must be >= 0");
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
+    s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
     t.reject_unknown_keys();
     return s;
 }
@@ -340,6 +341,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     const SimulationSettings settings = read_settings_3d(top.table("simulation"));
     s.duration_s = settings.duration_s;
     s.output_interval_s = settings.output_interval_s;
+    s.max_energy_error = settings.max_energy_error;
     s.world = build_world_3d(top, file, file.parent_path());
     s.world.gravity_m_s2 = settings.gravity_m_s2;
     if (auto output = top.optional_table("output")) s.output = read_output_settings(*output);

@@ -25,7 +25,7 @@ void Vtk3dWriter::record(const World3d& w, const ResponseMonitor3d& monitor) {
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
         const RigidBody3d& b = w.bodies[i];
         for (std::size_t k = 0; k < b.shape.vertices_m.size(); ++k) {
-            const Vec3 v = world_vertex(b, k);
+            const Vec3 v = world_vertex(b, k) + (position_now_m(w, i) - b.position_m);
             fmt::format_to(std::back_inserter(points), "{:.9g} {:.9g} {:.9g}\n", v.x, v.y, v.z);
         }
         const double body_tilt = tilt_rad(turn_since_start(w, monitor.bodies()[i], i));
@@ -35,7 +35,7 @@ void Vtk3dWriter::record(const World3d& w, const ResponseMonitor3d& monitor) {
             fmt::format_to(std::back_inserter(offsets), "{} ", offset);
             fmt::format_to(std::back_inserter(body), "{} ", i);
             fmt::format_to(std::back_inserter(tilt), "{:.6g} ", body_tilt);
-            fmt::format_to(std::back_inserter(speed), "{:.6g} ", length(b.velocity_at_t_m_s));
+            fmt::format_to(std::back_inserter(speed), "{:.6g} ", length(velocity_now_m_s(w, i)));
             ++face_count;
         }
         point_count += b.shape.vertices_m.size();

@@ -15,6 +15,7 @@
 #include "io/scenario_3d.hpp"
 #include "io/toml_format.hpp"
 #include "io/vtk_3d_writer.hpp"
+#include "world/energy_check_3d.hpp"
 #include "world/simulation_error.hpp"
 #include "world/step_3d.hpp"
 
@@ -39,7 +40,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const World3d& w, const Res
         bodies.push_back({{"name", b.name},
                           {"kind", kind_name(w.kinds[i])},
                           {"mass_kg", b.mass_kg},
-                          {"position_m", vec(b.position_m)},
+                          {"position_m", vec(position_now_m(w, i))},
                           {"rotation_vector_rad", vec(rotation_vector(turn_since_start(w, r, i)))},
                           {"peak_tilt_rad", r.peak_tilt_rad},
                           {"peak_tilt_time_s", r.peak_tilt_time_s},
@@ -75,6 +76,20 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const World3d& w, const Res
     return summary;
 }
 
+// The scenario as run, its file names made absolute so that the copy in the output folder still
+// finds the records it names.
+std::string copy_text(const LoadedScenario3d& s) {
+    toml::table root = s.root;
+    for (const char* key : {"table_motion.record.file", "table_motion.x.file", "table_motion.y.file", "table_motion.z.file"}) {
+        toml::node* file = root.at_path(key).node();
+        if (!file || !file->is_string()) continue;
+        const fs::path path = *file->value<std::string>();
+        if (path.is_relative())
+            *file->as_string() = fs::absolute(s.file.parent_path() / path).lexically_normal().string();
+    }
+    return toml_text(root);
+}
+
 // The writers of a run with a folder.
 struct Writers {
     std::unique_ptr<History3dWriter> history;
@@ -102,11 +117,13 @@ nlohmann::json run_scenario_3d(toml::table root, const RunRequest& request) {
     if (!out.empty()) {
         prepare_output_folder(out, request.force);
         write_output_file(out / "scenario.toml", fmt::format("{} ({}, after --set)\n{}", scenario_copy_marker,
-                                                             request.scenario.string(), toml_text(s.root)));
+                                                             request.scenario.string(), copy_text(s)));
         writers.history = std::make_unique<History3dWriter>(out / "history.csv", w);
         writers.energy = std::make_unique<OutputFile>(out / "energy.csv");
         writers.energy->append(energy_csv_header);
-        if (s.output.vtk.value_or(true)) writers.vtk = std::make_unique<Vtk3dWriter>(out / "vtk", s.output.vtk_interval_s);
+        // (The 2-D rule for "auto": frames times bodies below a limit.)
+        if (vtk_enabled(s.output, w.bodies.size(), s.duration_s))
+            writers.vtk = std::make_unique<Vtk3dWriter>(out / "vtk", s.output.vtk_interval_s);
     }
     ResponseMonitor3d monitor(w);
     // Output rows at whole multiples of the interval (times are sums of dt: half a step of slack).
@@ -146,6 +163,7 @@ nlohmann::json run_scenario_3d(toml::table root, const RunRequest& request) {
                 break;
             }
             step_3d(w);
+            check_energy_balance_3d(w, s.max_energy_error, s.critical_dt_s);
             record();
             if (request.on_progress && wall_s() - last_progress_s >= 2.0) {
                 last_progress_s = wall_s();

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/polygon.hpp"
 
 namespace blockdem {
 namespace {
@@ -23,7 +22,13 @@ double overturning_angle_rad(const RigidBody3d& b) {
     for (const Vec3& v : world)
         if (v.z < low + 1e-6 * size) base.push_back({v.x, v.y});
     if (base.size() < 3) return 0.0;  // on an edge or a corner: any tilt is past it
-    base = counter_clockwise(base);
+    // The corners of a convex face, in the shape's vertex order (a box lists them row by row):
+    // sorted by angle about their mean, they run counter-clockwise.
+    Vec2 mean{};
+    for (const Vec2& p : base) mean = {mean.x + p.x / base.size(), mean.y + p.y / base.size()};
+    std::sort(base.begin(), base.end(), [&](Vec2 p, Vec2 q) {
+        return std::atan2(p.y - mean.y, p.x - mean.x) < std::atan2(q.y - mean.y, q.x - mean.x);
+    });
     const Vec2 c{b.position_m.x, b.position_m.y};
     double d = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < base.size(); ++k) {
@@ -45,8 +50,19 @@ double tilt_rad(Quaternion turn) {
     return std::acos(std::clamp(rotate(turn, Vec3{0.0, 0.0, 1.0}).z, -1.0, 1.0));
 }
 
+Vec3 position_now_m(const World3d& w, std::size_t i) {
+    if (w.kinds[i] == BodyKind3d::driven) return w.rest_positions_m[i] + table_displacement(w.table, w.time_s);
+    return w.bodies[i].position_m;
+}
+
+Vec3 velocity_now_m_s(const World3d& w, std::size_t i) {
+    if (w.kinds[i] != BodyKind3d::driven) return w.bodies[i].velocity_at_t_m_s;
+    const TableMotion3d& m = w.table;
+    return {sample(m.x, w.time_s).velocity_m_s, sample(m.y, w.time_s).velocity_m_s, sample(m.z, w.time_s).velocity_m_s};
+}
+
 Vec3 slip_m(const World3d& w, const BodyResponse3d& r, std::size_t i) {
-    const Vec3 d = w.bodies[i].position_m - r.start_position_m - table_displacement(w.table, w.time_s);
+    const Vec3 d = position_now_m(w, i) - r.start_position_m - table_displacement(w.table, w.time_s);
     return {d.x, d.y, 0.0};
 }
 

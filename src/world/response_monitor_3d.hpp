@@ -30,6 +30,11 @@ struct BodyResponse3d {
 Quaternion turn_since_start(const World3d& w, const BodyResponse3d& r, std::size_t i);
 /// [rad] the tilt of a turn (above).
 double tilt_rad(Quaternion turn);
+/// [m] body i's centroid at w.time_s. A driven body's is the table's at t: the step places it at
+/// the start of a step, so between steps its stored position is a step behind.
+Vec3 position_now_m(const World3d& w, std::size_t i);
+/// [m/s] body i's velocity at w.time_s (a driven body's: the table's, as above).
+Vec3 velocity_now_m_s(const World3d& w, std::size_t i);
 /// [m] body i's slip relative to the table now (horizontal; z = 0).
 Vec3 slip_m(const World3d& w, const BodyResponse3d& r, std::size_t i);
 

@@ -3,7 +3,8 @@
 # history.csv, energy.csv, summary.json and VTK polygons exist and parse, with the columns, rows
 # and frames the scenario asks for; bad scenarios exit with status 2 naming the file and the key
 # or the bodies: an unknown key, overlapping bodies, a non-convex polyhedron, a dt above the
-# stable bound, a record of two components where three are asked; a 2-D command refuses a 3-D file.
+# stable bound, a record of two components where three are asked; a ledger that stops closing
+# ends the run with status 3; a 2-D command refuses a 3-D file.
 # Usage: test_run_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1
@@ -114,6 +115,12 @@ unit = "g"
 components = ["NS", "EW", "UD"]
 TOML
 refused two_components "two.csv" "UD"
+
+# A ledger that stops closing ends the run as in 2-D: exit status 3, summary.json "failed".
+out=$("$bin" run "$tmp/box.toml" --out "$tmp/unstable" --set simulation.max_energy_error=1e-12 -q 2>&1); status=$?
+[[ $status -eq 3 ]] || fail "energy stop: exit status $status, expected 3: $out"
+expect_in "$out" "energy balance error"
+grep -q '"status": "failed"' "$tmp/unstable/summary.json" || fail "energy stop: summary.json not failed"
 
 out=$("$bin" check "$tmp/box.toml" 2>&1); status=$?
 [[ $status -eq 2 ]] || fail "check on a 3-D scenario: exit status $status, expected 2: $out"

@@ -102,7 +102,9 @@ vtk = false
     const std::size_t box_x = history.column("box.x_m"), table_x = history.column("table.x_m");
     const std::size_t box_y = history.column("box.y_m"), tilt = history.column("box.tilt_rad");
     ASSERT_EQ(history.rows.size(), 501u);
-    for (double cycles : {1.0, 2.5, 5.0}) {
+    // At whole cycles, where the block sticks between its slides (the paper's per-cycle slip):
+    // mid-slide the springs' lag in time adds a slip rate times that lag, which u_e does not bound.
+    for (double cycles : {1.0, 2.0, 3.0, 4.0, 5.0}) {
         const auto& row = history.rows[static_cast<std::size_t>(std::llround(cycles / 0.01))];
         ASSERT_NEAR(row[0], cycles, 1e-9);
         // The table's centroid starts at x = 0, the box's too: the slip is their difference.
