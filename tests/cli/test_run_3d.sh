@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # End-to-end: 3-D scenarios (dimension = 3, docs/3d.md). The drum column example runs; its
 # history.csv, energy.csv, summary.json and VTK polygons exist and parse, with the columns, rows
-# and frames the scenario asks for; bad scenarios exit with status 2 naming the file and the key
+# and frames the scenario asks for, the same bytes at 1 and 2 threads; a slender block overturns about the axis across the shaking; bad scenarios exit with status 2 naming the file and the key
 # or the bodies: an unknown key, overlapping bodies, a non-convex polyhedron, a dt above the
 # stable bound, a record of two components where three are asked; a ledger that stops closing
 # ends the run with status 3; a 2-D command refuses a 3-D file.
@@ -57,6 +57,15 @@ connectivity = piece.find(".//DataArray[@Name='connectivity']").text.split()
 assert int(offsets[-1]) == len(connectivity) == 6 * 4 + 3 * (16 * 4 + 2 * 16)
 PY
 
+# The same bytes at 1 and 2 threads (world/parallel.hpp's rules carry through the run).
+"$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/run2" --set simulation.duration=0.3 -q -j 2 >/dev/null 2>&1 \
+    || fail "the drum column at 2 threads failed"
+"$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/run1" --set simulation.duration=0.3 -q -j 1 >/dev/null 2>&1 \
+    || fail "the drum column at 1 thread failed"
+for f in history.csv energy.csv vtk/bodies_000007.vtp; do
+    cmp -s "$tmp/run1/$f" "$tmp/run2/$f" || fail "$f differs between 1 and 2 threads"
+done
+
 # A minimal scenario to break one key at a time.
 cat > "$tmp/box.toml" <<'TOML'
 dimension = 3
@@ -80,6 +89,45 @@ position = [0.0, 0.0, 0.4]
 density = 2000.0
 TOML
 "$bin" run "$tmp/box.toml" --out "$tmp/box" -q >/dev/null 2>&1 || fail "the minimal box scenario failed"
+
+# A slender block (0.2 x 0.2 x 1 m) under a 0.6 g one-sine pulse along y overturns about x;
+# its overturning angle is atan(0.1 / 0.5); its slip is along y only.
+cat > "$tmp/topple.toml" <<'TOML'
+dimension = 3
+[simulation]
+duration = 3.0
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.8
+e = 0.5
+[[bodies]]
+name = "table"
+kind = "driven"
+shape = "box"
+size = [4.0, 4.0, 0.2]
+position = [0.0, 0.0, -0.1]
+[[bodies]]
+name = "slender"
+shape = "box"
+size = [0.2, 0.2, 1.0]
+position = [0.0, 0.0, 0.5]
+density = 2000.0
+[table_motion.y]
+type = "one_sine"
+amplitude = 0.6
+unit = "g"
+period = 0.8
+TOML
+"$bin" run "$tmp/topple.toml" --out "$tmp/topple" -q >/dev/null 2>&1 || fail "the toppling block failed"
+/usr/bin/python3 - "$tmp/topple/summary.json" <<'PY' || fail "the slender block's summary"
+import json, math, sys
+b = json.load(open(sys.argv[1]))["bodies"][1]
+assert b["overturned"] is True, b
+assert abs(b["overturning_angle_rad"] - math.atan(0.2)) < 1e-12, b["overturning_angle_rad"]
+assert b["peak_tilt_rad"] > 1.4 and abs(abs(b["peak_tilt_axis"][0]) - 1.0) < 1e-6, b
+assert abs(b["slip_m"][0]) < 1e-9 and abs(b["slip_m"][1]) > 0.1, b["slip_m"]
+PY
 
 refused() {  # refused NAME EXPECTED... (the scenario in $tmp/bad.toml)
     local name=$1; shift
