@@ -104,10 +104,32 @@ struct BodyDef3d {
     std::string name;
     BodyKind3d kind = BodyKind3d::dynamic;
     std::vector<Vec3> vertices_m;  ///< [m] world frame at t = 0
+    std::vector<std::vector<std::size_t>> faces;  ///< as listed (polyhedron `faces`); empty: from the hull
     double density_kg_m3 = 0.0;    ///< [kg/m^3]
     Vec3 velocity_m_s;             ///< [m/s]
     Vec3 angular_velocity_rad_s;   ///< [rad/s] world frame
 };
+
+// faces = [[0, 2, 1], ...]: vertex indices counter-clockwise seen from outside, each checked
+// against the hull by make_rigid_body_3d (an inverted or missing face is refused by number).
+std::vector<std::vector<std::size_t>> read_faces(TableReader& t, std::size_t vertex_count) {
+    const toml::array* rows = t.raw().get_as<toml::array>("faces");
+    if (!rows) t.fail("faces", "must be a list of faces, each a list of vertex indices");
+    std::vector<std::vector<std::size_t>> faces;
+    for (std::size_t i = 0; i < rows->size(); ++i) {
+        const toml::array* row = (*rows)[i].as_array();
+        if (!row || row->size() < 3) t.fail("faces", fmt::format("face {} must list at least three vertex indices", i));
+        std::vector<std::size_t> face;
+        for (const toml::node& index : *row) {
+            const auto k = index.value<std::int64_t>();
+            if (!k || *k < 0 || static_cast<std::size_t>(*k) >= vertex_count)
+                t.fail("faces", fmt::format("face {}: vertex indices must be whole numbers from 0 to {}", i, vertex_count - 1));
+            face.push_back(static_cast<std::size_t>(*k));
+        }
+        faces.push_back(std::move(face));
+    }
+    return faces;
+}
 
 BodyKind3d read_kind(TableReader& t) {
     const std::string kind = t.choice("kind", {"dynamic", "fixed", "driven"}, "dynamic");
@@ -146,6 +168,7 @@ BodyDef3d read_body_3d(TableReader t) {
         }
     } else {
         local_m = vec3_list(t, "vertices");
+        if (t.has("faces")) b.faces = read_faces(t, local_m.size());
     }
     const Quaternion turn = read_turn(t);
     const Vec3 position = shape == "polyhedron" ? optional_vec3(t, "position").value_or(Vec3{})
@@ -294,7 +317,8 @@ World3d build_world_3d(TableReader& top, const std::filesystem::path& file, cons
     for (const BodyDef3d& d : defs) {
         if (!names.insert(d.name).second) top.fail("bodies", fmt::format("two bodies are named '{}'", d.name));
         try {
-            RigidBody3d b = make_rigid_body_3d(d.name, d.vertices_m, d.density_kg_m3);
+            RigidBody3d b = d.faces.empty() ? make_rigid_body_3d(d.name, d.vertices_m, d.density_kg_m3)
+                                            : make_rigid_body_3d(d.name, d.vertices_m, d.faces, d.density_kg_m3);
             set_initial_velocity(b, d.velocity_m_s, d.angular_velocity_rad_s);
             add_body(w, std::move(b), d.kind);
         } catch (const ModelError& e) {

@@ -251,6 +251,13 @@ TEST(Scenario3d, BadInputNamesTheKeyAndTheBody) {
     const std::string e5 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 0, 0.5]\n"
                                     "density = 1.0\n");
     EXPECT_NE(e5.find("bodies.b.size"), std::string::npos) << e5;
+    // A tetrahedron's faces listed, one of them inverted (seen from outside it runs clockwise).
+    const std::string tetra = "[[bodies]]\nname = \"tet\"\nshape = \"polyhedron\"\n"
+                              "vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\ndensity = 1.0\n";
+    EXPECT_EQ(error_of(tetra + "faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n"), "");
+    const std::string e6 = error_of(tetra + "faces = [[0, 1, 2], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n");
+    EXPECT_NE(e6.find("body 'tet'"), std::string::npos) << e6;
+    EXPECT_NE(e6.find("face 0"), std::string::npos) << e6;
     EXPECT_THROW(scenario_dimension(toml::parse("dimension = 4"), "x.toml"), InputError);
     EXPECT_EQ(scenario_dimension(toml::parse("title = \"t\""), "x.toml"), 2);
 }
