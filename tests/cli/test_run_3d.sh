@@ -21,7 +21,7 @@ for f in history.csv energy.csv summary.json scenario.toml vtk/bodies.pvd vtk/bo
     [[ -s "$tmp/run/$f" ]] || fail "missing $f"
 done
 /usr/bin/python3 - "$tmp/run" <<'PY' || fail "the outputs do not parse as expected"
-import csv, json, sys, xml.etree.ElementTree as ET
+import csv, json, math, sys, xml.etree.ElementTree as ET
 run = sys.argv[1]
 rows = list(csv.reader(open(f"{run}/history.csv")))
 header = rows[0]
@@ -55,6 +55,32 @@ assert piece.get("NumberOfPolys") == str(6 + 3 * 18) and piece.get("NumberOfPoin
 offsets = piece.find(".//DataArray[@Name='offsets']").text.split()
 connectivity = piece.find(".//DataArray[@Name='connectivity']").text.split()
 assert int(offsets[-1]) == len(connectivity) == 6 * 4 + 3 * (16 * 4 + 2 * 16)
+# Faces counter-clockwise seen from outside: the signed volume they enclose (divergence theorem,
+# each face a fan) is the bodies' volume, 2 x 2 x 0.2 m plus three 16-gon drums (round-off of
+# the 9 digits written).
+xyz = [float(v) for v in piece.find(".//Points/DataArray").text.split()]
+p = [xyz[k:k + 3] for k in range(0, len(xyz), 3)]
+cross = lambda a, b: [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+volume, start = 0.0, 0
+for end in map(int, offsets):
+    face = [p[int(i)] for i in connectivity[start:end]]
+    for k in range(1, len(face) - 1):
+        volume += sum(x * y for x, y in zip(face[0], cross(face[k], face[k + 1]))) / 6.0
+    start = end
+expected = 0.8 + 3 * 8 * 0.09 * math.sin(2 * math.pi / 16) * 0.5
+assert abs(volume - expected) < 1e-7 * expected, (volume, expected)
+PY
+# ParaView's own reader (Debian python3-vtk9, in the Makefile's list) reads the frame.
+/usr/bin/python3 - "$tmp/run/vtk/bodies_000007.vtp" <<'PY' || fail "VTK's reader does not read the frame as written"
+import sys
+import vtk
+reader = vtk.vtkXMLPolyDataReader()
+reader.SetFileName(sys.argv[1])
+reader.Update()
+mesh = reader.GetOutput()
+assert mesh.GetNumberOfCells() == 60 and mesh.GetNumberOfPoints() == 104, (mesh.GetNumberOfCells(), mesh.GetNumberOfPoints())
+for name in ("body", "tilt_rad", "speed_m_s"):
+    assert mesh.GetCellData().GetArray(name).GetNumberOfTuples() == 60, name
 PY
 
 # The same bytes at 1 and 2 threads (world/parallel.hpp's rules carry through the run).
