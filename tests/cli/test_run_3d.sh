@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # End-to-end: 3-D scenarios (dimension = 3, docs/3d.md). The drum column example runs; its
 # history.csv, energy.csv, summary.json and VTK polygons exist and parse, with the columns, rows
-# and frames the scenario asks for, the same bytes at 1 and 2 threads; a slender block overturns about the axis across the shaking; bad scenarios exit with status 2 naming the file and the key
-# or the bodies: an unknown key, overlapping bodies, a non-convex polyhedron, a dt above the
-# stable bound, a record of two components where three are asked; a ledger that stops closing
-# ends the run with status 3; a 2-D command refuses a 3-D file.
+# and frames the scenario asks for, faces turned outward, the same bytes at 1 and 2 threads; a
+# slender block overturns about the axis across the shaking; bad scenarios exit with status 2
+# naming the file and the key or the bodies: an unknown key, overlapping bodies, a non-convex
+# polyhedron, a dt above the stable bound, a record of two components where three are asked; a
+# ledger that stops closing ends the run with status 3; a 2-D command refuses a 3-D file.
 # Usage: test_run_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1
