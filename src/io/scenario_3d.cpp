@@ -11,6 +11,7 @@
 #include "io/record_motion_keys.hpp"
 #include "io/scenario.hpp"
 #include "io/scenario_keys.hpp"
+#include "scenes/brick_wall_3d.hpp"
 #include "world/world.hpp"
 #include "world/world_3d_start.hpp"
 
@@ -206,10 +207,38 @@ std::vector<BodyDef3d> read_drum_column(TableReader& t, const std::string& name)
     return bodies;
 }
 
+// [[assemblies]] type = "brick_wall": `courses` of `bricks_per_course` boxes of size `brick` in
+// `wythes` side by side, running bond (scenes/brick_wall_3d.hpp), from `origin` (the wall's
+// lowest, first corner: bricks run along +x, wythes along +y, courses up); named
+// NAME_<course>_<wythe>_<index>, from 0.
+std::vector<BodyDef3d> read_brick_wall(TableReader& t, const std::string& name) {
+    const auto courses = t.whole_number("courses", 1, 100000);
+    const auto per_course = t.whole_number("bricks_per_course", 1, 100000);
+    const auto wythes = t.whole_number_or("wythes", 1, 1, 1000);
+    const Vec3 brick = vec3(t, "brick", " ([length, thickness, height] of a brick in m)");
+    if (!(brick.x > 0.0 && brick.y > 0.0 && brick.z > 0.0)) t.fail("brick", "edge lengths must be > 0");
+    if (courses * per_course * wythes > 10'000'000)
+        t.fail("courses", "courses x bricks_per_course x wythes is above 1e7 bricks");
+    const Vec3 origin = vec3(t, "origin", " ([x, y, z] of the wall's lowest first corner in m)");
+    const BodyKind3d kind = read_kind(t);
+    const double density = read_density(t, name, kind);
+    std::vector<BodyDef3d> bodies;
+    for (const scenes::BrickPlacement3d& p : scenes::running_bond_3d(static_cast<int>(courses), static_cast<int>(per_course),
+                                                                      static_cast<int>(wythes), brick)) {
+        BodyDef3d b;
+        b.name = fmt::format("{}_{}_{}_{}", name, p.course, p.wythe, p.index);
+        b.kind = kind;
+        b.density_kg_m3 = density;
+        b.vertices_m = box_vertices(brick, origin + p.centre_m);
+        bodies.push_back(std::move(b));
+    }
+    return bodies;
+}
+
 std::vector<BodyDef3d> read_assembly_3d(TableReader t) {
     const std::string name = t.string("name");
-    const std::string type = t.choice("type", {"drum_column"}, "");
-    std::vector<BodyDef3d> bodies = read_drum_column(t, name);
+    const std::string type = t.choice("type", {"drum_column", "brick_wall"}, "");
+    std::vector<BodyDef3d> bodies = type == "drum_column" ? read_drum_column(t, name) : read_brick_wall(t, name);
     t.reject_unknown_keys();
     return bodies;
 }

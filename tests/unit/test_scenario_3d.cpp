@@ -146,6 +146,31 @@ density = 2500.0
     }
 }
 
+TEST(Scenario3d, BrickWallInRunningBond) {
+    // Two courses of three bricks in two wythes: the odd course one shorter and half a brick on.
+    const LoadedScenario3d s = load(R"([[assemblies]]
+name = "w"
+type = "brick_wall"
+courses = 2
+bricks_per_course = 3
+wythes = 2
+brick = [0.4, 0.2, 0.1]
+origin = [-0.6, -0.2, 0.0]
+density = 2000.0
+)");
+    ASSERT_EQ(s.world.bodies.size(), 1u + 3 * 2 + 2 * 2);
+    EXPECT_EQ(s.world.bodies[1].name, "w_0_0_0");
+    EXPECT_NEAR(s.world.bodies[1].mass_kg, 2000.0 * 0.4 * 0.2 * 0.1, 1e-9);
+    EXPECT_NEAR(s.world.bodies[1].position_m.x, -0.4, 1e-12);
+    EXPECT_NEAR(s.world.bodies[1].position_m.y, -0.1, 1e-12);
+    EXPECT_NEAR(s.world.bodies[1].position_m.z, 0.05, 1e-12);
+    const RigidBody3d& odd = s.world.bodies[7];  // course 1, wythe 0, first brick
+    EXPECT_EQ(odd.name, "w_1_0_0");
+    EXPECT_NEAR(odd.position_m.x, -0.2, 1e-12);
+    EXPECT_NEAR(odd.position_m.z, 0.15, 1e-12);
+    EXPECT_EQ(s.world.bodies.back().name, "w_1_1_1");
+}
+
 TEST(Scenario3d, ContactKeysAreReadAsIn2d) {
     const LoadedScenario3d s = load(R"([[bodies]]
 name = "block"
