@@ -283,6 +283,9 @@ TEST(Scenario3d, BadInputNamesTheKeyAndTheBody) {
     const std::string e6 = error_of(tetra + "faces = [[0, 1, 2], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n");
     EXPECT_NE(e6.find("body 'tet'"), std::string::npos) << e6;
     EXPECT_NE(e6.find("face 0"), std::string::npos) << e6;
+    const std::string e7 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 0.5]\n"
+                                    "density = 1.0\n[output]\nreport = true\n");
+    EXPECT_NE(e7.find("output.report"), std::string::npos) << e7;
     EXPECT_THROW(scenario_dimension(toml::parse("dimension = 4"), "x.toml"), InputError);
     EXPECT_EQ(scenario_dimension(toml::parse("title = \"t\""), "x.toml"), 2);
 }
