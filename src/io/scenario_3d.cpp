@@ -59,6 +59,10 @@ SimulationSettings read_settings_3d(TableReader t) {
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -z and must be >= 0");
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
     s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
+    s.max_overlap_ratio = t.optional_positive("max_overlap").value_or(s.max_overlap_ratio);
+    if (s.max_overlap_ratio > 1.0)
+        t.fail("max_overlap", fmt::format("is a fraction of the thinner body's least width and must be <= 1, got {}",
+                                          s.max_overlap_ratio));
     t.reject_unknown_keys();
     return s;
 }
@@ -395,6 +399,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     s.duration_s = settings.duration_s;
     s.output_interval_s = settings.output_interval_s;
     s.max_energy_error = settings.max_energy_error;
+    s.max_overlap_ratio = settings.max_overlap_ratio;
     s.world = build_world_3d(top, file, file.parent_path());
     s.world.gravity_m_s2 = settings.gravity_m_s2;
     if (auto output = top.optional_table("output")) {

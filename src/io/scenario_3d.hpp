@@ -26,6 +26,7 @@ struct LoadedScenario3d {
     double output_interval_s = 1e-3;  ///< [s] between rows of history.csv and energy.csv
     double critical_dt_s = 0.0;       ///< [s] the stable bound at the start (infinite: none)
     double max_energy_error = 0.5;    ///< [-] stop when the balance error exceeds it (as 2-D)
+    double max_overlap_ratio = 0.25;  ///< [-] stop when an overlap exceeds it of the thinner body's least width
     OutputSettings output;            ///< [output] vtk, vtk_interval
 };
 

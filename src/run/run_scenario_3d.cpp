@@ -15,7 +15,7 @@
 #include "io/scenario_3d.hpp"
 #include "io/toml_format.hpp"
 #include "io/vtk_3d_writer.hpp"
-#include "world/energy_check_3d.hpp"
+#include "world/run_checks_3d.hpp"
 #include "world/simulation_error.hpp"
 #include "world/step_3d.hpp"
 
@@ -126,6 +126,7 @@ nlohmann::json run_scenario_3d(toml::table root, const RunRequest& request) {
             writers.vtk = std::make_unique<Vtk3dWriter>(out / "vtk", s.output.vtk_interval_s);
     }
     ResponseMonitor3d monitor(w);
+    const std::vector<double> widths_m = least_widths_m(w);
     // Output rows at whole multiples of the interval (times are sums of dt: half a step of slack).
     std::int64_t rows = 0;
     const auto record = [&] {
@@ -164,6 +165,7 @@ nlohmann::json run_scenario_3d(toml::table root, const RunRequest& request) {
             }
             step_3d(w);
             check_energy_balance_3d(w, s.max_energy_error, s.critical_dt_s);
+            check_overlap_3d(w, widths_m, s.max_overlap_ratio);
             record();
             if (request.on_progress && wall_s() - last_progress_s >= 2.0) {
                 last_progress_s = wall_s();

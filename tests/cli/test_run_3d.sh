@@ -5,7 +5,7 @@
 # slender block overturns about the axis across the shaking; bad scenarios exit with status 2
 # naming the file and the key or the bodies: an unknown key, overlapping bodies, a non-convex
 # polyhedron, a dt above the stable bound, a record of two components where three are asked; a
-# ledger that stops closing ends the run with status 3; a 2-D command refuses a 3-D file.
+# ledger that stops closing or a block sinking into the table ends the run with status 3; a 2-D command refuses a 3-D file.
 # Usage: test_run_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1
@@ -196,6 +196,11 @@ out=$("$bin" run "$tmp/box.toml" --out "$tmp/unstable" --set simulation.max_ener
 [[ $status -eq 3 ]] || fail "energy stop: exit status $status, expected 3: $out"
 expect_in "$out" "energy balance error"
 grep -q '"status": "failed"' "$tmp/unstable/summary.json" || fail "energy stop: summary.json not failed"
+
+# Springs far too soft for the block (kn = 10 N/m a point): it sinks, and the run stops as in 2-D.
+out=$("$bin" run "$tmp/box.toml" --out "$tmp/soft" --set contact.kn=10 --set simulation.dt=1e-3 --set simulation.duration=0.5 -q 2>&1); status=$?
+[[ $status -eq 3 ]] || fail "overlap stop: exit status $status, expected 3: $out"
+expect_in "$out" "penetration: bodies 'table' and 'block'"
 
 out=$("$bin" check "$tmp/box.toml" 2>&1); status=$?
 [[ $status -eq 2 ]] || fail "check on a 3-D scenario: exit status $status, expected 2: $out"
