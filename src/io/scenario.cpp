@@ -55,19 +55,28 @@ void read_gravity(TableReader& t, SimulationSettings& s) {
     s.tilt_rate_rad_s = rate_deg_s * pi / 180.0;
 }
 
-SimulationSettings read_settings(TableReader t) {
-    SimulationSettings s;
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
+void read_run_keys(TableReader& t, SimulationSettings& s) {
     s.duration_s = t.positive("duration");
     s.dt_s = t.optional_positive("dt");
     s.dt_safety = t.optional_positive("dt_safety").value_or(s.dt_safety);
     if (s.dt_safety > 1.0) t.fail("dt_safety", fmt::format("must be <= 1 (a fraction of the stable limit), got {}", s.dt_safety));
-    read_gravity(t, s);
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
     s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
     s.max_overlap_ratio = t.optional_positive("max_overlap").value_or(s.max_overlap_ratio);
     if (s.max_overlap_ratio > 1.0)
         t.fail("max_overlap", fmt::format("is a fraction of the thinner body's least width and must be <= 1, got {}",
                                           s.max_overlap_ratio));
+}
+
+namespace {
+
+SimulationSettings read_settings(TableReader t) {
+    SimulationSettings s;
+    read_run_keys(t, s);
+    read_gravity(t, s);
     s.domain = read_domain(t);
     t.allow({"initial_state"});  // a state file: read by load_scenario (io, not physics)
     t.reject_unknown_keys();

@@ -51,18 +51,9 @@ std::vector<Vec3> vec3_list(TableReader& t, const std::string& key) {
 
 SimulationSettings read_settings_3d(TableReader t) {
     SimulationSettings s;
-    s.duration_s = t.positive("duration");
-    s.dt_s = t.optional_positive("dt");
-    s.dt_safety = t.optional_positive("dt_safety").value_or(s.dt_safety);
-    if (s.dt_safety > 1.0) t.fail("dt_safety", fmt::format("must be <= 1 (a fraction of the stable limit), got {}", s.dt_safety));
+    read_run_keys(t, s);
     s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -z and must be >= 0");
-    s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
-    s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
-    s.max_overlap_ratio = t.optional_positive("max_overlap").value_or(s.max_overlap_ratio);
-    if (s.max_overlap_ratio > 1.0)
-        t.fail("max_overlap", fmt::format("is a fraction of the thinner body's least width and must be <= 1, got {}",
-                                          s.max_overlap_ratio));
     t.reject_unknown_keys();
     return s;
 }

@@ -1,8 +1,8 @@
 #pragma once
 // Scenario keys that read the same in two and three dimensions (io/scenario.cpp defines them,
-// io/scenario_3d.cpp reads 3-D scenarios with them): the contact law's parameters, angles given
-// in rad or deg, and one component of the table's motion. Their errors are the same words in
-// both dimensions.
+// io/scenario_3d.cpp reads 3-D scenarios with them): the run's time keys, the contact law's
+// parameters, angles given in rad or deg, and one component of the table's motion. Their errors
+// are the same words in both dimensions.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -10,8 +10,13 @@
 #include "io/toml_reader.hpp"
 #include "laws/contact_parameters.hpp"
 #include "motion/table_motion.hpp"
+#include "world/model.hpp"
 
 namespace blockdem {
+
+/// [simulation]'s keys of the run itself, the same in both dimensions: duration, dt, dt_safety,
+/// output_interval, max_energy_error, max_overlap.
+void read_run_keys(TableReader& t, SimulationSettings& s);
 
 /// The contact keys of one table ([contact] or a pair) on top of base: kn, ks, mu or
 /// friction_deg, e (with e_meaning) or h_n, h_s, termination, stiffness and the joint keys.
