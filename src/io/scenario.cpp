@@ -415,13 +415,23 @@ std::optional<double> read_angle(TableReader& t, const std::string& base) {
 
 namespace {
 
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
+std::string read_body_name(TableReader& t) {
+    const std::string name = t.string("name");
+    // Names head CSV columns and are path segments of --set: keep them to one plain word.
+    if (name.empty() || name.find_first_of(",.;\"' \t\r\n") != std::string::npos)
+        t.fail("name", fmt::format("'{}' is not a valid body name: use letters, digits, '_' or '-' (no spaces, commas, "
+                                   "dots or quotes)", name));
+    return name;
+}
+
+namespace {
+
 BodyDef read_body(TableReader t) {
     BodyDef b;
-    b.name = t.string("name");
-    // Names head CSV columns and are path segments of --set: keep them to one plain word.
-    if (b.name.empty() || b.name.find_first_of(",.;\"' \t\r\n") != std::string::npos)
-        t.fail("name", fmt::format("'{}' is not a valid body name: use letters, digits, '_' or '-' (no spaces, commas, "
-                                   "dots or quotes)", b.name));
+    b.name = read_body_name(t);
     const std::string kind = t.choice("kind", {"dynamic", "fixed", "driven"}, "dynamic");
     b.kind = kind == "dynamic" ? BodyKind::dynamic : kind == "fixed" ? BodyKind::fixed : BodyKind::driven;
     const std::string shape = t.choice("shape", {"rectangle", "polygon"}, "");

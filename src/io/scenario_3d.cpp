@@ -19,6 +19,9 @@ namespace blockdem {
 namespace {
 
 constexpr double pi = std::numbers::pi;
+// A prism's sides: the hull search is O(n^4) in the vertices (docs/3d.md): 64 sides take 25 ms,
+// 128 about 0.4 s a body.
+constexpr std::int64_t max_sides = 128;
 
 // A list of three numbers ([x, y, z]); nullopt when the key is absent.
 std::optional<Vec3> optional_vec3(TableReader& t, const std::string& key) {
@@ -142,10 +145,7 @@ double read_density(TableReader& t, const std::string& name, BodyKind3d kind) {
 
 BodyDef3d read_body_3d(TableReader t) {
     BodyDef3d b;
-    b.name = t.string("name");
-    if (b.name.empty() || b.name.find_first_of(",.;\"' \t\r\n") != std::string::npos)
-        t.fail("name", fmt::format("'{}' is not a valid body name: use letters, digits, '_' or '-' (no spaces, commas, "
-                                   "dots or quotes)", b.name));
+    b.name = read_body_name(t);
     b.kind = read_kind(t);
     const std::string shape = t.choice("shape", {"box", "prism", "polyhedron"}, "");
     std::vector<Vec3> local_m;  // about the point `position` places
@@ -159,7 +159,7 @@ BodyDef3d read_body_3d(TableReader t) {
             if (t.has("sides") || t.has("radius")) t.fail("polygon", "give either polygon or sides and radius, not both");
             local_m = centered_prism(t.vec2_list("polygon"), height);
         } else {
-            const auto sides = t.whole_number("sides", 3, 1000);
+            const auto sides = t.whole_number("sides", 3, max_sides);
             local_m = centered_prism(regular_polygon(static_cast<int>(sides), t.positive("radius")), height);
         }
     } else {
@@ -182,7 +182,7 @@ BodyDef3d read_body_3d(TableReader t) {
 // to NAME_n.
 std::vector<BodyDef3d> read_drum_column(TableReader& t, const std::string& name) {
     const auto drums = t.whole_number("drums", 1, 10000);
-    const auto sides = t.whole_number_or("sides", 32, 3, 1000);
+    const auto sides = t.whole_number_or("sides", 32, 3, max_sides);
     const double radius = t.positive("radius");
     const double height = t.positive("height");
     const Vec3 base = vec3(t, "base", " ([x, y, z] of the centre of the column's lowest face in m)");
@@ -231,7 +231,7 @@ std::vector<BodyDef3d> read_brick_wall(TableReader& t, const std::string& name) 
 }
 
 std::vector<BodyDef3d> read_assembly_3d(TableReader t) {
-    const std::string name = t.string("name");
+    const std::string name = read_body_name(t);  // (it begins every block's name)
     const std::string type = t.choice("type", {"drum_column", "brick_wall"}, "");
     std::vector<BodyDef3d> bodies = type == "drum_column" ? read_drum_column(t, name) : read_brick_wall(t, name);
     t.reject_unknown_keys();

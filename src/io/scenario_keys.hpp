@@ -18,6 +18,10 @@ namespace blockdem {
 /// output_interval, max_energy_error, max_overlap.
 void read_run_keys(TableReader& t, SimulationSettings& s);
 
+/// A body's `name`: one plain word (letters, digits, '_' or '-'), as it heads CSV columns and is
+/// a path segment of --set.
+std::string read_body_name(TableReader& t);
+
 /// The contact keys of one table ([contact] or a pair) on top of base: kn, ks, mu or
 /// friction_deg, e (with e_meaning) or h_n, h_s, termination, stiffness and the joint keys.
 /// require_mu, require_stiffness: those keys must be present. base_meaning: e_meaning's default.
