@@ -90,15 +90,46 @@ std::string copy_text(const LoadedScenario3d& s) {
     return toml_text(root);
 }
 
-// The writers of a run with a folder.
+// The writers of a run with a folder: opened on a folder made ready for the run (nothing is
+// written before every check has passed), each row at the output times, closed at the end.
 struct Writers {
     std::unique_ptr<History3dWriter> history;
     std::unique_ptr<OutputFile> energy;
     std::unique_ptr<Vtk3dWriter> vtk;
+    std::int64_t rows = 0;
 
-    void record(const World3d& w, const ResponseMonitor3d& monitor) {
-        history->record(w, monitor);
-        energy->append(energy_csv_row(w.time_s, w.ledger));
+    Writers(const LoadedScenario3d& s, const RunRequest& request) {
+        const fs::path& out = request.out_dir;
+        prepare_output_folder(out, request.force);
+        write_output_file(out / "scenario.toml", fmt::format("{} ({}, after --set)\n{}", scenario_copy_marker,
+                                                             request.scenario.string(), copy_text(s)));
+        history = std::make_unique<History3dWriter>(out / "history.csv", s.world);
+        energy = std::make_unique<OutputFile>(out / "energy.csv");
+        energy->append(energy_csv_header);
+        // (The 2-D rule for "auto": frames times bodies below a limit.)
+        if (vtk_enabled(s.output, s.world.bodies.size(), s.duration_s))
+            vtk = std::make_unique<Vtk3dWriter>(out / "vtk", s.output.vtk_interval_s);
+    }
+
+    // Rows at whole multiples of the interval (times are sums of dt: half a step of slack).
+    void record(const LoadedScenario3d& s, const ResponseMonitor3d& monitor) {
+        const World3d& w = s.world;
+        if (w.time_s >= static_cast<double>(rows) * s.output_interval_s - 0.5 * w.dt_s) {
+            history->record(w, monitor);
+            energy->append(energy_csv_row(w.time_s, w.ledger));
+            ++rows;
+        }
+        if (vtk) vtk->record(w, monitor);
+    }
+
+    void finish(const fs::path& out, nlohmann::json& summary) {
+        history->finish();
+        energy->close();
+        if (vtk) {
+            vtk->finish();
+            summary["vtk_frames"] = vtk->frames_written();
+        }
+        write_output_file(out / "summary.json", summary.dump(2) + "\n");
     }
 };
 
@@ -113,42 +144,17 @@ nlohmann::json run_scenario_3d(toml::table root, const RunRequest& request) {
     LoadedScenario3d s = load_scenario_3d(std::move(root), request.scenario, request.overrides);
     World3d& w = s.world;
     const fs::path& out = request.out_dir;
-    Writers writers;
-    if (!out.empty()) {
-        prepare_output_folder(out, request.force);
-        write_output_file(out / "scenario.toml", fmt::format("{} ({}, after --set)\n{}", scenario_copy_marker,
-                                                             request.scenario.string(), copy_text(s)));
-        writers.history = std::make_unique<History3dWriter>(out / "history.csv", w);
-        writers.energy = std::make_unique<OutputFile>(out / "energy.csv");
-        writers.energy->append(energy_csv_header);
-        // (The 2-D rule for "auto": frames times bodies below a limit.)
-        if (vtk_enabled(s.output, w.bodies.size(), s.duration_s))
-            writers.vtk = std::make_unique<Vtk3dWriter>(out / "vtk", s.output.vtk_interval_s);
-    }
+    std::optional<Writers> writers;
+    if (!out.empty()) writers.emplace(s, request);
     ResponseMonitor3d monitor(w);
     const std::vector<double> widths_m = least_widths_m(w);
-    // Output rows at whole multiples of the interval (times are sums of dt: half a step of slack).
-    std::int64_t rows = 0;
     const auto record = [&] {
         monitor.update(w);
-        if (out.empty()) return;
-        if (w.time_s >= static_cast<double>(rows) * s.output_interval_s - 0.5 * w.dt_s) {
-            writers.record(w, monitor);
-            ++rows;
-        }
-        if (writers.vtk) writers.vtk->record(w, monitor);
+        if (writers) writers->record(s, monitor);
     };
     const auto finish = [&](const std::string& status, const std::string& error) {
         nlohmann::json summary = summary_of(s, w, monitor, status, error);
-        if (!out.empty()) {
-            writers.history->finish();
-            writers.energy->close();
-            if (writers.vtk) {
-                writers.vtk->finish();
-                summary["vtk_frames"] = writers.vtk->frames_written();
-            }
-            write_output_file(out / "summary.json", summary.dump(2) + "\n");
-        }
+        if (writers) writers->finish(out, summary);
         summary["run_folder"] = out.string();
         summary["wall_time_s"] = wall_s();
         summary["state_files"] = nlohmann::json::array();
