@@ -250,6 +250,35 @@ density = 100.0
 )");
     const CriticalTimeStep3d bound = start_time_step_3d(s.world);
     EXPECT_EQ(bound.dt_s, s.critical_dt_s);
+    // Placed touching, the cube has no point at t = 0; the probe finds its four corners. With
+    // kn only (ks 1e-6 N/m, no dashpots), the bound is tests/validation/test_world_3d.cpp's
+    // hand-computed row sum: 4 kn (sqrt(6)/2)(1 + sqrt(6)) / m, dt = 2 / sqrt of it.
+    const LoadedScenario3d cube = load_scenario_3d(
+        toml::parse(R"(dimension = 3
+[simulation]
+duration = 0.1
+[contact]
+kn = 1e6
+ks = 1e-6
+mu = 0.6
+e = 1.0
+h_s = 0.0
+[[bodies]]
+name = "slab"
+kind = "fixed"
+shape = "box"
+size = [2.0, 2.0, 0.2]
+position = [0.0, 0.0, -0.1]
+[[bodies]]
+name = "cube"
+shape = "box"
+size = [0.5, 0.5, 0.5]
+position = [0.0, 0.0, 0.25]
+density = 800.0
+)"),
+        "cube.toml", {});
+    const double lambda = 4.0 * 1e6 * (std::sqrt(6.0) / 2.0) * (1.0 + std::sqrt(6.0)) / 100.0;
+    EXPECT_NEAR(cube.critical_dt_s, 2.0 / std::sqrt(lambda), 1e-9 * cube.critical_dt_s);
     EXPECT_LE(s.world.dt_s, 0.5 * bound.dt_s);
     EXPECT_GT(s.world.dt_s, 0.45 * bound.dt_s);
     const double per_output = 1e-3 / s.world.dt_s;
