@@ -101,6 +101,7 @@ std::vector<Vec3> centered_prism(std::vector<Vec2> polygon_m, double height_m) {
 
 struct BodyDef3d {
     std::string name;
+    std::string key;               ///< the table it came from (bodies.NAME, assemblies.NAME), for messages
     BodyKind3d kind = BodyKind3d::dynamic;
     std::vector<Vec3> vertices_m;  ///< [m] world frame at t = 0
     std::vector<std::vector<std::size_t>> faces;  ///< as listed (polyhedron `faces`); empty: from the hull
@@ -146,6 +147,7 @@ double read_density(TableReader& t, const std::string& name, BodyKind3d kind) {
 BodyDef3d read_body_3d(TableReader t) {
     BodyDef3d b;
     b.name = read_body_name(t);
+    b.key = t.path();
     b.kind = read_kind(t);
     const std::string shape = t.choice("shape", {"box", "prism", "polyhedron"}, "");
     std::vector<Vec3> local_m;  // about the point `position` places
@@ -234,6 +236,7 @@ std::vector<BodyDef3d> read_assembly_3d(TableReader t) {
     const std::string name = read_body_name(t);  // (it begins every block's name)
     const std::string type = t.choice("type", {"drum_column", "brick_wall"}, "");
     std::vector<BodyDef3d> bodies = type == "drum_column" ? read_drum_column(t, name) : read_brick_wall(t, name);
+    for (BodyDef3d& b : bodies) b.key = t.path();
     t.reject_unknown_keys();
     return bodies;
 }
@@ -346,7 +349,7 @@ World3d build_world_3d(TableReader& top, const std::filesystem::path& file, cons
             set_initial_velocity(b, d.velocity_m_s, d.angular_velocity_rad_s);
             add_body(w, std::move(b), d.kind);
         } catch (const ModelError& e) {
-            throw model_error(file, "bodies", e.what());
+            throw model_error(file, d.key, e.what());
         }
     }
     w.contact = read_contact_3d(top.table("contact"));

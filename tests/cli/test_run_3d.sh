@@ -176,7 +176,7 @@ shape = "polyhedron"
 vertices = [[2, 0, 0], [3, 0, 0], [2, 1, 0], [3, 1, 0], [2, 0, 1], [3, 0, 1], [2, 1, 1], [3, 1, 1], [2.5, 0.5, 0.5]]
 density = 2000.0
 TOML
-refused non_convex "bad.toml" "body 'dented'" "vertex 8"
+refused non_convex "bad.toml" "key 'bodies.dented'" "body 'dented'" "vertex 8"
 
 sed 's/^duration = 0.01/duration = 0.01\ndt = 0.01/' "$tmp/box.toml" >"$tmp/bad.toml"
 refused dt "bad.toml" "simulation.dt" "stable limit"
