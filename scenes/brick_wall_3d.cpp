@@ -4,6 +4,18 @@
 
 namespace blockdem::scenes {
 
+std::vector<BrickPlacement3d> running_bond_3d(int courses, int bricks_per_course, int wythes, Vec3 b) {
+    std::vector<BrickPlacement3d> bricks;
+    for (int c = 0; c < courses; ++c) {
+        const bool odd = c % 2 == 1;
+        const double shift_m = odd ? 0.5 * b.x : 0.0;
+        for (int y = 0; y < wythes; ++y)
+            for (int k = 0; k < bricks_per_course - (odd ? 1 : 0); ++k)
+                bricks.push_back({c, y, k, {(k + 0.5) * b.x + shift_m, (y + 0.5) * b.y, (c + 0.5) * b.z}});
+    }
+    return bricks;
+}
+
 World3d brick_wall_3d(const BrickWall3dDef& def) {
     World3d w;
     w.contact = def.contact;
@@ -17,19 +29,11 @@ World3d brick_wall_3d(const BrickWall3dDef& def) {
              BodyKind3d::driven);
     // Bricks of one shape: its hull once, then moved (the hull search is the costly part).
     const RigidBody3d brick = make_rigid_body_3d("brick", box_vertices(b, {}), def.density_kg_m3);
-    for (int c = 0; c < def.courses; ++c) {
-        // Running bond: odd courses shifted by half a brick and one brick shorter, so that no
-        // brick overhangs the one below (the ends step back).
-        const bool odd = c % 2 == 1;
-        const double shift_m = odd ? 0.5 * b.x : 0.0;
-        for (int y = 0; y < def.wythes; ++y) {
-            for (int k = 0; k < def.bricks_per_course - (odd ? 1 : 0); ++k) {
-                RigidBody3d r = brick;
-                r.name = fmt::format("brick_{}_{}_{}", c, y, k);
-                r.position_m = {(k + 0.5) * b.x + shift_m, (y + 0.5) * b.y, (c + 0.5) * b.z};
-                add_body(w, std::move(r), BodyKind3d::dynamic);
-            }
-        }
+    for (const BrickPlacement3d& p : running_bond_3d(def.courses, def.bricks_per_course, def.wythes, b)) {
+        RigidBody3d r = brick;
+        r.name = fmt::format("brick_{}_{}_{}", p.course, p.wythe, p.index);
+        r.position_m = p.centre_m;
+        add_body(w, std::move(r), BodyKind3d::dynamic);
     }
     return w;
 }

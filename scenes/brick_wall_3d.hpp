@@ -19,6 +19,20 @@ struct BrickWall3dDef {
     double dt_s = 2e-5;
 };
 
+/// One brick of the wall: its course, wythe and place in the course, and its centre [m] with the
+/// wall's lowest face at z = 0, its first brick's end at x = 0 and its first wythe's face at y = 0.
+struct BrickPlacement3d {
+    int course = 0;
+    int wythe = 0;
+    int index = 0;
+    Vec3 centre_m;
+};
+
+/// The bricks in running bond (odd courses shifted by half a brick and one brick shorter, so that
+/// none overhangs the one below), course by course: shared by the scene and the scenario's
+/// brick_wall assembly (io/scenario_3d.cpp).
+std::vector<BrickPlacement3d> running_bond_3d(int courses, int bricks_per_course, int wythes, Vec3 brick_m);
+
 /// The wall, every brick placed touching its neighbours; body 0 is the driven slab.
 World3d brick_wall_3d(const BrickWall3dDef& def);
 

@@ -1,6 +1,7 @@
 // `blockdem run SCENARIO --out DIR [--set key=value]... [--force] [--threads N]
 //      [--save-state T1,T2,...] [--save-state-every DT]`
 // `blockdem run --restart STATE.h5 [SCENARIO] [--out DIR] ...`
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -43,7 +44,37 @@ std::string outcome_words(const nlohmann::json& body) {
     return fmt::format("{} (from t = {:.3f} s)", outcome == "rocked_and_slid" ? "rocked and slid" : outcome, t);
 }
 
+// A 3-D run's lines (docs/3d.md, "Outputs"): one a body, or for more than 12 bodies the count
+// that overturned and the largest tilt and slip (summary.json has every body).
+void print_outcome_3d(const nlohmann::json& summary, const std::string& out_dir) {
+    std::vector<nlohmann::json> bodies;
+    for (const auto& body : summary["bodies"])
+        if (body["kind"] == "dynamic") bodies.push_back(body);
+    const auto slip = [](const nlohmann::json& b) { return std::hypot(b["slip_m"][0].get<double>(), b["slip_m"][1].get<double>()); };
+    if (bodies.size() <= 12) {
+        for (const auto& body : bodies)
+            fmt::print("{}: {}; peak tilt {:.4g} rad at t = {:.3f} s, slip ({:.4g}, {:.4g}) m\n", body["name"].get<std::string>(),
+                       body["overturned"].get<bool>() ? "OVERTURNED" : "stands", body["peak_tilt_rad"].get<double>(),
+                       body["peak_tilt_time_s"].get<double>(), body["slip_m"][0].get<double>(),
+                       body["slip_m"][1].get<double>());
+    } else {
+        std::size_t overturned = 0, tilted = 0, slid = 0;
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            overturned += bodies[i]["overturned"].get<bool>() ? 1 : 0;
+            if (bodies[i]["peak_tilt_rad"].get<double>() > bodies[tilted]["peak_tilt_rad"].get<double>()) tilted = i;
+            if (slip(bodies[i]) > slip(bodies[slid])) slid = i;
+        }
+        fmt::print("{} bodies, {} overturned; largest peak tilt {:.4g} rad ({}), largest slip {:.4g} m ({})\n",
+                   bodies.size(), overturned, bodies[tilted]["peak_tilt_rad"].get<double>(),
+                   bodies[tilted]["name"].get<std::string>(), slip(bodies[slid]), bodies[slid]["name"].get<std::string>());
+    }
+    fmt::print("energy balance error {:.3g} of the largest term; results in {}/ (history.csv, energy.csv, summary.json, "
+               "vtk/bodies.pvd)\n",
+               summary["energy_j"]["balance_error_relative"].get<double>(), out_dir);
+}
+
 void print_outcome(const nlohmann::json& summary, const std::string& out_dir) {
+    if (summary.value("dimension", 2) == 3) return print_outcome_3d(summary, out_dir);
     for (const auto& body : summary["bodies"]) {
         if (body["kind"] != "dynamic") continue;
         fmt::print("{}: {}; peak rotation {:.4g} rad, peak base slip {:.4g} m, peak displacement relative to {} {:.4g} m\n",

@@ -8,11 +8,16 @@
 // residual_J = kinetic + gravitational_change + elastic + dissipated - table_work
 //              - (initial kinetic + initial elastic); it is 0 for an exact integration.
 #include <filesystem>
+#include <string>
 
 #include "io/output_file.hpp"
 #include "world/simulation.hpp"
 
 namespace blockdem {
+
+/// energy.csv's header line and one row of it (shared by the 2-D and 3-D runs).
+extern const char* const energy_csv_header;
+std::string energy_csv_row(double t_s, const EnergyLedger& e);
 
 class EnergyWriter : public Recorder {
 public:

@@ -16,7 +16,9 @@
 #include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
+#include "io/scenario_3d.hpp"
 #include "io/scenario_folder.hpp"
+#include "io/scenario_keys.hpp"
 #include "io/series_motion_keys.hpp"
 #include "io/time_series_csv.hpp"
 #include "laws/material_stiffness.hpp"
@@ -53,19 +55,28 @@ void read_gravity(TableReader& t, SimulationSettings& s) {
     s.tilt_rate_rad_s = rate_deg_s * pi / 180.0;
 }
 
-SimulationSettings read_settings(TableReader t) {
-    SimulationSettings s;
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
+void read_run_keys(TableReader& t, SimulationSettings& s) {
     s.duration_s = t.positive("duration");
     s.dt_s = t.optional_positive("dt");
     s.dt_safety = t.optional_positive("dt_safety").value_or(s.dt_safety);
     if (s.dt_safety > 1.0) t.fail("dt_safety", fmt::format("must be <= 1 (a fraction of the stable limit), got {}", s.dt_safety));
-    read_gravity(t, s);
     s.output_interval_s = t.optional_positive("output_interval").value_or(s.output_interval_s);
     s.max_energy_error = t.optional_positive("max_energy_error").value_or(s.max_energy_error);
     s.max_overlap_ratio = t.optional_positive("max_overlap").value_or(s.max_overlap_ratio);
     if (s.max_overlap_ratio > 1.0)
         t.fail("max_overlap", fmt::format("is a fraction of the thinner body's least width and must be <= 1, got {}",
                                           s.max_overlap_ratio));
+}
+
+namespace {
+
+SimulationSettings read_settings(TableReader t) {
+    SimulationSettings s;
+    read_run_keys(t, s);
+    read_gravity(t, s);
     s.domain = read_domain(t);
     t.allow({"initial_state"});  // a state file: read by load_scenario (io, not physics)
     t.reject_unknown_keys();
@@ -128,8 +139,11 @@ void read_joint_keys(TableReader& t, ContactParameters& p) {
                            std::atan(p.tan_dilation) * 180.0 / pi, std::atan(residual_friction(p)) * 180.0 / pi));
 }
 
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
 ContactParameters read_contact_parameters(TableReader& t, const ContactParameters& base, bool require_mu,
-                                          bool require_stiffness, const std::string& base_meaning = "paper") {
+                                          bool require_stiffness, const std::string& base_meaning) {
     ContactParameters p = base;
     const std::string basis = t.choice("stiffness", {"per_point", "per_length"}, to_string(base.stiffness));
     p.stiffness = basis == "per_length" ? StiffnessBasis::per_length : StiffnessBasis::per_point;
@@ -186,6 +200,8 @@ ContactParameters read_contact_parameters(TableReader& t, const ContactParameter
     }
     return p;
 }
+
+namespace {
 
 // young_modulus and poisson_ratio of one table ([contact] or [contact.materials.NAME]), each
 // falling back to base; nullopt when the table gives neither and there is no base.
@@ -386,6 +402,9 @@ MaterialPairs read_contact(TableReader t, const std::vector<BodyDef>& bodies) {
     return pairs;
 }
 
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
 std::optional<double> read_angle(TableReader& t, const std::string& base) {
     const auto rad = t.optional_number(base);
     const auto deg = t.optional_number(base + "_deg");
@@ -394,13 +413,25 @@ std::optional<double> read_angle(TableReader& t, const std::string& base) {
     return rad;
 }
 
+namespace {
+
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
+std::string read_body_name(TableReader& t) {
+    const std::string name = t.string("name");
+    // Names head CSV columns and are path segments of --set: keep them to one plain word.
+    if (name.empty() || name.find_first_of(",.;\"' \t\r\n") != std::string::npos)
+        t.fail("name", fmt::format("'{}' is not a valid body name: use letters, digits, '_' or '-' (no spaces, commas, "
+                                   "dots or quotes)", name));
+    return name;
+}
+
+namespace {
+
 BodyDef read_body(TableReader t) {
     BodyDef b;
-    b.name = t.string("name");
-    // Names head CSV columns and are path segments of --set: keep them to one plain word.
-    if (b.name.empty() || b.name.find_first_of(",.;\"' \t\r\n") != std::string::npos)
-        t.fail("name", fmt::format("'{}' is not a valid body name: use letters, digits, '_' or '-' (no spaces, commas, "
-                                   "dots or quotes)", b.name));
+    b.name = read_body_name(t);
     const std::string kind = t.choice("kind", {"dynamic", "fixed", "driven"}, "dynamic");
     b.kind = kind == "dynamic" ? BodyKind::dynamic : kind == "fixed" ? BodyKind::fixed : BodyKind::driven;
     const std::string shape = t.choice("shape", {"rectangle", "polygon"}, "");
@@ -448,6 +479,9 @@ double read_period(TableReader& t) {
     return period ? *period : 1.0 / *frequency;
 }
 
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
 ComponentMotion read_component(TableReader t, const std::filesystem::path& scenario_dir) {
     const std::string type =
         t.choice("type", {"sine", "one_sine", "one_cosine", "ricker", "csv", "series", "record", "synthetic", "none"}, "");
@@ -483,6 +517,8 @@ ComponentMotion read_component(TableReader t, const std::filesystem::path& scena
     return motion;
 }
 
+namespace {
+
 TableMotion read_table_motion(TableReader t, const std::filesystem::path& scenario_dir) {
     TableMotion m;
     if (auto h = t.optional_table("horizontal")) m.horizontal = read_component(*h, scenario_dir);
@@ -516,6 +552,8 @@ toml::table load_toml_file(const std::filesystem::path& file) {
 
 Model read_model(const toml::table& root, const std::string& file, const std::filesystem::path& scenario_dir) {
     TableReader top(root, file, "");
+    if (scenario_dimension(root, file) == 3)
+        top.fail("dimension", "is 3: this command reads 2-D scenarios; a 3-D one runs with `blockdem run` (docs/3d.md)");
     Model model;
     model.settings = read_settings(top.table("simulation"));
     const std::vector<TableReader> body_tables = top.table_array("bodies");
@@ -534,7 +572,7 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     model.contact = read_contact(top.table("contact"), model.bodies);
     check_bonds_have_joints(top.table("contact"), model);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
-    top.allow({"title", "description", "output", "sensors"});  // read by load_scenario: not physics
+    top.allow({"title", "description", "output", "sensors", "dimension"});  // read by load_scenario: not physics
     top.reject_unknown_keys();
     return model;
 }

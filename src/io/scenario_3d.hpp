@@ -1,0 +1,40 @@
+#pragma once
+// 3-D scenario files (`dimension = 3`, docs/scenario.md "Three dimensions"): read, overridden
+// with --set, validated key by key with the 2-D reader's machinery and words (io/toml_reader.hpp,
+// io/scenario_keys.hpp), and turned into a World3d whose time step is set and checked
+// (world/world_3d_start.hpp). Every problem is an InputError naming the file, key and body.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "io/output_keys.hpp"
+#include "world/world_3d.hpp"
+
+namespace blockdem {
+
+/// The scenario's `dimension` key: 2 when absent. Throws InputError for a value other than 2 or 3.
+int scenario_dimension(const toml::table& root, const std::string& file_for_messages);
+
+/// Everything `blockdem run` needs of a 3-D scenario.
+struct LoadedScenario3d {
+    std::filesystem::path file;
+    toml::table root;                 ///< after --set overrides
+    World3d world;                    ///< at t = 0, dt set
+    double duration_s = 0.0;          ///< [s]
+    double output_interval_s = 1e-3;  ///< [s] between rows of history.csv and energy.csv
+    double critical_dt_s = 0.0;       ///< [s] the stable bound at the start (infinite: none)
+    double max_energy_error = 0.5;    ///< [-] stop when the balance error exceeds it (as 2-D)
+    double max_overlap_ratio = 0.25;  ///< [-] stop when an overlap exceeds it of the thinner body's least width
+    OutputSettings output;            ///< [output] vtk, vtk_interval
+};
+
+/// Loads, overrides, validates and builds. A model error (a non-convex or degenerate polyhedron,
+/// overlap at start, dt above the stable bound) is an InputError naming the file and the body.
+LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+/// The same for a scenario already parsed; `file` names it and its folder resolves file names.
+LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path& file,
+                                  const std::vector<std::string>& overrides);
+
+}  // namespace blockdem

@@ -1,0 +1,33 @@
+#pragma once
+// ParaView output of a 3-D run: VTK XML PolyData in DIR/vtk/, every body's faces as polygons
+// (PolyData, not an UnstructuredGrid of VTK_POLYHEDRON cells: polygons need no face-stream
+// encoding, every VTK reader since 5.x draws them, and a convex body is exactly its faces):
+//   bodies_NNNNNN.vtp  the faces of every body at one time, cell data per face: body (index),
+//                      tilt_rad and speed_m_s of its body;
+//   bodies.pvd         the frames with their times, so that ParaView plays them as a series.
+// ASCII, as the 2-D writer (io/vtk_writer.hpp). Frames at the first step at or after each
+// multiple of the frame interval.
+#include <filesystem>
+#include <vector>
+
+#include "world/response_monitor_3d.hpp"
+
+namespace blockdem {
+
+class Vtk3dWriter {
+public:
+    /// Creates dir (DIR/vtk); throws InputError when it cannot.
+    Vtk3dWriter(std::filesystem::path dir, double frame_interval_s);
+    /// Writes a frame when w.time_s has reached the next frame time.
+    void record(const World3d& w, const ResponseMonitor3d& monitor);
+    /// Writes bodies.pvd.
+    void finish();
+    std::size_t frames_written() const { return times_s_.size(); }
+
+private:
+    std::filesystem::path dir_;
+    double frame_interval_s_;
+    std::vector<double> times_s_;
+};
+
+}  // namespace blockdem

@@ -1,0 +1,53 @@
+#pragma once
+// What summary.json reports of each 3-D body (docs/3d.md, "Outputs"): its turn since t = 0, the
+// peak tilt about any horizontal axis, whether it overturned, and its slip relative to the table.
+//
+// Tilt: the angle between the body's line that was vertical at t = 0 and the vertical now,
+// acos(e_z . R e_z) with R the turn since t = 0; it is the rocking angle whatever the horizontal
+// axis, and a turn about the vertical (twist) leaves it at zero.
+// Overturned: the tilt at the end exceeds the body's overturning angle at t = 0,
+// atan(d / h), d the horizontal distance from the centroid to the nearest edge of the body's
+// lowest face and h the centroid's height above it: the centroid ended beyond that edge, so the
+// body did not rock back (the 2-D outcome's rule, world/outcome.hpp, on the initial base).
+// Slip: the centroid's horizontal displacement minus the table's.
+#include <vector>
+
+#include "world/world_3d.hpp"
+
+namespace blockdem {
+
+struct BodyResponse3d {
+    Vec3 start_position_m;        ///< [m] centroid at t = 0
+    Quaternion start_orientation; ///< at t = 0
+    double overturning_angle_rad = 0.0;  ///< [rad] atan(d / h) at t = 0
+    double peak_tilt_rad = 0.0;          ///< [rad]
+    double peak_tilt_time_s = 0.0;       ///< [s]
+    Vec3 peak_tilt_axis;                 ///< unit, horizontal: the axis it tilted about at the peak
+    double peak_slip_m = 0.0;            ///< [m] largest |horizontal slip| so far
+};
+
+/// The turn of body i since t = 0 (world frame: q(t) q(0)*).
+Quaternion turn_since_start(const World3d& w, const BodyResponse3d& r, std::size_t i);
+/// [rad] the tilt of a turn (above).
+double tilt_rad(Quaternion turn);
+/// [m] body i's centroid at w.time_s. A driven body's is the table's at t: the step places it at
+/// the start of a step, so between steps its stored position is a step behind.
+Vec3 position_now_m(const World3d& w, std::size_t i);
+/// [m/s] body i's velocity at w.time_s (a driven body's: the table's, as above).
+Vec3 velocity_now_m_s(const World3d& w, std::size_t i);
+/// [m] body i's slip relative to the table now (horizontal; z = 0).
+Vec3 slip_m(const World3d& w, const BodyResponse3d& r, std::size_t i);
+
+class ResponseMonitor3d {
+public:
+    explicit ResponseMonitor3d(const World3d& w);
+    /// Updates the peaks with the state at w.time_s (call after every step).
+    void update(const World3d& w);
+    const std::vector<BodyResponse3d>& bodies() const { return bodies_; }
+    bool overturned(const World3d& w, std::size_t i) const;
+
+private:
+    std::vector<BodyResponse3d> bodies_;
+};
+
+}  // namespace blockdem

@@ -1,0 +1,61 @@
+#include "world/run_checks_3d.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "dynamics/critical_time_step_3d.hpp"
+#include "world/model.hpp"
+#include "world/simulation_error.hpp"
+
+namespace blockdem {
+
+void check_energy_balance_3d(const World3d& w, double max_error, double start_bound_s) {
+    const double error = w.ledger.balance_error();
+    if (w.steps <= 10 || w.ledger.scale_j() <= 1e-9 || !(error > max_error || std::isnan(error))) return;
+    std::size_t fastest = 0;
+    for (std::size_t i = 1; i < w.bodies.size(); ++i)
+        if (length(w.bodies[i].velocity_at_t_m_s) > length(w.bodies[fastest].velocity_at_t_m_s)) fastest = i;
+    const CriticalTimeStep3d live = live_time_step_3d(w);
+    throw SimulationError(fmt::format(
+        "unstable: energy balance error {:.3g} (of the largest term, {:.4g} J) exceeds {:g} at t = {:.6g} s (step {}); "
+        "fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s; stable limit {:.4g} s at the start, {:.4g} s now)",
+        error, w.ledger.scale_j(), max_error, w.time_s, w.steps, w.bodies[fastest].name,
+        length(w.bodies[fastest].velocity_at_t_m_s), w.dt_s, start_bound_s, live.dt_s));
+}
+
+std::vector<double> least_widths_m(const World3d& w) {
+    std::vector<double> widths;
+    for (const RigidBody3d& b : w.bodies) {
+        double least = std::numeric_limits<double>::infinity();
+        for (const Vec3& n : b.shape.face_normals) {
+            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+            for (const Vec3& v : b.shape.vertices_m) {
+                lo = std::min(lo, dot(v, n));
+                hi = std::max(hi, dot(v, n));
+            }
+            least = std::min(least, hi - lo);
+        }
+        widths.push_back(least);
+    }
+    return widths;
+}
+
+void check_overlap_3d(const World3d& w, const std::vector<double>& widths_m, double max_ratio) {
+    for (const ContactPoint3d& c : w.contacts) {
+        const double ratio = c.overlap_m / std::min(widths_m[c.key.body_a], widths_m[c.key.body_b]);
+        if (ratio <= max_ratio) continue;
+        // As in 2-D: the impact rule (overlap as 1/sqrt(kn)) brings the overlap near 1% either way.
+        const double kn = w.contact.kn_N_m;
+        throw SimulationError(fmt::format(
+            "penetration: bodies '{}' and '{}' overlap by {:.4g} m at t = {:.6g} s (step {}), {:.3g} of the least width "
+            "of the thinner body; the limit is {:g} (simulation.max_overlap). The contact is too soft for its load: "
+            "raise kn (now {:.4g} N/m) to about {:.3g} N/m for an overlap near 1%",
+            w.bodies[c.key.body_a].name, w.bodies[c.key.body_b].name, c.overlap_m, w.time_s, w.steps, ratio, max_ratio,
+            kn, kn * (ratio / overlap_warning_ratio) * (ratio / overlap_warning_ratio)));
+    }
+}
+
+}  // namespace blockdem

@@ -1,0 +1,75 @@
+#include "world/world_3d_start.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "world/step_3d.hpp"
+#include "world/world.hpp"
+
+namespace blockdem {
+namespace {
+
+// [m] the largest distance of a body's vertex from its centroid.
+double body_radius_m(const RigidBody3d& b) {
+    double r = 0.0;
+    for (const Vec3& v : b.shape.vertices_m) r = std::max(r, length(v));
+    return r;
+}
+
+// The probe's step [s]: a tenth of the shortest single-point period among the dynamic bodies.
+double probe_step_s(const World3d& w) {
+    double dt = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < w.bodies.size(); ++i)
+        if (w.kinds[i] == BodyKind3d::dynamic) dt = std::min(dt, 0.1 * std::sqrt(w.bodies[i].mass_kg / w.contact.kn_N_m));
+    return dt;
+}
+
+}  // namespace
+
+void check_no_initial_overlap_3d(const World3d& w) {
+    World3d probe = w;
+    probe.dt_s = std::isfinite(probe_step_s(w)) ? probe_step_s(w) : 1e-6;
+    step_3d(probe);  // its contacts are those of the positions at t = 0
+    for (const ContactPoint3d& c : probe.contacts) {
+        const RigidBody3d& a = w.bodies[c.key.body_a];
+        const RigidBody3d& b = w.bodies[c.key.body_b];
+        if (c.overlap_m > 1e-9 * std::min(body_radius_m(a), body_radius_m(b)))
+            throw ModelError(fmt::format("bodies '{}' and '{}' overlap at the start by {:.3g} m at ({:.6g}, {:.6g}, "
+                                         "{:.6g}) m",
+                                         a.name, b.name, c.overlap_m, c.point_m.x, c.point_m.y, c.point_m.z));
+    }
+}
+
+CriticalTimeStep3d start_time_step_3d(const World3d& w) {
+    const double dt = probe_step_s(w);
+    if (!std::isfinite(dt)) return {.dt_s = std::numeric_limits<double>::infinity()};
+    World3d probe = w;
+    probe.dt_s = dt;
+    for (int k = 0; k < 3; ++k) step_3d(probe);
+    return live_time_step_3d(probe);
+}
+
+CriticalTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety, double output_interval_s) {
+    const CriticalTimeStep3d limit = start_time_step_3d(w);
+    if (dt_s) {
+        w.dt_s = *dt_s;
+        if (w.dt_s > limit.dt_s)
+            throw ModelError(fmt::format("time step dt = {:g} s is above the stable limit {:.4g} s of the contacts at the "
+                                         "start (mostly body '{}': frequency {:.4g} rad/s, damping ratio {:.3g}); use "
+                                         "dt <= {:.3g} s",
+                                         w.dt_s, limit.dt_s, w.bodies[limit.body].name, limit.omega_rad_s, limit.h,
+                                         default_dt_safety * limit.dt_s));
+        return limit;
+    }
+    if (!std::isfinite(limit.dt_s))
+        throw ModelError("cannot derive the time step: no body rests on another at the start; give simulation.dt");
+    const double largest_s = dt_safety * limit.dt_s;
+    const double steps = std::ceil(output_interval_s / largest_s);
+    w.dt_s = steps <= 1e9 ? std::min(largest_s, output_interval_s / steps) : largest_s;
+    return limit;
+}
+
+}  // namespace blockdem

@@ -1,0 +1,323 @@
+// The 3-D scenario reader (io/scenario_3d.hpp): each body shape and its placement, the drum
+// column, the contact keys shared with 2-D, the table's three components and the azimuth of a
+// record's horizontal pair, the derived time step, and the errors naming key and body.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+#include "io/input_error.hpp"
+#include "io/scenario_3d.hpp"
+#include "laws/restitution.hpp"
+#include "world/world_3d_start.hpp"
+
+namespace blockdem {
+namespace {
+
+constexpr double pi = std::numbers::pi;
+const std::filesystem::path records_dir = std::filesystem::path(BLOCKDEM_SOURCE_DIR) / "tests/data/records";
+
+// A scenario with a fixed slab (top at z = 0) and the given text after it.
+LoadedScenario3d load(const std::string& more) {
+    const std::string text = R"(dimension = 3
+[simulation]
+duration = 0.1
+[contact]
+kn = 1e6
+ks = 1e6
+mu = 0.5
+[[bodies]]
+name = "slab"
+kind = "fixed"
+shape = "box"
+size = [4.0, 4.0, 0.2]
+position = [0.0, 0.0, -0.1]
+)" + more;
+    return load_scenario_3d(toml::parse(text), records_dir / "scenario_3d.toml", {});
+}
+
+// The message of the InputError that loading throws ("" if none).
+std::string error_of(const std::string& more) {
+    try {
+        load(more);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+// [m] the body's extent along the world axis (0, 1, 2).
+double extent_m(const RigidBody3d& b, int axis) {
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t k = 0; k < b.shape.vertices_m.size(); ++k) {
+        const Vec3 v = world_vertex(b, k);
+        const double c = axis == 0 ? v.x : axis == 1 ? v.y : v.z;
+        lo = std::min(lo, c);
+        hi = std::max(hi, c);
+    }
+    return hi - lo;
+}
+
+TEST(Scenario3d, BoxTurnedByARotationVectorInDegrees) {
+    const LoadedScenario3d s = load(R"([[bodies]]
+name = "block"
+shape = "box"
+size = [2.0, 1.0, 0.5]
+position = [0.5, 0.0, 0.25]
+rotation_deg = [0.0, 0.0, 90.0]
+density = 100.0
+velocity = [1.0, 0.0, 0.0]
+)");
+    ASSERT_EQ(s.world.bodies.size(), 2u);
+    const RigidBody3d& b = s.world.bodies[1];
+    EXPECT_EQ(b.name, "block");
+    EXPECT_EQ(s.world.kinds[1], BodyKind3d::dynamic);
+    EXPECT_NEAR(b.mass_kg, 100.0, 1e-9);
+    EXPECT_NEAR(b.position_m.x, 0.5, 1e-12);
+    EXPECT_NEAR(b.position_m.z, 0.25, 1e-12);
+    // Turned 90 degrees about z: its 2 m edge lies along y.
+    EXPECT_NEAR(extent_m(b, 0), 1.0, 1e-12);
+    EXPECT_NEAR(extent_m(b, 1), 2.0, 1e-12);
+    EXPECT_NEAR(b.velocity_at_t_m_s.x, 1.0, 1e-15);
+    EXPECT_NEAR(s.world.gravity_m_s2, 9.81, 0.0);
+}
+
+TEST(Scenario3d, PrismOfSidesAndOfAPolygonHaveTheirCentroidAtThePosition) {
+    const LoadedScenario3d s = load(R"([[bodies]]
+name = "drum"
+shape = "prism"
+sides = 8
+radius = 0.5
+height = 0.4
+position = [0.0, 0.0, 0.2]
+density = 1000.0
+[[bodies]]
+name = "wedge"
+shape = "prism"
+polygon = [[0.0, 0.0], [0.6, 0.0], [0.0, 0.3]]
+height = 0.2
+position = [1.0, 1.0, 0.15]
+rotation = [1.5707963267948966, 0.0, 0.0]
+density = 1000.0
+)");
+    const RigidBody3d& drum = s.world.bodies[1];
+    EXPECT_EQ(drum.shape.vertices_m.size(), 16u);
+    // The regular octagon's area n/2 r^2 sin(2 pi / n) times the height.
+    EXPECT_NEAR(drum.mass_kg, 1000.0 * 4.0 * 0.25 * std::sin(2.0 * pi / 8.0) * 0.4, 1e-9);
+    EXPECT_NEAR(drum.position_m.z, 0.2, 1e-12);
+    EXPECT_NEAR(extent_m(drum, 2), 0.4, 1e-12);
+    const RigidBody3d& wedge = s.world.bodies[2];
+    EXPECT_NEAR(wedge.mass_kg, 1000.0 * 0.09 * 0.2, 1e-9);
+    EXPECT_NEAR(wedge.position_m.x, 1.0, 1e-12);
+    EXPECT_NEAR(wedge.position_m.y, 1.0, 1e-12);
+    EXPECT_NEAR(wedge.position_m.z, 0.15, 1e-12);
+    // Turned a quarter about x: the 0.3 m leg now stands along z, the height along y.
+    EXPECT_NEAR(extent_m(wedge, 2), 0.3, 1e-12);
+    EXPECT_NEAR(extent_m(wedge, 1), 0.2, 1e-12);
+}
+
+TEST(Scenario3d, PolyhedronFromItsVerticesAndADrumColumn) {
+    const LoadedScenario3d s = load(R"([[bodies]]
+name = "tetra"
+shape = "polyhedron"
+vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+position = [1.0, 1.0, 0.0]
+density = 600.0
+[[assemblies]]
+name = "c"
+type = "drum_column"
+drums = 4
+sides = 12
+radius = 0.25
+height = 0.3
+base = [-1.0, 0.0, 0.0]
+density = 2500.0
+)");
+    ASSERT_EQ(s.world.bodies.size(), 6u);
+    EXPECT_NEAR(s.world.bodies[1].mass_kg, 600.0 / 6.0, 1e-9);
+    EXPECT_NEAR(s.world.bodies[1].position_m.x, 1.25, 1e-12);
+    for (int k = 0; k < 4; ++k) {
+        const RigidBody3d& d = s.world.bodies[2 + k];
+        EXPECT_EQ(d.name, "c_" + std::to_string(k + 1));
+        EXPECT_NEAR(d.position_m.x, -1.0, 1e-12);
+        EXPECT_NEAR(d.position_m.z, 0.15 + 0.3 * k, 1e-12);  // touching: no gap, no overlap
+    }
+}
+
+TEST(Scenario3d, BrickWallInRunningBond) {
+    // Two courses of three bricks in two wythes: the odd course one shorter and half a brick on.
+    const LoadedScenario3d s = load(R"([[assemblies]]
+name = "w"
+type = "brick_wall"
+courses = 2
+bricks_per_course = 3
+wythes = 2
+brick = [0.4, 0.2, 0.1]
+origin = [-0.6, -0.2, 0.0]
+density = 2000.0
+)");
+    ASSERT_EQ(s.world.bodies.size(), 1u + 3 * 2 + 2 * 2);
+    EXPECT_EQ(s.world.bodies[1].name, "w_0_0_0");
+    EXPECT_NEAR(s.world.bodies[1].mass_kg, 2000.0 * 0.4 * 0.2 * 0.1, 1e-9);
+    EXPECT_NEAR(s.world.bodies[1].position_m.x, -0.4, 1e-12);
+    EXPECT_NEAR(s.world.bodies[1].position_m.y, -0.1, 1e-12);
+    EXPECT_NEAR(s.world.bodies[1].position_m.z, 0.05, 1e-12);
+    const RigidBody3d& odd = s.world.bodies[7];  // course 1, wythe 0, first brick
+    EXPECT_EQ(odd.name, "w_1_0_0");
+    EXPECT_NEAR(odd.position_m.x, -0.2, 1e-12);
+    EXPECT_NEAR(odd.position_m.z, 0.15, 1e-12);
+    EXPECT_EQ(s.world.bodies.back().name, "w_1_1_1");
+}
+
+TEST(Scenario3d, ContactKeysAreReadAsIn2d) {
+    const LoadedScenario3d s = load(R"([[bodies]]
+name = "block"
+shape = "box"
+size = [0.2, 0.2, 0.2]
+position = [0.0, 0.0, 0.1]
+density = 100.0
+)");
+    EXPECT_EQ(s.world.contact.kn_N_m, 1e6);
+    EXPECT_EQ(s.world.contact.mu, 0.5);
+    EXPECT_EQ(s.world.contact.h_s, 1.0);  // the 2-D default
+    const LoadedScenario3d e = load_scenario_3d(
+        toml::parse("dimension = 3\n[simulation]\nduration = 0.1\n[contact]\nkn = 1e6\nks = 2e6\nfriction_deg = 30\n"
+                    "e = 0.4\nh_s = 0.3\n[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 5]\n"
+                    "density = 1.0\n"),
+        "x.toml", {"simulation.dt=1e-4"});
+    EXPECT_NEAR(e.world.contact.mu, std::tan(pi / 6.0), 1e-15);
+    EXPECT_EQ(e.world.contact.h_n, damping_ratio_for(0.4, RestitutionMeaning::paper, ContactTermination::no_tension));
+    EXPECT_EQ(e.world.contact.h_s, 0.3);
+    EXPECT_EQ(e.world.dt_s, 1e-4);
+}
+
+TEST(Scenario3d, TableComponentsAndTheAzimuthOfARecordsPair) {
+    const std::string block = R"([[bodies]]
+name = "block"
+shape = "box"
+size = [0.2, 0.2, 0.2]
+position = [0.0, 0.0, 0.1]
+density = 100.0
+)";
+    const LoadedScenario3d sine = load(block + R"([table_motion.x]
+type = "sine"
+amplitude = 2.0
+period = 0.5
+[table_motion.z]
+type = "sine"
+amplitude = 0.1
+unit = "g"
+period = 0.25
+)");
+    EXPECT_NEAR(sample(sine.world.table.x, 0.125).acceleration_m_s2, 2.0, 1e-12);
+    EXPECT_EQ(sample(sine.world.table.y, 0.125).acceleration_m_s2, 0.0);
+    EXPECT_NEAR(sample(sine.world.table.z, 0.0625).acceleration_m_s2, 0.980665, 1e-12);
+    const std::string record = R"([table_motion.record]
+file = "jma_sample.csv"
+components = ["NS", "EW", "UD"]
+)";
+    const LoadedScenario3d plain = load(block + "[table_motion]\n" + record);
+    const LoadedScenario3d turned = load(block + "[table_motion]\nazimuth_deg = 30\n" + record);
+    const double c = std::cos(pi / 6.0), s = std::sin(pi / 6.0);
+    for (double t : {0.02, 0.055, 0.095}) {  // within the 0.11 s record
+        const double ns = sample(plain.world.table.x, t).acceleration_m_s2;
+        const double ew = sample(plain.world.table.y, t).acceleration_m_s2;
+        EXPECT_NE(ns, 0.0);
+        EXPECT_NEAR(sample(turned.world.table.x, t).acceleration_m_s2, c * ns - s * ew, 1e-12);
+        EXPECT_NEAR(sample(turned.world.table.y, t).acceleration_m_s2, s * ns + c * ew, 1e-12);
+        EXPECT_NEAR(sample(turned.world.table.x, t).displacement_m,
+                    c * sample(plain.world.table.x, t).displacement_m - s * sample(plain.world.table.y, t).displacement_m,
+                    1e-12);
+        EXPECT_EQ(sample(turned.world.table.z, t).acceleration_m_s2, sample(plain.world.table.z, t).acceleration_m_s2);
+    }
+    // The file's third column is the vertical one: -0.1 gal at t = 0.01 s (its second row).
+    EXPECT_NEAR(sample(plain.world.table.z, 0.01).acceleration_m_s2, -0.1 * 0.01, 1e-12);
+    EXPECT_NE(error_of(block + "[table_motion]\nazimuth_deg = 30\n[table_motion.x]\ntype = \"sine\"\namplitude = 1.0\n"
+                               "period = 1.0\n")
+                  .find("table_motion.azimuth_deg"),
+              std::string::npos);
+}
+
+TEST(Scenario3d, DerivedTimeStepIsHalfTheStartBoundOnWholeOutputSteps) {
+    const LoadedScenario3d s = load(R"([[bodies]]
+name = "block"
+shape = "box"
+size = [0.2, 0.2, 0.2]
+position = [0.0, 0.0, 0.1]
+density = 100.0
+)");
+    const CriticalTimeStep3d bound = start_time_step_3d(s.world);
+    EXPECT_EQ(bound.dt_s, s.critical_dt_s);
+    // Placed touching, the cube has no point at t = 0; the probe finds its four corners. With
+    // kn only (ks 1e-6 N/m, no dashpots), the bound is tests/validation/test_world_3d.cpp's
+    // hand-computed row sum: 4 kn (sqrt(6)/2)(1 + sqrt(6)) / m, dt = 2 / sqrt of it.
+    const LoadedScenario3d cube = load_scenario_3d(
+        toml::parse(R"(dimension = 3
+[simulation]
+duration = 0.1
+[contact]
+kn = 1e6
+ks = 1e-6
+mu = 0.6
+e = 1.0
+h_s = 0.0
+[[bodies]]
+name = "slab"
+kind = "fixed"
+shape = "box"
+size = [2.0, 2.0, 0.2]
+position = [0.0, 0.0, -0.1]
+[[bodies]]
+name = "cube"
+shape = "box"
+size = [0.5, 0.5, 0.5]
+position = [0.0, 0.0, 0.25]
+density = 800.0
+)"),
+        "cube.toml", {});
+    const double lambda = 4.0 * 1e6 * (std::sqrt(6.0) / 2.0) * (1.0 + std::sqrt(6.0)) / 100.0;
+    EXPECT_NEAR(cube.critical_dt_s, 2.0 / std::sqrt(lambda), 1e-9 * cube.critical_dt_s);
+    EXPECT_LE(s.world.dt_s, 0.5 * bound.dt_s);
+    EXPECT_GT(s.world.dt_s, 0.45 * bound.dt_s);
+    const double per_output = 1e-3 / s.world.dt_s;
+    EXPECT_NEAR(per_output, std::round(per_output), 1e-9);
+    // A body in the air: no bound at the start, dt must be given.
+    EXPECT_NE(error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 5]\ndensity = 1.0\n")
+                  .find("give simulation.dt"),
+              std::string::npos);
+}
+
+TEST(Scenario3d, BadInputNamesTheKeyAndTheBody) {
+    const std::string e1 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 0.5]\n"
+                                    "density = 1.0\nvelocty = [0, 0, 0]\n");
+    EXPECT_NE(e1.find("bodies.b.velocty"), std::string::npos) << e1;
+    EXPECT_NE(e1.find("velocity"), std::string::npos) << e1;
+    const std::string e2 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 0.5]\n");
+    EXPECT_NE(e2.find("body 'b' needs 'density'"), std::string::npos) << e2;
+    const std::string e3 = error_of("[[bodies]]\nname = \"flat\"\nshape = \"polyhedron\"\n"
+                                    "vertices = [[0, 0, 1], [1, 0, 1], [0, 1, 1], [1, 1, 1]]\ndensity = 1.0\n");
+    EXPECT_NE(e3.find("body 'flat'"), std::string::npos) << e3;
+    const std::string e4 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 0.5]\n"
+                                    "density = 1.0\nrotation = [0, 0, 1]\nrotation_deg = [0, 0, 1]\n");
+    EXPECT_NE(e4.find("rotation_deg"), std::string::npos) << e4;
+    const std::string e5 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 0, 0.5]\n"
+                                    "density = 1.0\n");
+    EXPECT_NE(e5.find("bodies.b.size"), std::string::npos) << e5;
+    // A tetrahedron's faces listed, one of them inverted (seen from outside it runs clockwise).
+    const std::string tetra = "[[bodies]]\nname = \"tet\"\nshape = \"polyhedron\"\n"
+                              "vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\ndensity = 1.0\n";
+    EXPECT_EQ(error_of(tetra + "faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n"), "");
+    const std::string e6 = error_of(tetra + "faces = [[0, 1, 2], [0, 1, 3], [0, 3, 2], [1, 2, 3]]\n");
+    EXPECT_NE(e6.find("body 'tet'"), std::string::npos) << e6;
+    EXPECT_NE(e6.find("face 0"), std::string::npos) << e6;
+    const std::string e7 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 0.5]\n"
+                                    "density = 1.0\n[output]\nreport = true\n");
+    EXPECT_NE(e7.find("output.report"), std::string::npos) << e7;
+    EXPECT_THROW(scenario_dimension(toml::parse("dimension = 4"), "x.toml"), InputError);
+    EXPECT_EQ(scenario_dimension(toml::parse("title = \"t\""), "x.toml"), 2);
+}
+
+}  // namespace
+}  // namespace blockdem
