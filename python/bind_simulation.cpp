@@ -179,6 +179,13 @@ public:
         set_body_velocity(scenario_run().world(), i, {velocity_m_s[0], velocity_m_s[1]}, angular_velocity_rad_s);
     }
 
+    void hold_velocity(const py::handle& body, std::array<double, 2> velocity_m_s, double angular_velocity_rad_s) {
+        const std::uint32_t i = dynamic_body(body);
+        if (!std::isfinite(velocity_m_s[0]) || !std::isfinite(velocity_m_s[1]) || !std::isfinite(angular_velocity_rad_s))
+            throw py::value_error("the velocity must be finite numbers");
+        hold_body_velocity(scenario_run().world(), i, {velocity_m_s[0], velocity_m_s[1]}, angular_velocity_rad_s);
+    }
+
     const World& world() const { return run_->world(); }
     // What reads more than the body arrays, or changes the world, waits for no thread: it
     // refuses while another thread steps (the contact table and the rows change then).
@@ -295,6 +302,23 @@ void bind_simulation(py::module_& m) {
              py::arg("angular_velocity") = 0.0,
              "Sets a dynamic body's velocity [m/s] and angular velocity [rad/s] for the next step; the kinetic "
              "energy it adds is booked as external work.")
+        .def("hold_velocity", &Simulation::hold_velocity, py::arg("body"), py::arg("velocity"),
+             py::arg("angular_velocity") = 0.0,
+             "Drives a dynamic body at the velocity [m/s] and angular velocity [rad/s] from the next step on, until "
+             "release_velocity(body): each step the force and torque that hold it are its external load (replacing "
+             "set_external_force's), their work booked as external_work_J. body: name or id.")
+        .def(
+            "release_velocity", [](Simulation& s, const py::handle& body) {
+                release_body_velocity(s.scenario_run().world(), s.dynamic_body(body));
+            },
+            py::arg("body"), "Ends hold_velocity: the body moves freely from the next step on, with no external load.")
+        .def("external_force", [](Simulation& s, const py::handle& body) {
+                const World& w = s.scenario_run().world();
+                const std::uint32_t i = s.dynamic_body(body);
+                if (!w.external_loads.any()) return py::make_tuple(0.0, 0.0, 0.0);
+                return py::make_tuple(w.external_loads.force_n[i].x, w.external_loads.force_n[i].y, w.external_loads.torque_n_m[i]);
+            },
+            py::arg("body"), "The external load (fx, fy [N], torque [N m]) of the last step: a held body's is the force that held it.")
         .def("contacts", [](Simulation& s) { return contacts_array(s.scenario_run().world()); },
              "The contact points at t as a structured array (a copy): body_a, body_b, x, y [m], nx, ny (from a to b), "
              "normal_force, shear_force [N] (on b), overlap [m], sliding, bond.")
