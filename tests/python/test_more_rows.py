@@ -114,3 +114,37 @@ def test_concave_example_the_l_rocks_the_portal_stands(source_dir):
     assert bodies["portal"]["outcome"] == "stable"
     # Measured peaks 6.8e-3 rad (the L) and 3.0e-4 rad (the portal's elastic rocking).
     assert bodies["ell"]["peak_abs_rotation_rad"] > 10 * bodies["portal"]["peak_abs_rotation_rad"]
+
+
+def balanced_on_one_corner(rounding_m):
+    """The row's 0.4 x 0.8 m, 100 kg block tilted so that its centroid stands above the centre
+    of its lowest corner's arc (tan(theta) = (w/2 - r) / (h/2 - r)), on a fixed floor, per-length
+    joint JKN = 1e9 Pa/m, for 0.5 s; returns its contact points then and its rotation."""
+    w, h = 0.4, 0.8
+    theta = math.atan((0.5 * w - rounding_m) / (0.5 * h - rounding_m))
+    depth = math.hypot(0.5 * w - rounding_m, 0.5 * h - rounding_m)   # centroid to the arc's centre
+    contact = {"stiffness": "per_length", "kn": 1e9, "ks": 5e8, "mu": 0.6, "h_n": 0.5, "h_s": 0.5}
+    if rounding_m > 0.0:
+        contact["rounding"] = rounding_m
+    bodies = [{"name": "floor", "kind": "fixed", "shape": "rectangle", "width": 4.0, "height": 1.0, "center": [0.0, -0.5]},
+              {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": w, "height": h,
+               "center": [0.0, depth + rounding_m], "rotation": theta, "mass": 100.0}]
+    s = blockdem.Scenario.from_dict({"simulation": {"duration": 0.5, "gravity": G, "dt_safety": 0.3, "output_interval": 0.01},
+                                     "contact": contact, "bodies": bodies})
+    sim = blockdem.Simulation(s, history=False)
+    sim.run()
+    return sim.contacts(), sim.rotations[sim.body_id("block")]
+
+
+@pytest.mark.parametrize("rounding_m, length_m", [(0.06, 0.06), (0.01, 0.04), (0.0, 0.04)])
+def test_block_balanced_on_one_corner_overlaps_by_w_over_jkn_l(rounding_m, length_m):
+    # Row "block (0.4 x 0.8 m, 100 kg) balanced on one rounded corner, per-length joint JKN =
+    # 1e9 Pa/m": the one point carries W with overlap W / (JKN L t), L = max(r, 0.1 x the least
+    # width): r = 6 cm gives L = r, r = 1 cm and sharp the 4 cm floor; tolerance 1%. The row
+    # measured 16.35 um (r = 6 cm), 24.53 um (r = 1 cm and sharp).
+    weight = 100.0 * G
+    c, turn = balanced_on_one_corner(rounding_m)
+    assert len(c) == 1
+    assert c["normal_force"][0] == pytest.approx(weight, rel=0.01)
+    assert c["overlap"][0] == pytest.approx(weight / (1e9 * length_m * 1.0), rel=0.01)
+    assert abs(turn) < 1e-6   # still balanced: the row is of a standing block
