@@ -60,3 +60,57 @@ def test_state_files_need_a_folder_and_a_real_state(source_dir, tmp_path):
     garbage.write_text("not a state")
     with pytest.raises(blockdem.InputError, match="garbage.h5"):
         blockdem.Simulation.from_state(garbage, scenario=source_dir / "examples/paper/rocking.toml", out_dir=tmp_path / "y")
+
+
+BONDED_WALL = """
+[simulation]
+duration = 0.3
+output_interval = 0.005
+[contact]
+stiffness = "per_length"
+{extra}
+kn = 1.0e10
+ks = 4.0e9
+mu = 0.6
+cohesion = 4.0e3
+tensile_strength = 2.0e3
+residual_mu = 0.5
+e = 0.5
+[[assemblies]]
+type = "wall"
+name = "brick"
+density = 1800.0
+length = 2.0
+courses = 6
+brick_length = 0.4
+brick_height = 0.2
+record = true
+bonded = true
+driven_zone = [[-1.0, -0.01], [3.0, -0.01], [3.0, 0.19], [-1.0, 0.19]]
+[output]
+interfaces = "all"
+vtk = false
+[table_motion.horizontal]
+type = "sine"
+amplitude = 1.5
+unit = "g"
+period = 0.2
+"""
+
+
+@pytest.mark.parametrize("extra", ["", "rounding = 0.005"], ids=["sharp", "rounded"])
+def test_bonded_wall_restarted_at_half_time_ends_as_the_straight_run(tmp_path, extra):
+    # Rows "bonded wall shaken until bonds break, stopped at T/2 and restarted" (sharp, and with
+    # rounded corners r = 5 mm): the run straight to T, byte-identical (history, energy,
+    # summary, interfaces); the bonds' states and the interfaces' measurements go on from the
+    # state. The wall of tests/cli/test_restart_bonds.sh, without VTK.
+    s = blockdem.Scenario.from_toml(BONDED_WALL.format(extra=extra))
+    full = blockdem.Simulation(s, threads=1, out_dir=tmp_path / "full", save_state=[0.15])
+    summary = full.run()
+    broken = [i for i in summary["interfaces"]["list"] if i["first_break_time_s"] is not None]
+    assert broken, "the shaking broke no bond: the restart would not carry a broken one"
+    restarted = blockdem.Simulation.from_state(tmp_path / "full" / "state" / "t_0.150000s.h5", out_dir=tmp_path / "new",
+                                               threads=2)
+    restarted.run()
+    for name in FILES + ("interfaces.csv",):
+        assert filecmp.cmp(tmp_path / "full" / name, tmp_path / "new" / name, shallow=False), name
