@@ -302,3 +302,38 @@ def test_undamped_stack_conserves_energy_with_the_table_work(tmp_path):
     assert e["normal_dashpot_J"] + e["shear_dashpot_J"] + e["friction_J"] < 1e-6 * peak_work
     assert worst < 0.002
     print(f"undamped stack: largest balance error {worst:.3g}, peak table work {peak_work:.4g} J")
+
+
+def test_bonded_direct_shear_peaks_at_the_two_point_joints_strength_then_residual():
+    # Row "direct shear of a bonded block (c = 1 kPa, mu = 0.6, mu_r = 0.4), slow tilt": a 2 m x
+    # 5 cm, 1000 kg block bonded to a fixed table tilting from 30 deg at 20 deg/s. The shear's
+    # moment F h / 2 unloads the downhill point by F h / (2 w), so the joint breaks at
+    # F = (c A + N tan phi) / (1 + tan(phi) h / w), 0.2%; then it slides at N tan(phi_r), 0.1%.
+    # Read every step (contacts()), as the row's C++ test. The row measured 6377.6 N (continuum
+    # c A + N tan phi: 6471.9 N) and 0.4000.
+    c, mu, residual, width, height = 1e3, 0.6, 0.4, 2.0, 0.05
+    contact = {"stiffness": "per_length", "kn": 1e9, "ks": 5e8, "mu": mu, "h_n": 0.5, "h_s": 0.5,
+               "cohesion": c, "tensile_strength": 1e3, "residual_mu": residual}
+    bodies = [{"name": "table", "kind": "fixed", "shape": "rectangle", "width": 3.0, "height": 0.2, "center": [0.0, -0.1],
+               "bonded": True},
+              {"name": "block", "kind": "dynamic", "shape": "rectangle", "width": width, "height": height,
+               "center": [0.0, 0.5 * height], "mass": 1000.0, "bonded": True}]
+    s = blockdem.Scenario.from_dict({"simulation": {"duration": 1.2, "gravity": G, "dt_safety": 0.3, "tilt_deg": 30.0,
+                                                    "tilt_rate_deg_s": 20.0, "output_interval": 0.01},
+                                     "contact": contact, "bodies": bodies})
+    sim = blockdem.Simulation(s, history=False)
+    intact = 1
+    before_break, ratio = None, None
+    while not sim.done:
+        cs = sim.contacts()
+        bonded = int((cs["bond"] == intact).sum())
+        if bonded == 2:
+            before_break = (abs(cs["shear_force"].sum()), cs["normal_force"].sum())
+        if bonded == 0 and sim.t > 1.0:
+            ratio = abs(cs["shear_force"].sum()) / cs["normal_force"].sum()
+        sim.step(1)
+    shear, normal = before_break
+    continuum = c * width * 1.0 + mu * normal
+    assert shear == pytest.approx(continuum / (1.0 + mu * height / width), rel=0.002)
+    assert ratio == pytest.approx(residual, rel=1e-3)
+    assert sim.energy()["bond_breakage_J"] > 0.0
