@@ -219,3 +219,26 @@ def test_tilting_table_wall_with_window_against_both_lps():
     dem_moving = set(np.flatnonzero(moved > 0.05 * moved.max()))
     assert len(lp_moving) == 24
     assert lp_moving <= dem_moving
+
+
+def test_limit_analysis_bad_input_and_statuses():
+    s = scenario([base(), block("block", 0.2, 0.8, 0.4)], 0.6)
+    with pytest.raises(ValueError, match="direction"):
+        blockdem.limit_analysis(s, direction="up")
+    with pytest.raises(ValueError, match="non-zero"):
+        blockdem.limit_analysis(s, direction=(0.0, 0.0))
+    with pytest.raises(ValueError, match="max_iterations"):
+        blockdem.limit_analysis(s, non_associative=True, max_iterations=0)
+    with pytest.raises(ValueError, match="gravity"):
+        blockdem.limit_analysis(scenario([base(), block("block", 0.2, 0.8, 0.4)], 0.6, gravity=0.0))
+    # A 2-vector is made unit: (-2, 0) is "-x".
+    assert blockdem.limit_analysis(s, direction=(-2.0, 0.0))["lambda"] == pytest.approx(0.25, abs=1e-9)
+    # A block in the air: no equilibrium, named as unsupported, lambda and the mechanism NaN.
+    floating = blockdem.limit_analysis(scenario([base(), block("block", 0.4, 0.4, 0.2), block("air", 0.2, 0.2, 2.0)], 0.6))
+    assert floating["status"] == "no_equilibrium"
+    assert floating["unsupported"] == [2]
+    assert math.isnan(floating["lambda"]) and np.isnan(floating["mechanism"]).all()
+    # Between two fixed walls it cannot be pushed out: unbounded.
+    walls = [{"name": n, "kind": "fixed", "shape": "rectangle", "width": 0.2, "height": 0.6, "center": [x, 0.3]}
+             for n, x in (("left", -0.3), ("right", 0.3))]
+    assert blockdem.limit_analysis(scenario([base(), block("block", 0.4, 0.4, 0.2)] + walls, 0.6))["status"] == "unbounded"
