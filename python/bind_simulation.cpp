@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <pybind11/functional.h>
@@ -39,21 +40,30 @@ namespace {
 
 class Simulation {
 public:
-    Simulation(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force, bool history)
+    Simulation(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force, bool history,
+               const std::vector<double>& save_state_s, std::optional<double> save_state_every_s)
         : threads_(threads) {
-        if (threads < 1) throw py::value_error(fmt::format("threads must be 1 or more, got {}", threads));
-        RunRequest request;
+        RunRequest request = make_request(threads, out_dir, force, save_state_s, save_state_every_s);
         request.scenario = scenario.file;
-        if (out_dir) request.out_dir = *out_dir;
-        request.force = force;
-        request.on_warning = [](const std::string& text) {
-            py::gil_scoped_acquire gil;
-            if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();
-        };
         LoadedScenario loaded = scenario.load(true);
         run_ = std::make_unique<ScenarioRun>(std::move(loaded), request, history);
         writes_files_ = out_dir.has_value();
         step(0);  // the state at t = 0 complete (accelerations included) before anything reads it
+    }
+
+    // A run restarted from a state file, as `blockdem run --restart` (run/scenario_run.hpp):
+    // the scenario is the state's run folder's scenario.toml unless given, the files go on in
+    // that folder unless out_dir names another (then they are copied first), so that they end
+    // byte for byte as a run that never stopped. Its rows are not kept in memory (history()).
+    Simulation(const fs::path& state_file, std::optional<fs::path> scenario_file, int threads, std::optional<fs::path> out_dir,
+               bool force, const std::vector<double>& save_state_s, std::optional<double> save_state_every_s)
+        : threads_(threads) {
+        RunRequest request = make_request(threads, out_dir, force, save_state_s, save_state_every_s, true);
+        request.restart = state_file;
+        if (scenario_file) request.scenario = *scenario_file;
+        run_ = std::make_unique<ScenarioRun>(request);
+        writes_files_ = true;
+        step(0);
     }
 
     // A run with files that is dropped before finish() ends them as an interrupted run does
@@ -169,6 +179,13 @@ public:
         set_body_velocity(scenario_run().world(), i, {velocity_m_s[0], velocity_m_s[1]}, angular_velocity_rad_s);
     }
 
+    void hold_velocity(const py::handle& body, std::array<double, 2> velocity_m_s, double angular_velocity_rad_s) {
+        const std::uint32_t i = dynamic_body(body);
+        if (!std::isfinite(velocity_m_s[0]) || !std::isfinite(velocity_m_s[1]) || !std::isfinite(angular_velocity_rad_s))
+            throw py::value_error("the velocity must be finite numbers");
+        hold_body_velocity(scenario_run().world(), i, {velocity_m_s[0], velocity_m_s[1]}, angular_velocity_rad_s);
+    }
+
     const World& world() const { return run_->world(); }
     // What reads more than the body arrays, or changes the world, waits for no thread: it
     // refuses while another thread steps (the contact table and the rows change then).
@@ -179,6 +196,29 @@ public:
     bool failed() const { return !failure_.empty(); }
 
 private:
+    static RunRequest make_request(int threads, const std::optional<fs::path>& out_dir, bool force,
+                                   const std::vector<double>& save_state_s, std::optional<double> save_state_every_s,
+                                   bool restart = false) {
+        if (threads < 1) throw py::value_error(fmt::format("threads must be 1 or more, got {}", threads));
+        // State files belong to a run's folder: their restart continues its files.
+        if (!out_dir && !restart && (!save_state_s.empty() || save_state_every_s))
+            throw py::value_error("save_state and save_state_every write state files into the run's folder: give out_dir too");
+        for (double t_s : save_state_s)
+            if (!(std::isfinite(t_s) && t_s >= 0.0)) throw py::value_error(fmt::format("save_state: {} is not a time >= 0 [s]", t_s));
+        if (save_state_every_s && !(std::isfinite(*save_state_every_s) && *save_state_every_s > 0.0))
+            throw py::value_error(fmt::format("save_state_every must be a time > 0 [s], got {}", *save_state_every_s));
+        RunRequest request;
+        if (out_dir) request.out_dir = *out_dir;
+        request.force = force;
+        request.save_state_times_s = save_state_s;
+        request.save_state_every_s = save_state_every_s.value_or(0.0);
+        request.on_warning = [](const std::string& text) {
+            py::gil_scoped_acquire gil;
+            if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();
+        };
+        return request;
+    }
+
     static constexpr std::int64_t steps_between_signal_checks = 256;
     std::unique_ptr<ScenarioRun> run_;
     int threads_ = 1;
@@ -191,10 +231,26 @@ private:
 
 void bind_simulation(py::module_& m) {
     py::class_<Simulation>(m, "Simulation", "A run of a scenario, stepped from Python (docs/python.md).")
-        .def(py::init<const ScenarioSource&, int, std::optional<fs::path>, bool, bool>(), py::arg("scenario"),
-             py::arg("threads") = 2, py::arg("out_dir") = py::none(), py::arg("force") = false, py::arg("history") = true,
+        .def(py::init<const ScenarioSource&, int, std::optional<fs::path>, bool, bool, const std::vector<double>&,
+                      std::optional<double>>(),
+             py::arg("scenario"), py::arg("threads") = 2, py::arg("out_dir") = py::none(), py::arg("force") = false,
+             py::arg("history") = true, py::kw_only(), py::arg("save_state") = std::vector<double>{},
+             py::arg("save_state_every") = py::none(),
              "Builds the world (settling it if the scenario asks). out_dir: write the CLI's files there; history: "
-             "keep the output rows in memory (history()).")
+             "keep the output rows in memory (history()); save_state: times [s] to write state files at, "
+             "save_state_every: an interval [s] (as --save-state, --save-state-every: into out_dir/state/; finish() "
+             "before the end writes one too).")
+        .def_static(
+            "from_state",
+            [](const fs::path& state_file, std::optional<fs::path> scenario, int threads, std::optional<fs::path> out_dir,
+               bool force, const std::vector<double>& save_state_s, std::optional<double> save_state_every_s) {
+                return std::make_unique<Simulation>(state_file, scenario, threads, out_dir, force, save_state_s, save_state_every_s);
+            },
+            py::arg("state_file"), py::kw_only(), py::arg("scenario") = py::none(), py::arg("threads") = 2,
+            py::arg("out_dir") = py::none(), py::arg("force") = false, py::arg("save_state") = std::vector<double>{},
+            py::arg("save_state_every") = py::none(),
+            "A run restarted from a state file, as `blockdem run --restart`: the scenario of the state's run folder "
+            "(or `scenario`, a file), its files continued there (or copied to out_dir first).")
         .def("step", &Simulation::step, py::arg("n") = 1, "Takes n steps (fewer at the end); returns the steps taken.")
         .def(
             "run",
@@ -246,6 +302,23 @@ void bind_simulation(py::module_& m) {
              py::arg("angular_velocity") = 0.0,
              "Sets a dynamic body's velocity [m/s] and angular velocity [rad/s] for the next step; the kinetic "
              "energy it adds is booked as external work.")
+        .def("hold_velocity", &Simulation::hold_velocity, py::arg("body"), py::arg("velocity"),
+             py::arg("angular_velocity") = 0.0,
+             "Drives a dynamic body at the velocity [m/s] and angular velocity [rad/s] from the next step on, until "
+             "release_velocity(body): each step the force and torque that hold it are its external load (replacing "
+             "set_external_force's), their work booked as external_work_J. body: name or id.")
+        .def(
+            "release_velocity", [](Simulation& s, const py::handle& body) {
+                release_body_velocity(s.scenario_run().world(), s.dynamic_body(body));
+            },
+            py::arg("body"), "Ends hold_velocity: the body moves freely from the next step on, with no external load.")
+        .def("external_force", [](Simulation& s, const py::handle& body) {
+                const World& w = s.scenario_run().world();
+                const std::uint32_t i = s.dynamic_body(body);
+                if (!w.external_loads.any()) return py::make_tuple(0.0, 0.0, 0.0);
+                return py::make_tuple(w.external_loads.force_n[i].x, w.external_loads.force_n[i].y, w.external_loads.torque_n_m[i]);
+            },
+            py::arg("body"), "The external load (fx, fy [N], torque [N m]) of the last step: a held body's is the force that held it.")
         .def("contacts", [](Simulation& s) { return contacts_array(s.scenario_run().world()); },
              "The contact points at t as a structured array (a copy): body_a, body_b, x, y [m], nx, ny (from a to b), "
              "normal_force, shear_force [N] (on b), overlap [m], sliding, bond.")

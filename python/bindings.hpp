@@ -11,5 +11,6 @@ void bind_scenario(pybind11::module_& m);
 void bind_simulation(pybind11::module_& m);
 void bind_study(pybind11::module_& m);
 void bind_analysis(pybind11::module_& m);
+void bind_limit(pybind11::module_& m);
 
 }  // namespace blockdem::python

@@ -8,4 +8,5 @@ PYBIND11_MODULE(_core, m) {
     blockdem::python::bind_simulation(m);
     blockdem::python::bind_study(m);
     blockdem::python::bind_analysis(m);
+    blockdem::python::bind_limit(m);
 }

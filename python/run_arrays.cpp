@@ -26,6 +26,7 @@ struct ContactRow {
     double overlap_m;
     bool sliding;
     std::uint8_t bond;
+    std::uint8_t sub_point;   ///< 0: one of the pair's own points; k: its sub-contacts' interior point k
 };
 
 py::array rows_array(const std::vector<double>& values, std::size_t rows, std::size_t columns) {
@@ -50,12 +51,22 @@ py::array scalar_view(const std::vector<double>& values, const py::object& owner
 
 py::array contacts_array(const World& w) {
     std::vector<ContactRow> rows;
-    for (const PairContact& pair : w.contacts)
+    auto add = [&](const PairContact& pair, const ContactPoint& p, std::uint8_t sub_point) {
+        rows.push_back({pair.a, pair.b, p.point_m.x, p.point_m.y, pair.normal.x, pair.normal.y, p.normal_force_n,
+                        p.shear_force_n, p.overlap_m, p.sliding, static_cast<std::uint8_t>(p.bond), sub_point});
+    };
+    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+        const PairContact& pair = w.contacts[i];
+        // A pair's points in order along the joint: points[0], then the interior points of its
+        // sub-contacts ([contact] sub_contacts > 2; they exist only while the pair has two
+        // points, placed from points[0] towards points[1]: contact/sub_contacts.hpp), then points[1].
+        const std::uint32_t interior = i < w.sub_contacts.size() ? w.sub_contacts[i].count : 0;
         for (std::uint32_t k = 0; k < pair.count; ++k) {
-            const ContactPoint& p = pair.points[k];
-            rows.push_back({pair.a, pair.b, p.point_m.x, p.point_m.y, pair.normal.x, pair.normal.y, p.normal_force_n,
-                            p.shear_force_n, p.overlap_m, p.sliding, static_cast<std::uint8_t>(p.bond)});
+            add(pair, pair.points[k], 0);
+            if (k == 0 && pair.count == 2)
+                for (std::uint32_t j = 0; j < interior; ++j) add(pair, w.sub_contacts[i].points[j], static_cast<std::uint8_t>(j + 1));
         }
+    }
     py::list names, formats, offsets;
     auto field = [&](const char* name, const char* format, std::size_t offset) {
         names.append(name);
@@ -73,6 +84,7 @@ py::array contacts_array(const World& w) {
     field("overlap", "f8", offsetof(ContactRow, overlap_m));
     field("sliding", "?", offsetof(ContactRow, sliding));
     field("bond", "u1", offsetof(ContactRow, bond));
+    field("sub_point", "u1", offsetof(ContactRow, sub_point));
     py::dict spec;
     spec["names"] = names;
     spec["formats"] = formats;

@@ -1,10 +1,12 @@
 #!/usr/bin/python3
-"""Stepping scene S3 (a running-bond wall of N bricks on a shaken table, scenes/masonry.cpp)
-from Python against the CLI's `blockdem bench --scene wall`, and the cost of a Python callback
-every 100 steps. Runs alternate (CLI, sim.step, sim.run with a callback) so that a loaded
+"""The Python module's stepping cost (docs/python.md, "Speed"): scene S3 (a running-bond wall of
+N bricks on a shaken table, scenes/masonry.cpp; 1e4 by default) stepped from Python with
+sim.step(1000), against `blockdem run` on the same scenario and against the bare step that
+`blockdem bench --scene wall` times, and the cost of a Python callback every 100 steps. Runs alternate (CLI, sim.step, sim.run with a callback) so that a loaded
 machine slows all three alike; each figure is the best of its runs, as `blockdem bench` reports.
 Both wall-clock and CPU time (this process's, all threads; the CLI's "CPU ms/step" column) are
-given: on a loaded machine the wall clock includes time spent waiting for a core.
+given: on a loaded machine the wall clock includes time spent waiting for a core. Not a test:
+nothing is asserted on time.
 
     PYTHONPATH=build/python /usr/bin/python3 benchmarks/python/bench_step.py [--bricks 10000]
         [--steps 1000] [--rounds 3] [--threads 1] [--cli build/blockdem]

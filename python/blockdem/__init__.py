@@ -15,6 +15,7 @@ from blockdem._core import (  # noqa: F401
     housner_rocking,
     integrate_record,
     intensity_measures,
+    limit_analysis,
     process_record,
     read_record,
     response_spectrum,
@@ -23,5 +24,5 @@ from blockdem._core import (  # noqa: F401
 from blockdem.study import sweep  # noqa: F401
 
 __all__ = ["InputError", "OutputError", "Scenario", "Simulation", "SimulationError",
-           "Motion", "housner_rocking", "integrate_record", "intensity_measures", "process_record", "read_record",
+           "Motion", "housner_rocking", "integrate_record", "intensity_measures", "limit_analysis", "process_record", "read_record",
            "response_spectrum", "rigid_plastic_sliding", "sweep"]

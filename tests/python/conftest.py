@@ -26,3 +26,8 @@ def block_on_table(mu=0.5, duration=0.2, dt=1e-4, **extra_simulation):
 @pytest.fixture
 def source_dir():
     return SOURCE_DIR
+
+
+def pytest_configure(config):
+    # The longer rows (several seconds each): still run by `make test`; `-m "not slow"` skips them.
+    config.addinivalue_line("markers", "slow: a row that takes several seconds")
