@@ -12,5 +12,7 @@ void bind_simulation(pybind11::module_& m);
 void bind_study(pybind11::module_& m);
 void bind_analysis(pybind11::module_& m);
 void bind_limit(pybind11::module_& m);
+void bind_laws(pybind11::module_& m);
+void bind_calibration(pybind11::module_& m);
 
 }  // namespace blockdem::python

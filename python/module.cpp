@@ -9,4 +9,6 @@ PYBIND11_MODULE(_core, m) {
     blockdem::python::bind_study(m);
     blockdem::python::bind_analysis(m);
     blockdem::python::bind_limit(m);
+    blockdem::python::bind_laws(m);
+    blockdem::python::bind_calibration(m);
 }

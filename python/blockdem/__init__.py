@@ -9,6 +9,18 @@ from blockdem._core import (  # noqa: F401  (the public API)
     Simulation,
     SimulationError,
 )
+# The laws, the sensor filter and the rocking calibration (python/bind_laws.cpp, bind_calibration.cpp).
+from blockdem._core import (  # noqa: F401
+    butterworth_filter,
+    butterworth_magnitude,
+    calibrate_rocking,
+    contact_point_history,
+    damping_ratio_paper,
+    damping_ratio_rebound,
+    joint_point_history,
+    restitution_no_tension,
+    restitution_paper,
+)
 # Studies and the analysis helpers (python/bind_study.cpp, bind_analysis.cpp, study.py).
 from blockdem._core import (  # noqa: F401
     Motion,
@@ -25,4 +37,7 @@ from blockdem.study import sweep  # noqa: F401
 
 __all__ = ["InputError", "OutputError", "Scenario", "Simulation", "SimulationError",
            "Motion", "housner_rocking", "integrate_record", "intensity_measures", "limit_analysis", "process_record", "read_record",
-           "response_spectrum", "rigid_plastic_sliding", "sweep"]
+           "response_spectrum", "rigid_plastic_sliding", "sweep",
+           "butterworth_filter", "butterworth_magnitude", "calibrate_rocking", "contact_point_history",
+           "damping_ratio_paper", "damping_ratio_rebound", "joint_point_history", "restitution_no_tension",
+           "restitution_paper"]
