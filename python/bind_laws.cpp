@@ -139,13 +139,27 @@ ButterworthDesign design(double cutoff_hz, int order, double sample_rate_hz) {
 }  // namespace
 
 void bind_laws(py::module_& m) {
-    m.def("restitution_no_tension", &restitution_no_tension, py::arg("h_n"),
-          "The rebound ratio of a no-tension linear spring-dashpot with damping ratio h_n (Schwager and Poeschel).");
-    m.def("damping_ratio_rebound", &damping_ratio_rebound, py::arg("e"),
-          "The damping ratio for which a no-tension contact rebounds with e.");
-    m.def("damping_ratio_paper", &damping_ratio_paper, py::arg("e"),
-          "Ohmachi and Arai's h_n = -ln e / sqrt(pi^2 + ln^2 e).");
-    m.def("restitution_paper", &restitution_paper, py::arg("h_n"), "exp(-pi h / sqrt(1 - h^2)).");
+    // The C++ functions assume their domain (their callers check the scenario): checked here.
+    const auto restitution_in_domain = [](double e) {
+        if (!(e > 0.0 && e <= 1.0)) throw py::value_error(fmt::format("e must be in (0, 1], got {}", e));
+        return e;
+    };
+    m.def("restitution_no_tension",
+          [](double h_n) {
+              if (!(h_n >= 0.0)) throw py::value_error(fmt::format("h_n must be >= 0, got {}", h_n));
+              return restitution_no_tension(h_n);
+          },
+          py::arg("h_n"), "The rebound ratio of a no-tension linear spring-dashpot with damping ratio h_n (Schwager and Poeschel).");
+    m.def("damping_ratio_rebound", [=](double e) { return damping_ratio_rebound(restitution_in_domain(e)); }, py::arg("e"),
+          "The damping ratio for which a no-tension contact rebounds with e, 0 < e <= 1.");
+    m.def("damping_ratio_paper", [=](double e) { return damping_ratio_paper(restitution_in_domain(e)); }, py::arg("e"),
+          "Ohmachi and Arai's h_n = -ln e / sqrt(pi^2 + ln^2 e), 0 < e <= 1.");
+    m.def("restitution_paper",
+          [](double h_n) {
+              if (!(h_n >= 0.0 && h_n < 1.0)) throw py::value_error(fmt::format("h_n must be in [0, 1), got {}", h_n));
+              return restitution_paper(h_n);
+          },
+          py::arg("h_n"), "exp(-pi h / sqrt(1 - h^2)), 0 <= h_n < 1.");
     m.def("contact_point_history", &contact_point_history, py::arg("kn"), py::arg("ks"), py::arg("mu"),
           py::arg("cn") = 0.0, py::arg("cs") = 0.0, py::arg("dt"), py::arg("overlap"), py::arg("normal_speed"),
           py::arg("tangential_speed"), py::arg("zero_overlap") = false,
