@@ -189,3 +189,18 @@ def test_stable_step_of_a_block_on_two_corners(width, height):
     exact_dt = 2.0 / exact_highest_omega(kn, ks, mass, inertia, 0.5 * width, 0.5 * height)
     assert sim.summary()["critical_dt_s"] == pytest.approx(exact_dt, rel=1e-3)
     assert sim.dt <= sim.summary()["critical_dt_s"]
+
+
+def test_law_histories_refuse_bad_arguments():
+    # Arrays of different lengths, a step that is not positive, a negative dilation.
+    with pytest.raises(ValueError, match="same length"):
+        blockdem.contact_point_history(kn=1.0, ks=1.0, mu=0.5, dt=1e-3, overlap=[1e-3, 1e-3], normal_speed=[0.0],
+                                       tangential_speed=[0.0, 0.0])
+    with pytest.raises(ValueError, match="dt"):
+        blockdem.contact_point_history(kn=1.0, ks=1.0, mu=0.5, dt=0.0, overlap=[1e-3], normal_speed=[0.0],
+                                       tangential_speed=[0.0])
+    with pytest.raises(ValueError, match="tan_dilation"):
+        blockdem.joint_point_history(kn=1.0, ks=1.0, mu=0.5, tan_dilation=-0.1, dt=1e-3, overlap=[1e-3],
+                                     normal_speed=[0.0], tangential_speed=[0.0])
+    with pytest.raises(ValueError):
+        blockdem.butterworth_filter(10.0, 0, 1000.0, [0.0, 1.0])
