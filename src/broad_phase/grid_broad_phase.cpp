@@ -17,10 +17,13 @@ struct Grid {
 
     Grid() { count.fill(1); }
 
-    // Clamped as doubles, then cast: a body 1e300 m away must not reach an undefined cast.
+    // Clamped as doubles, then cast: a body 1e300 m away must not reach an undefined cast. Bodies
+    // 1e308 m apart make the cell infinite and the far one's offset inf / inf, NaN, which
+    // std::clamp would pass on to the cast: NaN goes to the first cell, as does anything below.
     std::int64_t index(std::size_t axis, double coordinate_m) const {
         const double cell = std::floor((coordinate_m - origin[axis]) / cell_m);
-        return static_cast<std::int64_t>(std::clamp(cell, 0.0, static_cast<double>(count[axis] - 1)));
+        if (!(cell > 0.0)) return 0;
+        return static_cast<std::int64_t>(std::min(cell, static_cast<double>(count[axis] - 1)));
     }
     // The flat index of the cell whose index along `axis` is `index` and along the higher
     // axes gives `flat_above`: x varies fastest.

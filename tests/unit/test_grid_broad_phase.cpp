@@ -33,10 +33,7 @@ TEST(GridBroadPhase, MatchesAllPairsOnRandomBoxes) {
     is_static.push_back(1);
     boxes.push_back({{-1.0, 9.8}, {11.0, 11.0}});  // a large moving lid
     is_static.push_back(0);
-    std::vector<BodyPair> expected;
-    for (std::uint32_t a = 0; a < boxes.size(); ++a)
-        for (std::uint32_t b = a + 1; b < boxes.size(); ++b)
-            if (!(is_static[a] && is_static[b]) && overlaps(boxes[a], boxes[b])) expected.emplace_back(a, b);
+    const std::vector<BodyPair> expected = all_pairs(boxes, is_static);
     GridBroadPhase grid;
     std::vector<BodyPair> found;
     grid.find_pairs(boxes, is_static, found);
