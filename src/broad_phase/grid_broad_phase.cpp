@@ -19,10 +19,9 @@ struct Grid {
 
     // Clamped as doubles, then cast: a body 1e300 m away must not reach an undefined cast. Bodies
     // 1e308 m apart make the cell infinite and the far one's offset inf / inf, NaN, which
-    // std::clamp would pass on to the cast: NaN goes to the first cell, as does anything below.
+    // std::clamp would pass on to the cast: std::max(0.0, NaN) is 0, the first cell.
     std::int64_t index(std::size_t axis, double coordinate_m) const {
-        const double cell = std::floor((coordinate_m - origin[axis]) / cell_m);
-        if (!(cell > 0.0)) return 0;
+        const double cell = std::max(0.0, std::floor((coordinate_m - origin[axis]) / cell_m));
         return static_cast<std::int64_t>(std::min(cell, static_cast<double>(count[axis] - 1)));
     }
     // The flat index of the cell whose index along `axis` is `index` and along the higher
