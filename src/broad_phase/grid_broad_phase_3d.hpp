@@ -1,13 +1,9 @@
 #pragma once
-// Broad phase in 3-D: the candidate pairs whose bounding boxes overlap, in time linear in the
-// number of bodies. The 2-D grid's scheme (broad_phase/grid_broad_phase.hpp) with one more index:
-// bodies are binned into a uniform grid of cells twice the median body's size; a pair is reported
-// once, from the cell that holds the lowest corner of the two boxes' intersection; bodies much
-// larger than a cell (the table, a base) are not binned but tested against every other body.
-#include <cstdint>
-#include <vector>
+// The 3-D box and its axes for the grid broad phase (broad_phase/grid_broad_phase.hpp), which
+// is written once for both dimensions.
+#include <cstddef>
 
-#include "broad_phase/grid_broad_phase.hpp"  // BodyPair
+#include "broad_phase/grid_broad_phase.hpp"
 #include "geometry/vec3.hpp"
 
 namespace blockdem {
@@ -22,27 +18,18 @@ inline bool overlaps(const Aabb3d& a, const Aabb3d& b) {
            b.lo.z <= a.hi.z;
 }
 
-class GridBroadPhase3d {
-public:
-    /// Candidate pairs (a < b), sorted, excluding pairs where both bodies are static.
-    void find_pairs(const std::vector<Aabb3d>& boxes, const std::vector<std::uint8_t>& is_static,
-                    std::vector<BodyPair>& pairs);
-
-    /// Bytes held by the scratch arrays.
-    std::size_t memory_bytes() const {
-        return (cell_start_.capacity() + cell_items_.capacity() + large_.capacity() + small_.capacity() +
-                fill_.capacity()) * sizeof(std::uint32_t) +
-               (extents_.capacity() + sorted_extents_.capacity()) * sizeof(double);
+template <>
+struct BoxAxes<Aabb3d> {
+    static constexpr std::size_t count = 3;
+    static double lo(const Aabb3d& b, std::size_t axis) {  ///< [m]
+        return axis == 0 ? b.lo.x : axis == 1 ? b.lo.y : b.lo.z;
     }
-
-private:
-    std::vector<std::uint32_t> cell_start_;
-    std::vector<std::uint32_t> cell_items_;
-    std::vector<std::uint32_t> large_;
-    std::vector<std::uint32_t> small_;
-    std::vector<double> extents_;
-    std::vector<double> sorted_extents_;
-    std::vector<std::uint32_t> fill_;
+    static double hi(const Aabb3d& b, std::size_t axis) {  ///< [m]
+        return axis == 0 ? b.hi.x : axis == 1 ? b.hi.y : b.hi.z;
+    }
 };
+
+extern template class GridBroadPhaseOf<Aabb3d>;
+using GridBroadPhase3d = GridBroadPhaseOf<Aabb3d>;
 
 }  // namespace blockdem

@@ -78,4 +78,15 @@ void apply_overrides(toml::table& root, const std::vector<std::string>& assignme
     for (const auto& a : assignments) apply_one(root, a);
 }
 
+void apply_overrides_to_scenario(toml::table& root, const std::vector<std::string>& assignments,
+                                 const std::filesystem::path& file) {
+    try {
+        apply_overrides(root, assignments);
+    } catch (const InputError& e) {
+        InputLocation where = e.where();
+        where.file = file.string();
+        throw InputError(where, e.problem());
+    }
+}
+
 }  // namespace blockdem

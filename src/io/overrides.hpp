@@ -5,6 +5,7 @@
 // `contact.h_s=0.5`, `table_motion.horizontal.amplitude=300`. The value is read as a TOML
 // value (number, boolean, string in quotes, array); anything that is not valid TOML is taken
 // as a plain string, so `table_motion.horizontal.type=sine` works without quotes.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -15,5 +16,10 @@ namespace blockdem {
 /// Applies "key=value" assignments to root in order. Throws InputError (key "--set ...") when
 /// an assignment is malformed or its path runs through something that is not a table.
 void apply_overrides(toml::table& root, const std::vector<std::string>& assignments);
+
+/// apply_overrides for the scenario read from file: its InputError names that file, as an error
+/// in the file itself would, so that both dimensions' loaders report a bad `--set` the same way.
+void apply_overrides_to_scenario(toml::table& root, const std::vector<std::string>& assignments,
+                                 const std::filesystem::path& file);
 
 }  // namespace blockdem

@@ -586,13 +586,7 @@ LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file
     LoadedScenario s;
     s.file = file;
     s.root = std::move(root);
-    try {
-        apply_overrides(s.root, overrides);
-    } catch (const InputError& e) {
-        InputLocation where = e.where();
-        where.file = file.string();
-        throw InputError(where, e.problem());
-    }
+    apply_overrides_to_scenario(s.root, overrides, file);
     s.model = read_model(s.root, file.string(), file.parent_path());
     TableReader top(s.root, file.string(), "");
     if (auto output = top.optional_table("output")) {

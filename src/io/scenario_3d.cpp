@@ -380,13 +380,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     LoadedScenario3d s;
     s.file = file;
     s.root = std::move(root);
-    try {
-        apply_overrides(s.root, overrides);
-    } catch (const InputError& e) {
-        InputLocation where = e.where();
-        where.file = file.string();
-        throw InputError(where, e.problem());
-    }
+    apply_overrides_to_scenario(s.root, overrides, file);
     TableReader top(s.root, file.string(), "");
     top.number("dimension");
     const SimulationSettings settings = read_settings_3d(top.table("simulation"));
