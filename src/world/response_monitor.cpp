@@ -6,6 +6,7 @@
 
 #include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
+#include "world/parallel.hpp"
 
 namespace blockdem {
 namespace {
@@ -206,10 +207,13 @@ void ResponseMonitor::observe(const World& w) {
     const double level = level_rad(w, w.time_s);
     const double level_change_rad = level - start_level_rad_;
     const Vec2 down{-std::sin(level), -std::cos(level)};
-    for (std::size_t i = 0; i < b.size(); ++i) {
+    // Each body writes only its own response (a supporter's start_rotation_rad is read, never
+    // written here): parallel_for's rule 1, so the results do not depend on the thread count.
+    parallel_for(static_cast<std::ptrdiff_t>(b.size()), [&](std::ptrdiff_t item) {
+        const auto i = static_cast<std::size_t>(item);
         // A taken-out body is a dynamic one made static (is_taken_out), tested inline: this loop
         // runs for every body at every step.
-        if (b.kind[i] != BodyKind::dynamic || b.is_static[i]) continue;
+        if (b.kind[i] != BodyKind::dynamic || b.is_static[i]) return;
         BodyResponse& r = responses_[i];
         const double theta = b.rotation_rad[i];
         if (std::abs(theta) > r.peak_abs_rotation_rad) {
@@ -236,7 +240,7 @@ void ResponseMonitor::observe(const World& w) {
         if (r.rocking_onset_s < 0.0 && r.rocked()) r.rocking_onset_s = w.time_s;
         if (r.slip_onset_s < 0.0 && r.slid()) r.slip_onset_s = w.time_s;
         observe_support(b, i, w.time_s, r, table_velocity, down);
-    }
+    });
 }
 
 std::vector<BodyRecord> ResponseMonitor::records(const World& w) const {
