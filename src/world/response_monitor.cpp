@@ -6,6 +6,7 @@
 
 #include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
+#include "world/parallel.hpp"
 
 namespace blockdem {
 namespace {
@@ -93,22 +94,32 @@ ResponseMonitor::ResponseMonitor(const World& w)
 }
 
 // Sliding and the elastic shear displacement, at the pairs with the bodies below (any pair
-// while a body has no supporter yet).
-void ResponseMonitor::note_support_shear(const World& w, const PairContact& pair) {
+// while a body has no supporter yet). a_on_b: b is one of a's supporters (b_on_a the reverse).
+// The pair's points are read once for both bodies: their largest shear spring force and whether
+// one slides are the pair's, whichever body is noted (this runs for every contact at every step).
+void ResponseMonitor::note_support_shear(const World& w, const PairContact& pair, bool a_on_b, bool b_on_a) {
     const Bodies& b = w.bodies;
-    auto note = [&](std::uint32_t body, std::uint32_t other) {
-        BodyResponse& r = responses_[body];
-        if (b.kind[body] != BodyKind::dynamic || (!r.supporters.empty() && !holds(r.supporters, other))) return;
-        double spring_n = 0.0;
-        for (std::uint32_t k = 0; k < pair.count; ++k) {
-            spring_n = std::max(spring_n, std::abs(pair.points[k].shear_spring_n));
-            if (pair.points[k].sliding) sliding_now_[body] = 1;
-        }
-        const double ks_N_m = w.contact.at(b.material[pair.a], b.material[pair.b]).ks_N_m;
-        if (ks_N_m > 0.0) r.peak_elastic_shear_m = std::max(r.peak_elastic_shear_m, spring_n / ks_N_m);
+    auto noted = [&](std::uint32_t body, bool on_other) {
+        return b.kind[body] == BodyKind::dynamic && (on_other || responses_[body].supporters.empty());
     };
-    note(pair.a, pair.b);
-    note(pair.b, pair.a);
+    const bool note_a = noted(pair.a, a_on_b);
+    const bool note_b = noted(pair.b, b_on_a);
+    if (!note_a && !note_b) return;
+    double spring_n = 0.0;
+    bool sliding = false;
+    for (std::uint32_t k = 0; k < pair.count; ++k) {
+        spring_n = std::max(spring_n, std::abs(pair.points[k].shear_spring_n));
+        sliding = sliding || pair.points[k].sliding;
+    }
+    if (sliding) {
+        if (note_a) sliding_now_[pair.a] = 1;
+        if (note_b) sliding_now_[pair.b] = 1;
+    }
+    const double ks_N_m = w.contact.at(b.material[pair.a], b.material[pair.b]).ks_N_m;
+    if (ks_N_m <= 0.0) return;
+    const double shear_m = spring_n / ks_N_m;
+    if (note_a) responses_[pair.a].peak_elastic_shear_m = std::max(responses_[pair.a].peak_elastic_shear_m, shear_m);
+    if (note_b) responses_[pair.b].peak_elastic_shear_m = std::max(responses_[pair.b].peak_elastic_shear_m, shear_m);
 }
 
 void ResponseMonitor::restore(std::vector<BodyResponse> responses, double start_level_rad) {
@@ -141,9 +152,11 @@ void ResponseMonitor::note_contacts(const World& w) {
             if (dot(pair.normal, up) > supporting_normal_y) add(pair.b, pair.a);
             if (dot(pair.normal, up) < -supporting_normal_y) add(pair.a, pair.b);
         }
-        note_support_shear(w, pair);
-        if (holds(responses_[pair.a].supporters, pair.b)) touching_supporter_now_[pair.a] = 1;
-        if (holds(responses_[pair.b].supporters, pair.a)) touching_supporter_now_[pair.b] = 1;
+        const bool a_on_b = holds(responses_[pair.a].supporters, pair.b);
+        const bool b_on_a = holds(responses_[pair.b].supporters, pair.a);
+        note_support_shear(w, pair, a_on_b, b_on_a);
+        if (a_on_b) touching_supporter_now_[pair.a] = 1;
+        if (b_on_a) touching_supporter_now_[pair.b] = 1;
     }
 }
 
@@ -194,8 +207,13 @@ void ResponseMonitor::observe(const World& w) {
     const double level = level_rad(w, w.time_s);
     const double level_change_rad = level - start_level_rad_;
     const Vec2 down{-std::sin(level), -std::cos(level)};
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] != BodyKind::dynamic || is_taken_out(b, i)) continue;
+    // Each body writes only its own response (a supporter's start_rotation_rad is read, never
+    // written here): parallel_for's rule 1, so the results do not depend on the thread count.
+    parallel_for(static_cast<std::ptrdiff_t>(b.size()), [&](std::ptrdiff_t item) {
+        const auto i = static_cast<std::size_t>(item);
+        // A taken-out body is a dynamic one made static (is_taken_out), tested inline: this loop
+        // runs for every body at every step.
+        if (b.kind[i] != BodyKind::dynamic || b.is_static[i]) return;
         BodyResponse& r = responses_[i];
         const double theta = b.rotation_rad[i];
         if (std::abs(theta) > r.peak_abs_rotation_rad) {
@@ -222,7 +240,7 @@ void ResponseMonitor::observe(const World& w) {
         if (r.rocking_onset_s < 0.0 && r.rocked()) r.rocking_onset_s = w.time_s;
         if (r.slip_onset_s < 0.0 && r.slid()) r.slip_onset_s = w.time_s;
         observe_support(b, i, w.time_s, r, table_velocity, down);
-    }
+    });
 }
 
 std::vector<BodyRecord> ResponseMonitor::records(const World& w) const {

@@ -102,7 +102,7 @@ public:
 private:
     void note_contacts(const World& w);
     void observe_support(const Bodies& b, std::size_t i, double t_s, BodyResponse& r, Vec2 table_velocity_m_s, Vec2 down);
-    void note_support_shear(const World& w, const PairContact& pair);
+    void note_support_shear(const World& w, const PairContact& pair, bool a_on_b, bool b_on_a);
 
     OutcomeThresholds thresholds_;
     std::vector<BodyResponse> responses_;
