@@ -65,7 +65,7 @@ void write_report(const std::string& out_dir, bool animation_file) {
     if (!ec) args.insert(args.end(), {"--blockdem", self.string()});
     if (!animation_file) args.push_back("--no-animation");
     const int status = run_child(args);
-    if (status == 2) throw InputError({out_dir, "", 0, 0}, "not a run folder (see the message above)");
+    if (status == 2) throw InputError({out_dir, "", 0, 0}, "no report for this folder (see the message above)");
     if (status == 4) throw OutputError(fmt::format("{}: the report could not be written (see the message above)", out_dir));
     if (status != 0)
         throw std::runtime_error(fmt::format("the report was not written ({} exited with status {})", script.string(), status));

@@ -21,11 +21,24 @@ def _read_csv(path):
     return header, data
 
 
+def _refuse_3d(path):
+    """A 3-D run (issue 15, in progress) has no bodies.json and no 2-D drawing: say so, not that
+    the folder is not a run."""
+    try:
+        summary = json.loads((path / "summary.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return
+    if isinstance(summary, dict) and summary.get("dimension") == 3:
+        raise RunFolderError(f"{path}: a 3-D run: the report draws 2-D runs only for now; open "
+                             "vtk/bodies.pvd in ParaView and read history.csv, energy.csv and summary.json (docs/3d.md)")
+
+
 class RunFolder:
     """history.csv, energy.csv, bodies.json, summary.json and scenario.toml of one run."""
 
     def __init__(self, folder):
         self.path = Path(folder)
+        _refuse_3d(self.path)
         for name in ("history.csv", "summary.json", "bodies.json"):
             if not (self.path / name).is_file():
                 raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
