@@ -8,6 +8,7 @@
 #include "contact/sub_contacts.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "geometry/rounded_contact.hpp"
+#include "laws/mohr_coulomb_joint.hpp"
 #include "world/parallel.hpp"
 
 namespace blockdem {
@@ -16,6 +17,23 @@ namespace {
 PolygonView part_view(const Bodies& b, std::uint32_t part) {
     return {&b.world_vertices_m[b.part_vertex_begin[part]], &b.world_normals[b.part_vertex_begin[part]],
             b.part_vertex_count[part]};
+}
+
+// How far the open end of a per-length joint's two-point (edge-to-edge) contact may be apart
+// and the pair still keep it, as a point carrying nothing [m] (0 for other pairs). Why: the
+// per-length law gives each end of an edge contact half the face and a lone corner point 0.1
+// of the least width (laws/mohr_coulomb_joint.hpp), so a face whose end flickers about zero
+// overlap (bricks laid exactly touching: a head joint at rest) jumped its stiffness five-fold
+// at every flicker; the energy each jump made or took never came to rest (a wall at rest on a
+// level table crept and its ledger's error grew by 0.1 a second: tests/validation/
+// test_jointed_wall_at_rest.cpp). Kept up to joint_face_keep_fraction of the thinner body's
+// least width, and taken back as a face only when both ends touch again, the pair changes its
+// point count on a real opening or closing, once, not at every step.
+double joint_face_gap_m(const World& w, const PairContact& pair) {
+    if (pair.count != 2) return 0.0;
+    const Bodies& b = w.bodies;
+    if (w.contact.at(b.material[pair.a], b.material[pair.b]).stiffness != StiffnessBasis::per_length) return 0.0;
+    return joint_face_keep_fraction * std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
 }
 
 }  // namespace
@@ -42,6 +60,7 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     // A dilated joint point pushes while the faces are apart by less than its dilation.
     if (pair.count > 0 && w.contact.any_dilation) [[unlikely]]
         gap_m = std::max(gap_m, dilated_gap_m(pair));
+    gap_m = std::max(gap_m, joint_face_gap_m(w, pair));
     const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.

@@ -57,6 +57,11 @@ inline bool is_broken(BondState s) { return s == BondState::broken_tension || s 
 /// thinner body of its pair (docs/physics.md, "Joint stiffness per unit length").
 inline constexpr double corner_length_fraction = 0.1;
 
+/// An edge-to-edge contact of a per-length joint keeps its open end, carrying nothing, while
+/// that end is apart by less than this fraction of the thinner body's least width
+/// (contact/narrow_phase.cpp, joint_face_gap_m), so that its points' stiffness does not flicker.
+inline constexpr double joint_face_keep_fraction = 1e-3;
+
 /// The stiffness of one point of a per-length joint, and the joint area it stands for.
 struct JointPoint {
     double kn_N_m = 0.0;   ///< [N/m] JKN L t
