@@ -5,7 +5,7 @@
 # slender block overturns about the axis across the shaking; bad scenarios exit with status 2
 # naming the file and the key or the bodies: an unknown key, overlapping bodies, a non-convex
 # polyhedron, a dt above the stable bound, a record of two components where three are asked; a
-# ledger that stops closing or a block sinking into the table ends the run with status 3; a 2-D command refuses a 3-D file.
+# ledger that stops closing or a block sinking into the table ends the run with status 3; a 2-D command refuses a 3-D file; Ctrl-C leaves whole files and status "interrupted".
 # Usage: test_run_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1
@@ -205,6 +205,26 @@ expect_in "$out" "penetration: bodies 'table' and 'block'"
 out=$("$bin" check "$tmp/box.toml" 2>&1); status=$?
 [[ $status -eq 2 ]] || fail "check on a 3-D scenario: exit status $status, expected 2: $out"
 expect_in "$out" "dimension"
+
+# Ctrl-C (SIGINT) in the middle of a 3-D run: exit status 130, summary.json "interrupted",
+# history.csv and energy.csv end at whole rows of their header's width.
+"$bin" run "$src/examples/3d/brick_wall.toml" --out "$tmp/int" -q >"$tmp/int.txt" 2>&1 &
+pid=$!
+for _ in $(seq 200); do [[ -s "$tmp/int/history.csv" ]] && break; sleep 0.05; done
+sleep 0.5
+kill -s INT $pid
+wait $pid; status=$?
+[[ $status -eq 130 ]] || fail "SIGINT: exit status $status, expected 130: $(cat "$tmp/int.txt")"
+/usr/bin/python3 - "$tmp/int" <<'PY' || fail "the interrupted 3-D run's files are not whole"
+import csv, json, sys
+folder = sys.argv[1]
+assert json.load(open(f"{folder}/summary.json"))["status"] == "interrupted"
+for name in ("history.csv", "energy.csv"):
+    text = open(f"{folder}/{name}").read()
+    assert text.endswith("\n"), name
+    rows = list(csv.reader(text.splitlines()))
+    assert len(rows) >= 2 and all(len(r) == len(rows[0]) for r in rows), name
+PY
 
 if [[ $failures -gt 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "test_run_3d: all passed"
