@@ -115,8 +115,11 @@ GeneratedAssembly3d read_rock_mass_3d(TableReader& t, const std::string& name) {
         smallest_spacing_m = std::min(smallest_spacing_m, set.spacing_m);
     }
     const double tolerance_m = relative_tolerance * largest_distance_m(region.vertices_m);
+    // Default: a thousandth of the smallest joint spacing's cube, or of the region when the
+    // joints are farther apart than the region is large.
+    const double cube_m3 = smallest_spacing_m * smallest_spacing_m * smallest_spacing_m;
     const double min_volume_m3 = t.optional_positive("min_block_volume")
-                                     .value_or(1e-3 * smallest_spacing_m * smallest_spacing_m * smallest_spacing_m);
+                                     .value_or(1e-3 * std::min(cube_m3, polyhedron_properties(region).volume_m3));
     const std::set<std::size_t> fixed_faces = read_fixed_faces(t, region);
     const std::optional<double> base_m = t.optional_number("base");
     const std::string ground = t.choice("ground", {"fixed", "driven"}, "fixed");

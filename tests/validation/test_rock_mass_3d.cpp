@@ -65,7 +65,7 @@ Vec3 slide_m(LoadedScenario3d& s, double duration_s) {
 TEST(RockMass3d, BlockOnAJointSlidesIffTanBetaAboveMu) {
     const double friction_deg = std::atan(mu) * 180.0 / pi;  // 26.57 deg
     const double duration_s = 0.5;
-    for (const double beta_deg : {friction_deg - 2.0, friction_deg + 2.0}) {
+    for (const double beta_deg : {friction_deg - 1.0, friction_deg + 1.0}) {
         LoadedScenario3d s = cube_on_a_joint(beta_deg);
         const double beta = beta_deg * pi / 180.0;
         const Vec3 down_dip{std::cos(beta), 0.0, -std::sin(beta)};  // toward east (dip direction 90)
@@ -81,9 +81,10 @@ TEST(RockMass3d, BlockOnAJointSlidesIffTanBetaAboveMu) {
             // onto the normal springs, m g / (4 kn) ~ 5e-5 m.
             EXPECT_LT(std::abs(along_m), 1e-4);
         } else {
-            // Slides east and down: 2 % as the 2-D sliding tests (the springs' lag is 1e-4 of it).
+            // Slides east and down. 0.5 %: the shear springs' lag before slip, mu N / (4 ks) ~ 2e-5 m,
+            // is 1e-3 of the slide at 1 deg above the friction angle (measured 8.5e-4).
             EXPECT_GT(d.x, 0.0);
-            EXPECT_NEAR(along_m / expected_m, 1.0, 0.02);
+            EXPECT_NEAR(along_m / expected_m, 1.0, 0.005);
         }
     }
 }
