@@ -156,5 +156,33 @@ TEST(RockMassCut, ObliqueSetsInASlopeTileItExactly) {
     expect_faces_on_their_planes(cut, region, joints, 12.0);
 }
 
+
+TEST(RockMassCut, ManyOrientationsAndJointsThroughVertices) {
+    // Sets at many orientations, some with a joint through a corner of the region (origin on a
+    // vertex) or along its faces (dip 0 and 90): the blocks always tile the region and are valid
+    // bodies, whatever vertices lie on the joints.
+    const Polyhedron region = convex_polyhedron(box_vertices({3, 2, 1.5}, {1.5, 1, 0.75}));
+    int cases = 0;
+    for (double dd : {0.0, 45.0, 90.0, 123.4, 270.0, 333.0})
+        for (double dip : {0.0, 30.0, 45.0, 60.0, 90.0}) {
+            const std::vector<JointSet3d> sets = {{dd, dip, 0.5, {0, 0, 0}},
+                                                  {std::fmod(dd + 100.0, 360.0), 90.0 - 0.5 * dip, 0.7, {3, 2, 1.5}},
+                                                  {std::fmod(dd + 200.0, 360.0), 75.0, 0.5, {1.5, 0, 0}}};
+            const std::vector<Plane3d> joints = planes_of(sets, region);
+            const CutIntoBlocks cut =
+                cut_into_blocks(cut_polyhedron_of(region, 0), joints, region.faces.size(), 1e-6, 3e-9);
+            double volume_m3 = 0.0;
+            for (const CutPolyhedron& b : cut.blocks) {
+                volume_m3 += cut_polyhedron_volume(b);
+                EXPECT_NO_THROW(make_rigid_body_3d("block", cut_polyhedron_vertices(b, 3e-9), 1.0))
+                    << "dip direction " << dd << ", dip " << dip;
+            }
+            EXPECT_NEAR(volume_m3 / 9.0, 1.0, 1e-12) << "dip direction " << dd << ", dip " << dip;
+            expect_faces_on_their_planes(cut, region, joints, 3.0);
+            ++cases;
+        }
+    EXPECT_EQ(cases, 30);
+}
+
 }  // namespace
 }  // namespace blockdem
