@@ -8,6 +8,7 @@
 //   n = (sin(dip) sin(dip_direction), sin(dip) cos(dip_direction), cos(dip)),
 // so that dip 0 gives a vertical normal and dip 90, dip direction 90 (a vertical joint striking
 // north) the normal along x.
+#include <cstddef>
 #include <vector>
 
 #include "geometry/polyhedron_cut.hpp"
@@ -25,8 +26,12 @@ struct JointSet3d {
 /// The set's upward unit normal (the pole of its joints).
 Vec3 joint_normal(double dip_direction_deg, double dip_deg);
 
-/// The joints of the set that cross the hull of the points (any joint through a point strictly
-/// between the lowest and the highest of them along the normal), in order along the normal.
+/// How many joints of the set lie between the lowest and the highest of the points along the
+/// normal (those on either end included): the size joint_planes will have, without making them.
+/// Throws std::invalid_argument when the joints' numbers from the origin exceed 2^52.
+std::size_t joint_plane_count(const JointSet3d& set, const std::vector<Vec3>& region_vertices_m);
+
+/// Those joints, in order along the normal.
 std::vector<Plane3d> joint_planes(const JointSet3d& set, const std::vector<Vec3>& region_vertices_m);
 
 }  // namespace blockdem

@@ -103,14 +103,20 @@ GeneratedAssembly3d read_rock_mass_3d(TableReader& t, const std::string& name) {
     if (set_tables.empty()) t.fail("joint_sets", "a rock mass needs at least one [[assemblies.joint_sets]]");
     std::vector<Plane3d> planes;
     double cells = 1.0, smallest_spacing_m = INFINITY;
-    for (const TableReader& st : set_tables) {
+    for (TableReader st : set_tables) {
         const JointSet3d set = read_joint_set(st);
-        const std::vector<Plane3d> joints = joint_planes(set, region.vertices_m);
-        cells *= static_cast<double>(joints.size() + 1);
+        std::size_t count = 0;
+        try {
+            count = joint_plane_count(set, region.vertices_m);
+        } catch (const std::invalid_argument& e) {
+            st.fail("spacing", e.what());
+        }
+        cells *= static_cast<double>(count + 1);
         if (cells > max_blocks)
-            t.fail("joint_sets", fmt::format("the joint sets would cut the region into up to {:g} blocks (above {:g}): "
-                                             "a spacing too small?",
-                                             cells, max_blocks));
+            st.fail("spacing", fmt::format("the joint sets so far would cut the region into up to {:g} blocks (above "
+                                           "{:g}): a spacing too small?",
+                                           cells, max_blocks));
+        const std::vector<Plane3d> joints = joint_planes(set, region.vertices_m);
         planes.insert(planes.end(), joints.begin(), joints.end());
         smallest_spacing_m = std::min(smallest_spacing_m, set.spacing_m);
     }

@@ -132,6 +132,7 @@ TEST(RockMassKeys, BadInputNamesTheFileAndKey) {
     expect_error(rock_mass("", "[[assemblies.joint_sets]]\ndip_direction_deg = -1\ndip_deg = 5\nspacing = 1\n"), "dip_direction_deg");
     expect_error(rock_mass("", "[[assemblies.joint_sets]]\ndip_direction_deg = 0\ndip_deg = 5\nspacing = 0\n"), "spacing");
     expect_error(rock_mass("", "[[assemblies.joint_sets]]\ndip_direction_deg = 0\ndip_deg = 5\nspacing = 1e-5\n"), "blocks");
+    expect_error(rock_mass("", "[[assemblies.joint_sets]]\ndip_direction_deg = 0\ndip_deg = 5\nspacing = 1\norigin = [0, 0, 1e300]\n"), "2^52");
     expect_error(rock_mass("fixed = [\"up\"]\n"), "fixed");
     expect_error(rock_mass("region_vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\n"), "region_vertices");
     // A vertex inside the hull of the others: not a convex region.
