@@ -114,10 +114,12 @@ void print_study(const ConvergenceStudy& study, const ConvergenceTolerance& tol,
     const auto& r = study.result;
     const nlohmann::json& j = study.report;
     const Labels label{j.value("dimension", 2) == 3};
-    fmt::print("base dt = {:.4g} s (stable limit {:.4g} s); tolerance: relative change <= {:g}% at dt/2 -> dt/4, "
+    // (0: a 3-D model with no body resting on another at the start has no bound there.)
+    const double critical_dt_s = j["critical_dt_s"].get<double>();
+    const std::string limit = critical_dt_s > 0.0 ? fmt::format("stable limit {:.4g} s", critical_dt_s) : "no stable limit at the start";
+    fmt::print("base dt = {:.4g} s ({}); tolerance: relative change <= {:g}% at dt/2 -> dt/4, "
                "floors {:g} rad (rotation), {:g} m (slip), {:g} s (overturning time)\n",
-               j["base_dt_s"].get<double>(), j["critical_dt_s"].get<double>(), 100.0 * tol.rtol, tol.floor_rotation_rad,
-               tol.floor_slip_m, tol.floor_time_s);
+               j["base_dt_s"].get<double>(), limit, 100.0 * tol.rtol, tol.floor_rotation_rad, tol.floor_slip_m, tol.floor_time_s);
     // The bodies that are not converged first; a large assembly prints only the first `show`.
     std::vector<const BodyConvergence*> order;
     for (const auto& b : r.bodies) order.push_back(&b);

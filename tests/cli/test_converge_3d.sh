@@ -4,8 +4,8 @@
 # column rocks well above the 0.02 rad floor within 0.4 s) converges, with the 3-D summary's quantities in
 # converge.json and converge.csv; with a tolerance far below the changes it does not, and the
 # stiffness and ensemble runs scale the 3-D keys; bad input exits 2 naming the key before any run;
-# the record example (Northridge, three components) runs through the study when ../shared/data
-# is present and is skipped otherwise.
+# a drop with no stable bound at the start runs; the record example (Northridge, three
+# components) runs through the study when ../shared/data is present and is skipped otherwise.
 # Usage: test_converge_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1; src=$2
@@ -87,7 +87,32 @@ msg=$("$bin" converge "$column" --out "$tmp/bad4" --report 2>&1); rc=$?
 expect_in "$msg" "--report"
 [ ! -e "$tmp/bad4/dt" ] || fail "a refused study ran its base run"
 
-# 4. The record example, shortened: the three record components go through every run.
+# 4. A block dropped onto the table: no stable bound at the start (summary.json critical_dt_s
+#    null), dt given; the study runs and says so.
+cat > "$tmp/drop.toml" <<'TOML'
+dimension = 3
+[simulation]
+duration = 0.15
+dt = 1.0e-4
+[contact]
+kn = 1.0e7
+ks = 1.0e7
+mu = 0.5
+e = 0.5
+[[bodies]]
+name = "block"
+shape = "box"
+size = [0.2, 0.2, 0.4]
+position = [0.0, 0.0, 0.25]
+density = 2000.0
+TOML
+out=$("$bin" converge "$tmp/drop.toml" --out "$tmp/drop" -q 2>&1); rc=$?
+[ $rc -eq 0 ] || fail "drop converge exited $rc: $out"
+expect_in "$out" "base dt = 0.0001 s (no stable limit at the start)"
+expect_in "$out" "verdict: converged"
+[ "$(json "$tmp/drop/converge.json" "d['critical_dt_s']")" = 0.0 ] || fail "critical_dt_s of a drop"
+
+# 5. The record example, shortened: the three record components go through every run.
 if [ -d "$src/../shared/data/ground-motions" ]; then
   study=$tmp/record
   out=$("$bin" converge "$src/examples/3d/drum_column_record.toml" --out "$study" -q --set simulation.duration=0.2 2>&1); rc=$?
