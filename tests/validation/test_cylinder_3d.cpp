@@ -156,6 +156,11 @@ double quarter_cycle_s(const HousnerBlock& block, double theta) {
 TEST(Cylinder3d, SquarePrismRocksAsHousnersBlock) {
     const PlanarRocking r = rock(4);
     EXPECT_NEAR(r.block.corner_inertia_ratio, 4.0 / 3.0, 1e-12);
+    // The general formulas at the rectangle's 4/3 are the rectangle's.
+    HousnerBlock rectangle = r.block;
+    rectangle.corner_inertia_ratio = 0.0;
+    EXPECT_NEAR(r.block.p_rad_s(), rectangle.p_rad_s(), 1e-12 * rectangle.p_rad_s());
+    EXPECT_NEAR(r.block.housner_restitution(), rectangle.housner_restitution(), 1e-12);
     const double alpha = r.block.alpha_rad();
     const std::vector<double> ref = housner_peaks(r.block, r.theta0_rad);
     ASSERT_GE(r.dem.theta.size(), 6u);
