@@ -1,0 +1,175 @@
+"""A 3-D run folder (docs/3d.md, "Outputs") read into arrays: history.csv (per body the centroid,
+the turn since t = 0 as a quaternion and a rotation vector, the tilt, the velocity), energy.csv,
+summary.json, scenario.toml and the VTK frames' list."""
+import json
+import tomllib
+from pathlib import Path
+
+import numpy as np
+
+from .run_folder import RunFolderError, _read_csv
+from .vtp_reader import VtpFormatError, read_body_frame, read_collection
+
+
+def run_dimension(folder):
+    """3 for a folder whose summary.json says so, else 2 (also when there is no summary.json:
+    the 2-D reader then says what is missing)."""
+    try:
+        summary = json.loads((Path(folder) / "summary.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return 2
+    return 3 if isinstance(summary, dict) and summary.get("dimension") == 3 else 2
+
+
+def twist_rad(qw, qz):
+    """Rotation about the vertical [rad], counter-clockwise seen from above, unwrapped over time.
+
+    The turn q is split as q = swing * twist, the twist about z applied first and the swing about
+    a horizontal axis after it (the tilt); then twist = 2 atan2(qz, qw) exactly, since a swing has
+    no z part. Unlike the rotation vector's z component it does not mix in the tilt."""
+    sign = np.where(qw < 0.0, -1.0, 1.0)  # q and -q are the same turn
+    return np.unwrap(2.0 * np.arctan2(sign * qz, sign * qw))
+
+
+def azimuth_deg(vector):
+    """The direction of a horizontal vector [deg], from +x towards +y (counter-clockwise seen from
+    above), in [0, 360); None for a zero vector."""
+    x, y = float(vector[0]), float(vector[1])
+    if x == 0.0 and y == 0.0:
+        return None
+    return float(np.degrees(np.arctan2(y, x))) % 360.0
+
+
+class RunFolder3d:
+    """The files of one 3-D run, with the quantities the report shows."""
+
+    def __init__(self, folder):
+        self.path = Path(folder)
+        for name in ("history.csv", "summary.json"):
+            if not (self.path / name).is_file():
+                raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
+        header, data = _read_csv(self.path / "history.csv")
+        if not header or header[0] != "t_s" or data.shape[0] == 0:
+            raise RunFolderError(f"{self.path / 'history.csv'}: no rows, or the first column is not t_s")
+        self.columns = {name: data[:, k] for k, name in enumerate(header)}
+        self.t_s = self.columns["t_s"]
+        self.summary = json.loads((self.path / "summary.json").read_text(encoding="utf-8"))
+        self.bodies = self.summary.get("bodies", [])
+        self.energy = None
+        if (self.path / "energy.csv").is_file():
+            header, data = _read_csv(self.path / "energy.csv")
+            self.energy = {name: data[:, k] for k, name in enumerate(header)}
+        scenario = self.path / "scenario.toml"
+        self.scenario_text = scenario.read_text(encoding="utf-8") if scenario.is_file() else ""
+        try:
+            self.scenario = tomllib.loads(self.scenario_text)
+        except tomllib.TOMLDecodeError:
+            self.scenario = {}
+        self.frames = self._frame_list()
+
+    def _frame_list(self):
+        pvd = self.path / "vtk" / "bodies.pvd"
+        if not pvd.is_file():
+            return []
+        try:
+            return [(t, p) for t, p in read_collection(pvd) if p.is_file()]
+        except VtpFormatError as e:
+            raise RunFolderError(str(e)) from e
+
+    def title(self):
+        return str(self.scenario.get("title", self.path.name))
+
+    # ----- bodies -----
+    def names(self, kind=None):
+        return [b["name"] for b in self.bodies if kind is None or b["kind"] == kind]
+
+    def response(self, name):
+        """The summary.json entry of a body."""
+        return next(b for b in self.bodies if b["name"] == name)
+
+    def kinds_by_index(self):
+        """Each body's kind in the order of summary.json, which is the VTK frames' body index."""
+        return [b["kind"] for b in self.bodies]
+
+    def table_name(self):
+        """A driven body: every driven body follows the table's motion, so any one gives it."""
+        driven = [n for n in self.names("driven") if self.has_series(n)]
+        return driven[0] if driven else None
+
+    def has_series(self, name):
+        return f"{name}.x_m" in self.columns
+
+    def ranked_dynamic(self, limit=None):
+        """Dynamic bodies in history.csv, the largest peak tilt first (the ones to look at)."""
+        names = [n for n in self.names("dynamic") if self.has_series(n)]
+        names.sort(key=lambda n: -self.response(n).get("peak_tilt_rad", 0.0))
+        return names if limit is None else names[:limit]
+
+    # ----- time histories -----
+    def series(self, name, field):
+        """history.csv column <body>.<field> (x_m, y_m, z_m, qw .. qz, rx_rad .. rz_rad, tilt_rad, vx_m_s ..)."""
+        return self.columns[f"{name}.{field}"]
+
+    def table_displacement_m(self, axis):
+        """The table's displacement since t = 0 along x, y or z [m]; zeros with no driven body."""
+        table = self.table_name()
+        if table is None:
+            return np.zeros_like(self.t_s)
+        u = self.series(table, f"{axis}_m")
+        return u - u[0]
+
+    def slip_m(self, name, axis):
+        """Horizontal centroid displacement relative to the table since t = 0 [m] (summary.json's slip_m)."""
+        u = self.series(name, f"{axis}_m")
+        return u - u[0] - self.table_displacement_m(axis)
+
+    def twist_rad(self, name):
+        return twist_rad(self.series(name, "qw"), self.series(name, "qz"))
+
+    def table_acceleration_m_s2(self, axis):
+        """The table's acceleration along x, y or z [m/s^2]: history.csv has its velocity at each
+        output time (exact, from the motion), differentiated here by central differences, so a
+        record is seen through the output interval."""
+        table = self.table_name()
+        v = self.series(table, f"v{axis}_m_s")
+        return np.gradient(v, self.t_s) if len(v) > 1 else np.zeros_like(v)
+
+    # ----- frames -----
+    def frame_near(self, time_s):
+        """The VTK frame nearest to time_s, read; None when no frames were written."""
+        if not self.frames:
+            return None
+        t, path = min(self.frames, key=lambda f: abs(f[0] - time_s))
+        try:
+            return read_body_frame(path, t)
+        except VtpFormatError as e:
+            raise RunFolderError(str(e)) from e
+
+    def picture_times(self):
+        """[(label, time [s])]: the start, the largest peak tilt of a dynamic body, the end."""
+        end = float(self.t_s[-1])
+        times = [("start", 0.0)]
+        ranked = self.ranked_dynamic(1)
+        if ranked and self.response(ranked[0]).get("peak_tilt_rad", 0.0) > 0.0:
+            b = self.response(ranked[0])
+            times.append((f"peak tilt of {b['name']} ({b['peak_tilt_time_s']:.3g} s)", float(b["peak_tilt_time_s"])))
+        times.append(("end", end))
+        return times
+
+    def limitations(self):
+        """What this folder's files cannot show, one sentence each."""
+        notes = []
+        status = self.summary.get("status", "completed")
+        if status != "completed":
+            end = self.summary.get("end_time_s")
+            of = f" of {end:.4g} s" if isinstance(end, (int, float)) else ""
+            notes.append(f"The run is {status} at t = {float(self.t_s[-1]):.4g} s{of}: every plot ends there.")
+        if self.table_name() is None:
+            notes.append("No driven body (table) in history.csv: no table motion plotted, and slips are plotted "
+                         "relative to the ground.")
+        if not self.frames:
+            notes.append("No VTK frames (vtk/bodies.pvd; [output] vtk = false, or 'auto' on a large run): no pictures "
+                         "of the bodies. Set [output] vtk = true to have them.")
+        if self.energy is None:
+            notes.append("No energy.csv: no energy plot.")
+        return notes
