@@ -12,7 +12,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from blockdem_view.convergence_section import study_base_folder  # noqa: E402
 from blockdem_view.report import write_report  # noqa: E402
+from blockdem_view.report_3d import write_report_3d  # noqa: E402
 from blockdem_view.run_folder import RunFolder, RunFolderError  # noqa: E402
+from blockdem_view.run_folder_3d import RunFolder3d, run_dimension  # noqa: E402
 
 
 def main(argv=None):
@@ -24,10 +26,15 @@ def main(argv=None):
     args = parser.parse_args(argv)
     formats = ["png"] + [f for f in args.formats.split(",") if f and f != "png"]
     try:
-        run = RunFolder(study_base_folder(args.folder))
+        folder = study_base_folder(args.folder)
+        # A 3-D run (docs/3d.md): its own page, figures drawn from the VTK frames, no animation file.
+        run = RunFolder3d(folder) if run_dimension(folder) == 3 else RunFolder(folder)
         for note in run.limitations():
             print(f"blockdem report: note: {note}", file=sys.stderr)
-        path = write_report(run, args.blockdem, formats, not args.no_animation)
+        if isinstance(run, RunFolder3d):
+            path = write_report_3d(run, formats)
+        else:
+            path = write_report(run, args.blockdem, formats, not args.no_animation)
     except RunFolderError as e:
         print(f"blockdem_report: {e}", file=sys.stderr)
         return 2

@@ -7,18 +7,8 @@ from pathlib import Path
 
 import numpy as np
 
-from .run_folder import RunFolderError, _read_csv
+from .run_folder import RunFolderError, _read_csv, run_dimension  # noqa: F401 (run_dimension: for callers)
 from .vtp_reader import VtpFormatError, read_body_frame, read_collection
-
-
-def run_dimension(folder):
-    """3 for a folder whose summary.json says so, else 2 (also when there is no summary.json:
-    the 2-D reader then says what is missing)."""
-    try:
-        summary = json.loads((Path(folder) / "summary.json").read_text(encoding="utf-8"))
-    except (OSError, ValueError):
-        return 2
-    return 3 if isinstance(summary, dict) and summary.get("dimension") == 3 else 2
 
 
 def twist_rad(qw, qz):
