@@ -6,6 +6,8 @@ from .drawing_3d import VIEWS, draw_frame, screen_extent
 from .figures import ENERGY_TERMS, KIND_COLOURS, STYLE, WIDTH_IN, WORK_TERMS, plt, save
 
 MAX_CURVES = 6  # bodies per time-history panel: the largest peak tilts
+MAX_VECTOR_FACES = 20000  # above (faces a frame, times 12 panels), the pictures are PNG only: an
+                          # SVG of 1e5 polygons or more is many MB and slow in any viewer
 
 
 def _legend_below(fig, ax, count):
@@ -105,6 +107,8 @@ def snapshot_figure(run, folder, formats):
     kinds = run.kinds_by_index()
     frames = [f for _, f in chosen]
     edge = 0.3 if len(frames[0].offsets) < 5000 else 0.1
+    if len(frames[0].offsets) > MAX_VECTOR_FACES:
+        formats = ["png"]
     with plt.rc_context(STYLE):
         fig, axes = plt.subplots(len(chosen), len(VIEWS), squeeze=False,
                                  figsize=(WIDTH_IN * 1.5, 0.6 + 2.4 * len(chosen)))

@@ -10,6 +10,8 @@ import numpy as np
 from .run_folder import RunFolderError, _read_csv, run_dimension  # noqa: F401 (run_dimension: for callers)
 from .vtp_reader import VtpFormatError, read_body_frame, read_collection
 
+MAX_READ = 60  # bodies whose history.csv columns are read (the largest peak tilts), besides the table
+
 
 def twist_rad(qw, qz):
     """Rotation about the vertical [rad], counter-clockwise seen from above, unwrapped over time.
@@ -38,13 +40,10 @@ class RunFolder3d:
         for name in ("history.csv", "summary.json"):
             if not (self.path / name).is_file():
                 raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
-        header, data = _read_csv(self.path / "history.csv")
-        if not header or header[0] != "t_s" or data.shape[0] == 0:
-            raise RunFolderError(f"{self.path / 'history.csv'}: no rows, or the first column is not t_s")
-        self.columns = {name: data[:, k] for k, name in enumerate(header)}
-        self.t_s = self.columns["t_s"]
         self.summary = json.loads((self.path / "summary.json").read_text(encoding="utf-8"))
         self.bodies = self.summary.get("bodies", [])
+        self.columns = self._read_history(self.path / "history.csv")
+        self.t_s = self.columns["t_s"]
         self.energy = None
         if (self.path / "energy.csv").is_file():
             header, data = _read_csv(self.path / "energy.csv")
@@ -56,6 +55,25 @@ class RunFolder3d:
         except tomllib.TOMLDecodeError:
             self.scenario = {}
         self.frames = self._frame_list()
+
+    def _read_history(self, path):
+        """history.csv's columns, of every body on a run of up to MAX_READ bodies; above, of the
+        table and of the MAX_READ largest peak tilts only (a 1e4-body run writes 15 columns a
+        body: parsing them all would take most of the report's time and memory)."""
+        with open(path, encoding="utf-8") as f:
+            header = f.readline().strip().split(",")
+        if not header or header[0] != "t_s":
+            raise RunFolderError(f"{path}: the first column is not t_s")
+        dynamic = sorted((b for b in self.bodies if b.get("kind") == "dynamic"), key=lambda b: -b.get("peak_tilt_rad", 0.0))
+        wanted = None
+        if len(dynamic) > MAX_READ:
+            names = {b["name"] for b in dynamic[:MAX_READ]} | {b["name"] for b in self.bodies if b.get("kind") == "driven"}
+            wanted = [k for k, c in enumerate(header) if k == 0 or c.rsplit(".", 1)[0] in names]
+        data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2, usecols=wanted)
+        if data.shape[0] == 0:
+            raise RunFolderError(f"{path}: no rows")
+        names = header if wanted is None else [header[k] for k in wanted]
+        return {name: data[:, k] for k, name in enumerate(names)}
 
     def _frame_list(self):
         pvd = self.path / "vtk" / "bodies.pvd"
