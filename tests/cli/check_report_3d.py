@@ -8,6 +8,7 @@
   (to the 9 digits the writer keeps), 6 faces a box, kinds in summary.json's order;
 - the lean direction and the tilt, measured on the frame nearest the peak from the slender
   block's own corners, agree with the table and with the writer's tilt_rad;
+- a frame in another format, or with counts that do not match, is refused naming the file;
 - the twist of a made-up turn (a twist about z, then a swing about a horizontal axis) is the
   twist, also past pi;
 - the figures exist and are in the page; the plots end where history.csv ends.
@@ -24,6 +25,7 @@ import numpy as np
 run_dir, tools = Path(sys.argv[1]), Path(sys.argv[2])
 sys.path.insert(0, str(tools))
 from blockdem_view.run_folder_3d import RunFolder3d, azimuth_deg, twist_rad  # noqa: E402
+from blockdem_view.vtp_reader import VtpFormatError, read_body_frame  # noqa: E402
 
 failures = []
 
@@ -148,6 +150,20 @@ for angle in (0.3, -1.2, 2.9):
     check(np.allclose(got, angle, atol=1e-12), f"twist of a made-up turn: {got}, expected {angle}")
 ramp = np.linspace(0.0, 9.0, 200)
 check(np.allclose(twist_rad(np.cos(ramp / 2), np.sin(ramp / 2)), ramp, atol=1e-12), "twist is not unwrapped past pi")
+
+# A frame the reader cannot read is refused naming the file: binary data, a polygon count that
+# does not match the offsets.
+text = run.frames[0][1].read_text(encoding="utf-8")
+for label, bad in (("binary", text.replace('format="ascii"', 'format="binary"', 1)),
+                   ("count", re.sub(r'NumberOfPolys="\d+"', 'NumberOfPolys="5"', text))):
+    path = run_dir / f"bad_{label}.vtp"
+    path.write_text(bad, encoding="utf-8")
+    try:
+        read_body_frame(path, 0.0)
+        failures.append(f"{label}: a bad frame was read")
+    except VtpFormatError as e:
+        check(str(path) in str(e), f"{label}: the error does not name the file: {e}")
+    path.unlink()
 
 for stem in ("snapshots", "response", "table_motion", "energy"):
     check((run_dir / "figures" / f"{stem}.png").is_file(), f"no figures/{stem}.png")
