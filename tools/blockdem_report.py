@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Writes OUT_DIR/report.html (and the figures in OUT_DIR/figures/) for a blockdem run folder.
+"""Writes OUT_DIR/report.html (and the figures in OUT_DIR/figures/) for a blockdem run folder, 2-D or
+3-D (summary.json "dimension": 3: report_3d.py, docs/3d.md).
 Usually called by `blockdem report OUT_DIR`; run it with Debian's Python:
 
   /usr/bin/python3 tools/blockdem_report.py OUT_DIR [--blockdem build/blockdem] [--no-animation]
@@ -13,8 +14,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from blockdem_view.convergence_section import study_base_folder  # noqa: E402
 from blockdem_view.report import write_report  # noqa: E402
 from blockdem_view.report_3d import write_report_3d  # noqa: E402
-from blockdem_view.run_folder import RunFolder, RunFolderError  # noqa: E402
-from blockdem_view.run_folder_3d import RunFolder3d, run_dimension  # noqa: E402
+from blockdem_view.run_folder import RunFolder, RunFolderError, run_dimension  # noqa: E402
+from blockdem_view.run_folder_3d import RunFolder3d  # noqa: E402
 
 
 def main(argv=None):

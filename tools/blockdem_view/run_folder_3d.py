@@ -7,7 +7,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .run_folder import RunFolderError, _read_csv, run_dimension  # noqa: F401 (run_dimension: for callers)
+from .run_folder import RunFolderError, _read_csv
 from .vtp_reader import VtpFormatError, read_body_frame, read_collection
 
 MAX_READ = 60  # bodies whose history.csv columns are read (the largest peak tilts), besides the table
