@@ -17,6 +17,14 @@ out=$tmp/topple
 "$bin" report "$out" > "$tmp/report.log" 2>&1 || fail "report: $(tail -3 "$tmp/report.log")"
 /usr/bin/python3 "$src/tests/cli/check_report_3d.py" "$out" "$src/tools" || fail "the report against the run's files"
 grep -q "What this report cannot show" "$out/report.html" && fail "a complete 3-D run has nothing to declare"
+# The page's script draws every zoomable plot (headless Chromium, where Debian's is installed).
+if [ -x /usr/bin/chromium ] && [ -f /usr/share/javascript/dygraphs/dygraph.min.js ]; then
+  plots=$(/usr/bin/python3 -c 'import json, re, sys
+page = open(sys.argv[1], encoding="utf-8").read()
+print(len(json.loads(re.search(r"id=\"report-data\">(.*?)</script>", page, re.S).group(1))["plots"]))' "$out/report.html")
+  timeout 120 /usr/bin/chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=5000 --dump-dom \
+    "file://$out/report.html" 2>/dev/null | grep -q "data-plots-drawn=\"$plots\"" || fail "the page did not draw its $plots plots"
+fi
 
 # No VTK frames: no pictures, said on stderr and in the page; everything else is there.
 bare=$tmp/bare

@@ -26,4 +26,5 @@
     });
   }
   window.blockdemReport = { ready: true, graphs: graphs.length };
+  document.body.dataset.plotsDrawn = String(graphs.length);  // read back by tests/cli/test_report_3d.sh
 })();
