@@ -93,13 +93,13 @@ def _limits(frames, kinds, camera, margin=0.12):
 
 
 def snapshot_figure(run, folder, formats):
-    """The bodies at the start, at the largest peak tilt and at the end (the nearest VTK frames),
-    each in the axonometric view, the plan and two elevations."""
+    """The bodies at the start, at the largest peak tilt and at the end (the first VTK frame posed
+    from history.csv, run.bodies_at), each in the axonometric view, the plan and two elevations."""
     if not run.frames:
         return []
     chosen = []  # (label, frame), a frame drawn once even when two labels fall on it
     for label, time_s in run.picture_times():
-        frame = run.frame_near(time_s)
+        frame = run.bodies_at(time_s)
         if chosen and chosen[-1][1].time_s == frame.time_s:
             chosen[-1] = (chosen[-1][0] + " and " + label, frame)
         else:
@@ -124,7 +124,7 @@ def snapshot_figure(run, folder, formats):
                     ax.set_xticks([])
                     ax.set_yticks([])
                 ax.set_title(f"{name}\n{label}, t = {frame.time_s:.3g} s" if column == 0 else name)
-        fig.suptitle(f"{run.title()}: the bodies (VTK frames)")
+        fig.suptitle(f"{run.title()}: the bodies")
         return save(fig, folder, "snapshots", formats)
 
 

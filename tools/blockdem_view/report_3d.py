@@ -147,7 +147,8 @@ def plot_data(run):
 
 
 FIGURE_CAPTIONS = {
-    "snapshots": "The bodies at the start, at the largest peak tilt and at the end (the nearest VTK frames): "
+    "snapshots": "The bodies at the start, at the largest peak tilt and at the end (the VTK faces posed from "
+                 "history.csv): "
                  "axonometric, plan and two elevations; red dynamic, blue driven (table), grey fixed.",
     "response": f"Tilt, slip along x and y relative to the table, and twist (the {MAX_CURVES} largest peak tilts).",
     "table_motion": "The table's acceleration, x and y horizontal, z vertical.",

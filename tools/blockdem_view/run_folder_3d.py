@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from .run_folder import RunFolderError, _read_csv
-from .vtp_reader import VtpFormatError, read_body_frame, read_collection
+from .vtp_reader import BodyFrame, VtpFormatError, read_body_frame, read_collection
 
 MAX_READ = 60  # bodies whose history.csv columns are read (the largest peak tilts), besides the table
 
@@ -21,6 +21,14 @@ def twist_rad(qw, qz):
     no z part. Unlike the rotation vector's z component it does not mix in the tilt."""
     sign = np.where(qw < 0.0, -1.0, 1.0)  # q and -q are the same turn
     return np.unwrap(2.0 * np.arctan2(sign * qz, sign * qw))
+
+
+def rotate(q, v):
+    """Each row of v (n x 3) turned by the unit quaternion in the same row of q (n x 4, w first):
+    v + 2 w (u x v) + 2 u x (u x v), with u the vector part."""
+    w, u = q[:, :1], q[:, 1:]
+    uv = np.cross(u, v)
+    return v + 2.0 * w * uv + 2.0 * np.cross(u, uv)
 
 
 def azimuth_deg(vector):
@@ -152,6 +160,34 @@ class RunFolder3d:
             return read_body_frame(path, t)
         except VtpFormatError as e:
             raise RunFolderError(str(e)) from e
+
+    def bodies_at(self, time_s):
+        """The bodies at the history row nearest time_s: the first frame's faces moved by each body's
+        centroid and turn since t = 0 from history.csv (a corner at t is x(t) + R(q(t)) (corner at
+        0 - x(0))), so that a picture shows the peak tilt itself, not the frame up to half a frame
+        interval away. The nearest frame where a moving body's columns were not read (large runs)
+        or the first frame is not at t = 0; None with no frames."""
+        if not self.frames:
+            return None
+        moving = [k for k, b in enumerate(self.bodies) if b["kind"] != "fixed"]
+        if self.frames[0][0] != 0.0 or not all(self.has_series(self.bodies[k]["name"]) for k in moving):
+            return self.frame_near(time_s)
+        first = self.frame_near(0.0)
+        row = int(np.argmin(np.abs(self.t_s - time_s)))
+        count = len(self.bodies)
+        start, now = np.zeros((count, 3)), np.zeros((count, 3))
+        turn, tilt = np.tile([1.0, 0.0, 0.0, 0.0], (count, 1)), np.zeros(count)
+        for k in moving:
+            name = self.bodies[k]["name"]
+            start[k] = [self.series(name, f"{a}_m")[0] for a in "xyz"]
+            now[k] = [self.series(name, f"{a}_m")[row] for a in "xyz"]
+            turn[k] = [self.series(name, c)[row] for c in ("qw", "qx", "qy", "qz")]
+            tilt[k] = self.series(name, "tilt_rad")[row]
+        body_of_point = np.zeros(len(first.points_m), dtype=int)
+        body_of_point[first.connectivity] = np.repeat(first.face_body(), first.face_sizes())
+        points = now[body_of_point] + rotate(turn[body_of_point], first.points_m - start[body_of_point])
+        cells = {"body": first.cell_data["body"], "tilt_rad": tilt[first.face_body()]}
+        return BodyFrame(float(self.t_s[row]), points, first.connectivity, first.offsets, cells)
 
     def picture_times(self):
         """[(label, time [s])]: the start, the largest peak tilt of a dynamic body, the end."""
