@@ -20,8 +20,8 @@ PolygonView part_view(const Bodies& b, std::uint32_t part) {
 }
 
 // How far the open end of a per-length joint's two-point (edge-to-edge) contact may be apart
-// and the pair still keep it, as a point carrying nothing [m] (0 for other pairs). Why: the
-// per-length law gives each end of an edge contact half the face and a lone corner point 0.1
+// and the pair still keep it, as a point carrying nothing [m] (0 for its other pairs). Why:
+// the per-length law gives each end of an edge contact half the face and a lone corner point 0.1
 // of the least width (laws/mohr_coulomb_joint.hpp), so a face whose end flickers about zero
 // overlap (bricks laid exactly touching: a head joint at rest) jumped its stiffness five-fold
 // at every flicker; the energy each jump made or took never came to rest (a wall at rest on a
@@ -29,8 +29,8 @@ PolygonView part_view(const Bodies& b, std::uint32_t part) {
 // test_jointed_wall_at_rest.cpp). Kept up to joint_face_keep_fraction of the thinner body's
 // least width, and taken back as a face only when both ends touch again, the pair changes its
 // point count on a real opening or closing, once, not at every step.
-double joint_face_gap_m(const Bodies& b, const PairContact& pair, const ContactParameters& params) {
-    if (pair.count != 2 || params.stiffness != StiffnessBasis::per_length) return 0.0;
+double joint_face_gap_m(const Bodies& b, const PairContact& pair) {
+    if (pair.count != 2) return 0.0;
     return joint_face_keep_fraction * std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
 }
 
@@ -42,11 +42,14 @@ struct KeptGap {
     bool face_kept = false;
 };
 
-KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p) {
+inline KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p) {
     KeptGap kept;
     if (pair.count == 0) return kept;
     const Bodies& b = w.bodies;
     const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
+    // (Bonds and dilation exist only on per-length joints: bonded_pairs.cpp, the scenario
+    // reader; a per-point pair's points never hold either.)
+    if (params.stiffness != StiffnessBasis::per_length) return kept;
     // A bonded joint holds its points while it opens by less than its gap (bonded_pairs.hpp),
     // or by the interior points of its sub-contacts (contact/sub_contacts.hpp).
     if (has_intact_bond(pair))
@@ -60,7 +63,7 @@ KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p) {
     // A dilated joint point pushes while the faces are apart by less than its dilation.
     if (w.contact.any_dilation) [[unlikely]]
         kept.gap_m = std::max(kept.gap_m, dilated_gap_m(pair));
-    kept.gap_m = std::max(kept.gap_m, joint_face_gap_m(b, pair, params));
+    kept.gap_m = std::max(kept.gap_m, joint_face_gap_m(b, pair));
     return kept;
 }
 
