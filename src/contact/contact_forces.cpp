@@ -45,14 +45,15 @@ DashpotCoefficients joint_dashpots(const ContactParameters& p, const JointPoint&
     return {2.0 * p.h_n * std::sqrt(mass_kg * joint.kn_N_m), 2.0 * p.h_s * std::sqrt(mass_kg * joint.ks_N_m)};
 }
 
-// The two bodies of a pair as the joint law reads them, loaded once per pair: the points'
-// writes could alias the body arrays as far as the compiler knows, so read through Bodies
-// they were loaded again at every point.
+// The two bodies of a pair as the joint law reads them: their entries, found once per pair.
+// (References, not copies: a copy per pair was spilled and copied again by the compiler.)
 struct PairMotion {
-    Vec2 position_a_m, position_b_m;          ///< [m]
-    Vec2 velocity_a_m_s, velocity_b_m_s;      ///< [m/s]
-    double angular_velocity_a_rad_s = 0.0;    ///< [rad/s]
-    double angular_velocity_b_rad_s = 0.0;    ///< [rad/s]
+    const Vec2& position_a_m;             ///< [m]
+    const Vec2& position_b_m;             ///< [m]
+    const Vec2& velocity_a_m_s;           ///< [m/s]
+    const Vec2& velocity_b_m_s;           ///< [m/s]
+    const double& angular_velocity_a_rad_s;  ///< [rad/s]
+    const double& angular_velocity_b_rad_s;  ///< [rad/s]
 };
 
 PairMotion pair_motion(const Bodies& b, std::uint32_t ia, std::uint32_t ib) {
@@ -62,7 +63,7 @@ PairMotion pair_motion(const Bodies& b, std::uint32_t ia, std::uint32_t ib) {
 
 // What one pass of the per-length law over a pair shares between its points.
 struct JointPass {
-    PairMotion motion;
+    const PairMotion& motion;
     Vec2 n, t;
     const ContactParameters& params;
     double dt_s;
@@ -176,8 +177,10 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const std::uint32_t points = sub != nullptr && pair.count == 2 ? sub_contacts : pair.count;
-    ContactEnergy energy = points > 2 ? place_interior_points(b, pair, *sub, points, dt_s) : ContactEnergy();
-    const JointPass pass{pair_motion(b, ia, ib), pair.normal, perp(pair.normal), stored, dt_s};
+    ContactEnergy energy;
+    if (points > 2) energy = place_interior_points(b, pair, *sub, points, dt_s);
+    const PairMotion motion = pair_motion(b, ia, ib);
+    const JointPass pass{motion, pair.normal, perp(pair.normal), stored, dt_s};
     const JointPoint joint = end_joint_point(b, pair, stored, rounding_m, points);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const double end_share = pair.count == 2 ? 2.0 * (points - 1) : 1.0;
