@@ -171,7 +171,7 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
 // pair_law so that the per-point law's loop is what it was. mass_sharing_points: the active
 // points of the body pair over all its part pairs (concave bodies), pair.count otherwise.
 // (Flattened, as joint_point_step: the ends' points in one body of code.)
-[[gnu::noinline, gnu::flatten]] ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
+[[gnu::flatten]] inline ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
                                                  std::uint32_t sub_contacts, SubContacts* sub, double dt_s,
                                                  std::uint32_t mass_sharing_points, PairForces& out) {
     const std::uint32_t ia = pair.a;
@@ -201,6 +201,14 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
     return energy;
 }
 
+// joint_pair_law out of line, for pair_law: kept apart from it so that the per-point law's loop
+// is what it was.
+[[gnu::noinline]] ContactEnergy joint_pair_law_apart(PairContact& pair, const Bodies& b, const ContactParameters& stored,
+                                                     double rounding_m, std::uint32_t sub_contacts, SubContacts* sub,
+                                                     double dt_s, std::uint32_t mass_sharing_points, PairForces& out) {
+    return joint_pair_law(pair, b, stored, rounding_m, sub_contacts, sub, dt_s, mass_sharing_points, out);
+}
+
 // The law at every point of one pair: updates the points' forces and history, and writes what
 // they add to the two bodies into the pair's own slot (no shared sums: parallel.hpp, rule 1).
 // Returns the pair's share of the ledger: this step's dissipation and the springs' energy now.
@@ -213,7 +221,7 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
     const std::uint32_t ib = pair.b;
     const ContactParameters& stored = contact.at(b.material[ia], b.material[ib]);
     if (stored.stiffness == StiffnessBasis::per_length)
-        return joint_pair_law(pair, b, stored, contact.rounding_m, contact.sub_contacts, sub, dt_s, mass_sharing_points, out);
+        return joint_pair_law_apart(pair, b, stored, contact.rounding_m, contact.sub_contacts, sub, dt_s, mass_sharing_points, out);
     const ContactParameters params = softened(stored, pair.stiffness_scale);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / mass_sharing_points);
@@ -328,6 +336,33 @@ ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing
     SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
     ContactEnergy energy = pair_law(pair, w.bodies, w.contact, sub, w.dt_s, mass_sharing_points, w.pair_forces[p]);
     // Interior points exist only while the pair has its two ends (contact/sub_contacts.hpp).
+    if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
+        energy += dropped_sub_points_work(w.bodies, pair, sub->normal, drop_sub_points(*sub), w.dt_s);
+    if (opened.count > 0) energy += opened_points_work(w, pair, opened);
+    energy.deepest_pair = static_cast<std::uint32_t>(p);
+    return energy;
+}
+
+bool every_pair_per_length(const MaterialPairs& contact) {
+    for (const ContactParameters& params : contact.parameters)
+        if (params.stiffness != StiffnessBasis::per_length) return false;
+    return !contact.parameters.empty();
+}
+
+// apply_pair_law with pair_law's per-length branch taken, in one body of code (flattened).
+[[gnu::flatten]] ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
+                                                    const OpenedPoints& opened) {
+    PairContact& pair = w.contacts[p];
+    SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
+    PairForces& out = w.pair_forces[p];
+    out.count = pair.count;
+    ContactEnergy energy;
+    if (pair.count > 0) {
+        const ContactParameters& stored = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
+        energy = joint_pair_law(pair, w.bodies, stored, w.contact.rounding_m, w.contact.sub_contacts, sub, w.dt_s,
+                                mass_sharing_points, out);
+    }
+    // (The rest as apply_pair_law.)
     if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
         energy += dropped_sub_points_work(w.bodies, pair, sub->normal, drop_sub_points(*sub), w.dt_s);
     if (opened.count > 0) energy += opened_points_work(w, pair, opened);
