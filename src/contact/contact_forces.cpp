@@ -147,19 +147,25 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
 }
 
 // The law at the interior points of a pair with sub-contacts: twice an end's tributary length,
-// stiffness and mass share; their forces go to the first end's slot. Out of line: most joints
-// have none, and inlined, its point arrays crowded the ends' loop off the registers.
-[[gnu::noinline, gnu::flatten]] void interior_points_law(const JointPass& pass, SubContacts& sub, const JointPoint& end,
-                                                         double reduced_mass_kg, double end_share,
-                                                         ContactEnergy& energy, PairForces& out) {
+// stiffness and mass share; their forces go to the first end's slot. Returns energy with their
+// terms added. Out of line: most joints have none, and inlined, its point arrays crowded the
+// ends' loop off the registers. (The pass and the energy go by value: by reference they would
+// have to live in memory through the ends' loop.)
+[[gnu::noinline, gnu::flatten]] ContactEnergy interior_points_law(const Bodies& b, const PairContact& pair,
+                                                                  const ContactParameters& params, double dt_s,
+                                                                  SubContacts& sub, JointPoint end, double reduced_mass_kg,
+                                                                  double end_share, ContactEnergy energy, PairForces& out) {
+    const PairMotion motion = pair_motion(b, pair.a, pair.b);
+    const JointPass pass{motion, pair.normal, perp(pair.normal), params, dt_s};
     const JointPoint inner{2.0 * end.kn_N_m, 2.0 * end.ks_N_m, 2.0 * end.area_m2};
-    const DashpotCoefficients inner_dash = joint_dashpots(pass.params, inner, 2.0 * reduced_mass_kg / end_share);
+    const DashpotCoefficients inner_dash = joint_dashpots(params, inner, 2.0 * reduced_mass_kg / end_share);
     for (std::uint32_t k = 0; k < sub.count; ++k) {
         const PointLoad load = joint_point_step(pass, sub.points[k], inner, inner_dash, energy);
         out.on_b_n[0] += load.on_b_n;
         out.torque_on_b_n_m[0] += load.on_b_n_m;
         out.torque_on_a_n_m[0] += load.on_a_n_m;
     }
+    return energy;
 }
 
 // The per-length joint at every point of one pair (laws/mohr_coulomb_joint.hpp): each point
@@ -196,7 +202,7 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
         out.torque_on_a_n_m[k] = load.on_a_n_m;
         deepest_m = std::max(deepest_m, pair.points[k].overlap_m);
     }
-    if (points > 2) interior_points_law(pass, *sub, joint, reduced_mass, end_share, energy, out);
+    if (points > 2) energy = interior_points_law(b, pair, stored, dt_s, *sub, joint, reduced_mass, end_share, energy, out);
     energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
     return energy;
 }
