@@ -67,7 +67,7 @@ bool every_pair_per_length(const MaterialPairs& contact);
 
 /// apply_pair_law for a world whose material pairs all have per-length stiffness: the same
 /// results, without the per-point law's branch (the joint law in one body of code with the
-/// pair's bookkeeping, which saved a bonded wall 1.5 % of its step: docs/performance.md).
+/// pair's bookkeeping, which saved a bonded wall 1 % of its step: docs/performance.md).
 ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
                                    const OpenedPoints& opened = OpenedPoints());
 
