@@ -214,11 +214,16 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
         const double slack = 1e-9 * dot(side, side);
         const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
         clipped.clear();
+        // Each corner's height over the side plane once (a corner is "here" once and "next" once).
+        auto& heights = scratch.heights_m2;
+        heights.resize(polygon.size());
+        for (std::size_t i = 0; i < polygon.size(); ++i) heights[i] = dot(side, polygon[i].point_m) - plane;
         for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const std::size_t i_next = i + 1 == polygon.size() ? 0 : i + 1;
             const ClipCorner3d& here = polygon[i];
-            const ClipCorner3d& next = polygon[(i + 1) % polygon.size()];
-            const double dh = dot(side, here.point_m) - plane;
-            const double dn = dot(side, next.point_m) - plane;
+            const ClipCorner3d& next = polygon[i_next];
+            const double dh = heights[i];
+            const double dn = heights[i_next];
             const bool here_in = dh <= slack;
             if (here_in) clipped.push_back(here);
             if (here_in == (dn <= slack)) continue;
@@ -231,7 +236,9 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
             } else {  // two reference sides meet: a corner of the reference face inside the incident face
                 const std::size_t u = ref_corners[k];
                 const std::size_t v = ref_corners[(k + 1) % m];
-                const bool nearer_u = length(c.point_m - p0) <= length(c.point_m - p1);
+                const Vec3 to_u = c.point_m - p0;
+                const Vec3 to_v = c.point_m - p1;
+                const bool nearer_u = dot(to_u, to_u) <= dot(to_v, to_v);
                 c.feature_reference = feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(nearer_u ? u : v));
                 c.feature_incident = feature_3d(FeatureKind3d::face, inc_face);
             }

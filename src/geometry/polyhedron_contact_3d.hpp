@@ -73,6 +73,7 @@ struct ClipCorner3d {
 struct ContactScratch3d {
     std::vector<ClipCorner3d> polygon;
     std::vector<ClipCorner3d> clipped;
+    std::vector<double> heights_m2;  ///< [m^2] the corners' heights over a side plane, times the side's length
 };
 
 /// Appends the contact points of a and b to out, sorted by (feature_a, feature_b); returns how
