@@ -119,18 +119,22 @@ EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const
     EdgeAxis best;
     const Vec3 ha = a.box->half_lengths_m;
     const Vec3 hb = b.box->half_lengths_m;
+    const double half_a[3] = {ha.x, ha.y, ha.z};
+    const double half_b[3] = {hb.x, hb.y, hb.z};
     for (std::uint32_t i = 0; i < 3; ++i) {
         for (std::uint32_t j = 0; j < 3; ++j) {
             Vec3 axis = cross(a.directions[i], b.directions[j]);
             const double l = length(axis);
             if (l < 1e-6) continue;  // parallel edges: their plane's normal is a face axis already tested
-            axis = (1.0 / l) * axis;
-            const double reach_a = ha.x * std::abs(dot(a.directions[0], axis)) +
-                                   ha.y * std::abs(dot(a.directions[1], axis)) +
-                                   ha.z * std::abs(dot(a.directions[2], axis));
-            const double reach_b = hb.x * std::abs(dot(b.directions[0], axis)) +
-                                   hb.y * std::abs(dot(b.directions[1], axis)) +
-                                   hb.z * std::abs(dot(b.directions[2], axis));
+            const double inverse_l = 1.0 / l;
+            axis = inverse_l * axis;
+            // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index (the
+            // directions are perpendicular unit vectors), and likewise for b: the dots already taken.
+            const std::uint32_t i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const double reach_a =
+                inverse_l * (half_a[i1] * std::abs(pair.dots[i2][j]) + half_a[i2] * std::abs(pair.dots[i1][j]));
+            const double reach_b =
+                inverse_l * (half_b[j1] * std::abs(pair.dots[i][j2]) + half_b[j2] * std::abs(pair.dots[i][j1]));
             const double centre = dot(axis, pair.offset_m);
             const double along = centre - reach_a - reach_b;     // b beyond a along +axis
             const double against = -centre - reach_a - reach_b;  // b beyond a along -axis
@@ -288,7 +292,7 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
         return x.feature_a != y.feature_a ? x.feature_a < y.feature_a : x.feature_b < y.feature_b;
     };
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
-    std::sort(begin, out.end(), key_less);
+    if (!std::is_sorted(begin, out.end(), key_less)) std::sort(begin, out.end(), key_less);
     // A key twice (a reference corner found from both its sides): the first stands for it.
     out.erase(std::unique(begin, out.end(),
                           [](const ContactGeometry3d& x, const ContactGeometry3d& y) {
