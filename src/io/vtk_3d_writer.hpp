@@ -8,6 +8,7 @@
 // ASCII, as the 2-D writer (io/vtk_writer.hpp). Frames at the first step at or after each
 // multiple of the frame interval.
 #include <filesystem>
+#include <utility>
 #include <vector>
 
 #include "world/response_monitor_3d.hpp"
@@ -23,6 +24,10 @@ public:
     /// Writes bodies.pvd.
     void finish();
     std::size_t frames_written() const { return times_s_.size(); }
+    /// [s] the frames' times, in order (a state file keeps them).
+    const std::vector<double>& frame_times_s() const { return times_s_; }
+    /// A restarted run: the frames written before its state stay listed, the next is numbered after them.
+    void continue_after(std::vector<double> times_s) { times_s_ = std::move(times_s); }
 
 private:
     std::filesystem::path dir_;
