@@ -5,8 +5,8 @@
 //   bodies_NNNNNN.vtp  the faces of every body at one time, cell data per face: body (index),
 //                      tilt_rad and speed_m_s of its body;
 //   bodies.pvd         the frames with their times, so that ParaView plays them as a series.
-// ASCII, as the 2-D writer (io/vtk_writer.hpp). Frames at the first step at or after each
-// multiple of the frame interval.
+// ASCII, as the 2-D writer (io/vtk_writer.hpp). The run calls record at its output times; a
+// frame is taken at the first of them at or after each multiple of the frame interval.
 #include <filesystem>
 #include <utility>
 #include <vector>
