@@ -77,5 +77,11 @@ out=$("$bin" run --restart "$state" "$wall" --out "$tmp/bad2" -q 2>&1); status=$
 [[ $status -eq 2 ]] || fail "state of another scenario: exit status $status, expected 2: $out"
 expect_in "$out" "does not belong to scenario"
 
+"$bin" run "$src/examples/paper/sliding.toml" --out "$tmp/flat" --set simulation.duration=0.2 --save-state 0.1 -q >"$tmp/log" 2>&1 \
+  || fail "the 2-D run failed: $(cat "$tmp/log")"
+out=$("$bin" run --restart "$tmp/flat/state/t_0.100000s.h5" "$drums" --out "$tmp/bad3" -q 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "2-D state, 3-D scenario: exit status $status, expected 2: $out"
+expect_in "$out" "a 2-D state: scenario"
+
 if [[ $failures -gt 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "test_restart_3d: all passed"
