@@ -1,6 +1,6 @@
 #pragma once
 // What a run does around its loop (world/simulation.hpp), the same in both dimensions
-// (run/scenario_run.cpp for 2-D, run/run_scenario_3d.cpp for 3-D): the steps of the state files
+// (run/scenario_run.cpp for 2-D, run/scenario_run_3d.cpp for 3-D): the steps of the state files
 // asked for, the name of each, run_info.json, the scenario compared without its duration, and a
 // restart's VTK frames taken into a new folder.
 #include <algorithm>

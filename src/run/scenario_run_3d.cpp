@@ -91,6 +91,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
             {"dt_above_live_limit_from_s",
              watch.first_exceeded_s >= 0.0 ? nlohmann::json(watch.first_exceeded_s) : nlohmann::json(nullptr)}}}}}};
     if (const std::string warning = live_time_step_warning_3d(w); !warning.empty()) summary["warnings"].push_back(warning);
+    if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;
     if (!error.empty()) summary["error"] = error;
     return summary;
 }
