@@ -20,13 +20,19 @@ same_results() {  # LABEL DIR1 DIR2
   done
 }
 
-# 1. The drum column, 0.2 s, whole and cut at 0.1 s (a new folder for the second half).
+# 1. The drum column, 0.2 s, whole and cut at 0.1 s (--save-state) and at 0.15 s (--save-state-every
+# 0.075), each time into a new folder.
 drums="$src/examples/3d/drum_column.toml"
 "$bin" run "$drums" --out "$tmp/whole" --set simulation.duration=0.2 -q --threads 1 >"$tmp/log" 2>&1 \
   || fail "the whole drum run failed: $(cat "$tmp/log")"
-"$bin" run "$drums" --out "$tmp/first" --set simulation.duration=0.2 --save-state 0.1 -q --threads 1 >"$tmp/log" 2>&1 \
-  || fail "the saving drum run failed: $(cat "$tmp/log")"
-[[ -s "$tmp/first/state/t_0.100000s.h5" ]] || fail "no state file at 0.1 s: $(ls "$tmp/first" "$tmp/first/state" 2>&1)"
+"$bin" run "$drums" --out "$tmp/first" --set simulation.duration=0.2 --save-state 0.1 --save-state-every 0.075 -q \
+  --threads 1 >"$tmp/log" 2>&1 || fail "the saving drum run failed: $(cat "$tmp/log")"
+for t in 0.075000 0.100000 0.150000; do
+  [[ -s "$tmp/first/state/t_${t}s.h5" ]] || fail "no state file at $t s: $(ls "$tmp/first" "$tmp/first/state" 2>&1)"
+done
+"$bin" run --restart "$tmp/first/state/t_0.150000s.h5" --out "$tmp/third" -q --threads 1 >"$tmp/log" 2>&1 \
+  || fail "the drum run restarted at 0.15 s failed: $(cat "$tmp/log")"
+same_results "drums restarted at 0.15 s (--save-state-every)" "$tmp/whole" "$tmp/third"
 "$bin" run --restart "$tmp/first/state/t_0.100000s.h5" --out "$tmp/second" -q --threads 1 >"$tmp/log" 2>&1 \
   || fail "the restarted drum run failed: $(cat "$tmp/log")"
 same_results "drums restarted at 0.1 s" "$tmp/whole" "$tmp/second"
