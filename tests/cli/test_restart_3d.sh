@@ -3,8 +3,9 @@
 # restarted from its state file to T write byte-identical history.csv, energy.csv and
 # summary.json (the drum column example under its three-component record, and a brick wall on 2
 # threads; a state of --save-state-every too); a run interrupted by SIGINT resumes in place from
-# the state it wrote as it stopped and ends as a run straight to the same time; a 3-D state given a 2-D scenario, a state of another
-# scenario and a 2-D state given to a 3-D scenario are refused with exit 2, naming the file.
+# the state it wrote as it stopped and ends as a run straight to the same time; a 3-D state
+# given a 2-D scenario, a state of another scenario and a 2-D state given to a 3-D scenario are
+# refused with exit 2, naming the file.
 # Usage: test_restart_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$(realpath "$1"); src=$(realpath "$2")
