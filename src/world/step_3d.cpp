@@ -220,7 +220,7 @@ struct BodyTotals {
 
 }  // namespace
 
-void step_3d(World3d& w) {
+void step_begin(World3d& w) {
     const double dt = w.dt_s;
     const double t = w.time_s;
     const Vec3 d_now = table_displacement(w.table, t);
@@ -256,7 +256,11 @@ void step_3d(World3d& w) {
         ledger.initial_gravitational_j = ledger.gravitational_j;
     }
     ledger.peak_scale_j = std::max(ledger.peak_scale_j, ledger.current_scale_j());
-    parallel_for(n, [&](std::ptrdiff_t i) {
+}
+
+void step_end(World3d& w) {
+    const double dt = w.dt_s;
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
         if (w.kinds[i] == BodyKind3d::dynamic) update_position_3d(w.bodies[i], dt);
     });
     w.time_s += dt;
