@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
 #include <numbers>
 
@@ -305,6 +306,61 @@ TEST(LimitAnalysisDem, DISABLED_WallStudy) {
         run_wall(m, lambda, 8.0, 1.0, 0.5);
         run_wall(m, lambda, 12.0, 1.0, 1.0);
     }
+}
+
+// Diagnosis of the associative wall's start dependence, run by hand: every 0.5 deg of tilt, the
+// largest movement, the accumulated dilation (sum and largest u_d), the points sliding, the
+// changes of a pair's point count since the last line, and the kinetic energy.
+void trace_associative_wall(const char* what, double start_deg, double rate_deg_s, std::optional<SettlingSettings> settling) {
+    Model m = wall_with_associative_joints();
+    m.settings.duration_s = 40.0;
+    m.settings.dt_s.reset();
+    m.settings.tilt_rad = start_deg * deg;
+    m.settings.tilt_rate_rad_s = rate_deg_s * deg;
+    m.settling = settling;
+    World w = build_world(m);
+    const std::vector<Vec2> p0 = w.bodies.position_m;
+    const std::vector<double> a0 = w.bodies.rotation_rad;
+    const std::size_t n = w.bodies.size();
+    std::vector<std::uint32_t> counts(n * n, 0);  // by (a, b): the pair's point count last step
+    std::size_t changes = 0;
+    double next_deg = std::floor(start_deg) + 0.5;
+    std::printf("%s\n  tilt deg   largest m   sum u_d m   max u_d m  sliding  changes  kinetic J\n", what);
+    while (w.time_s < m.settings.duration_s) {
+        step_begin(w);
+        step_end(w);
+        double sum_ud = 0.0, max_ud = 0.0;
+        std::size_t sliding = 0;
+        for (const PairContact& pair : w.contacts) {
+            std::uint32_t& c = counts[pair.a * n + pair.b];
+            if (c != pair.count) ++changes;
+            c = pair.count;
+            for (std::uint32_t k = 0; k < pair.count; ++k) {
+                sum_ud += pair.points[k].dilation_m;
+                max_ud = std::max(max_ud, pair.points[k].dilation_m);
+                sliding += pair.points[k].sliding;
+            }
+        }
+        double largest = 0.0;
+        for (std::size_t i = 0; i < w.bodies.size(); ++i)
+            if (w.bodies.kind[i] == BodyKind::dynamic) largest = std::max(largest, moved_m(w, i, p0, a0));
+        const double tilt_deg = tilt_at_rad(w.settings, w.time_s) / deg;
+        if (tilt_deg >= next_deg || largest > 1e-2) {
+            std::printf("  %8.3f  %10.3e  %10.3e  %10.3e  %7zu  %7zu  %9.3e\n", tilt_deg, largest, sum_ud, max_ud, sliding, changes,
+                        w.energy.kinetic_j);
+            std::fflush(stdout);
+            changes = 0;
+            next_deg += 0.5;
+        }
+        if (largest > 1e-2) break;
+    }
+}
+
+TEST(LimitAnalysisDem, DISABLED_AssociativeWallTrace) {
+    const double lp_deg = std::atan(solve_limit_analysis(wall_with_associative_joints(), {.live_load_direction = {-1.0, 0.0}}).lambda) / deg;
+    if (std::getenv("TRACE_BUILT")) trace_associative_wall("as built, 8 deg below", lp_deg - 8.0, 1.0, std::nullopt);
+    if (std::getenv("TRACE_SETTLED")) trace_associative_wall("settled, 8 deg below", lp_deg - 8.0, 1.0, SettlingSettings{});
+    if (std::getenv("TRACE_REST")) trace_associative_wall("as built, from 0 deg", 0.0, 1.0, std::nullopt);
 }
 
 Model semicircular_arch(double thickness_over_radius, int voussoirs) {
