@@ -36,40 +36,9 @@ double joint_face_gap_m(const World& w, const PairContact& pair) {
     return joint_face_keep_fraction * std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
 }
 
-// The tributary length [m] of each end point of a per-length joint pair as its points stand
-// now (laws/mohr_coulomb_joint.hpp; 0 for a pair apart or a per-point pair).
-double joint_tributary_m(const World& w, const PairContact& pair) {
-    if (pair.count == 0) return 0.0;
-    const Bodies& b = w.bodies;
-    if (w.contact.at(b.material[pair.a], b.material[pair.b]).stiffness != StiffnessBasis::per_length) return 0.0;
-    const double least_width_m = std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
-    return tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m, w.contact.rounding_m);
-}
+}  // namespace
 
-// A per-length joint point stands for a piece of joint of its tributary length L, and its
-// springs carry that piece's stress times its area: the normal force JKN L t (overlap + u_d)
-// follows L by itself, the shear spring, a force kept from step to step, does not. When L
-// changes (an overlap that grows or shrinks as the faces slide, an edge contact that turns into
-// a corner one, 2 points to 1, or back), the kept shear forces are scaled by L_new / L_old, so
-// that each point keeps its shear stress and its elastic shear displacement F_s / K_s, as the
-// normal spring keeps its stress (and as a per-point contact's softening is rescaled:
-// contact_table.cpp). Unscaled, a face that lost an end put its remaining point's whole shear
-// force on a five times smaller normal force (L from l / 2 to 0.1 w): the point slid and, with
-// dilation, opened by tan(psi) times that slip, at every such change, though nothing had yielded
-// (docs/physics.md, "Joint stiffness per unit length").
-void rescale_joint_shear(World& w, std::size_t p, double before_m, double after_m) {
-    if (!(before_m > 0.0) || !(after_m > 0.0) || before_m == after_m) return;
-    PairContact& pair = w.contacts[p];
-    const double ratio = after_m / before_m;
-    for (std::uint32_t k = 0; k < pair.count; ++k) pair.points[k].shear_spring_n *= ratio;
-    // (Interior points: L / (n - 1) each, the same ratio; contact/sub_contacts.hpp.)
-    if (!w.sub_contacts.empty() && pair.count == 2) [[unlikely]]
-        for (std::uint32_t k = 0; k < w.sub_contacts[p].count; ++k) w.sub_contacts[p].points[k].shear_spring_n *= ratio;
-}
-
-// The pair's points from this step's geometry, matched with last step's (the narrow phase
-// proper; update_pair_contact adds the per-length joints' rescaling).
-OpenedPoints update_pair_points(World& w, std::size_t p) {
+OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
     PairContact& pair = w.contacts[p];
     // The pair's polygons are parts (a convex body's one part is the body itself); the motion
@@ -139,17 +108,6 @@ OpenedPoints update_pair_points(World& w, std::size_t p) {
     if (face_kept) [[unlikely]]
         keep_face_or_trim(manifold, gap_m, w.contact.sub_contacts);
     return update_pair_geometry(pair, manifold, part_match_distance_m(b, pair));
-}
-
-}  // namespace
-
-OpenedPoints update_pair_contact(World& w, std::size_t p) {
-    // (A pair that was apart has no kept forces to scale: it reads nothing more.)
-    const double before_m = joint_tributary_m(w, w.contacts[p]);
-    if (before_m == 0.0) return update_pair_points(w, p);
-    const OpenedPoints opened = update_pair_points(w, p);
-    rescale_joint_shear(w, p, before_m, joint_tributary_m(w, w.contacts[p]));
-    return opened;
 }
 
 bool collide_parts(const World& w, const PairContact& pair, std::uint32_t reference, ContactManifold& manifold,
