@@ -25,7 +25,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <optional>
 #include <numbers>
 
@@ -271,8 +270,9 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJoints) {
                 "(%+.2f %%), %zu blocks move, %zu of them in the LP's mechanism\n",
                 lp.lambda, count(lp_moving), dem_lambda, 100.0 * (dem_lambda / lp.lambda - 1.0), count(dem_moving),
                 count_both(dem_moving, lp_moving));
-    // (This protocol: the tilt set 8 deg below at t = 0 on the wall as built. The collapse
-    // depends on the start: from rest at 0 deg 0.4485, -5.1 %; settled 8 deg below, -9.9 %:
+    // (This protocol: the tilt set 8 deg below at t = 0 on the wall as built. Settled 8 deg
+    // below: -1.9 %, the test below. From rest at 0 deg: 0.4485, -5.1 %, because an edge
+    // contact that hinges drops its point's tributary length from l / 2 to 0.1 w at once:
     // docs/limit_analysis.md. Asserted: what this protocol gives, and the LP as upper bound.)
     EXPECT_LT(dem_lambda, lp.lambda);
     EXPECT_NEAR(dem_lambda / lp.lambda, 1.0, 0.03);
@@ -282,6 +282,11 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJoints) {
 
 // The same wall settled with the default criterion 8 deg below the LP's tilt (it settles now:
 // test_jointed_wall_at_rest.cpp), then tilted at 1 deg/s: the collapse from a settled start.
+// Its dilating joints settle under their own friction and dilation (world/settling.cpp: held
+// friction left them outside their Coulomb cone, and the wall collapsed at 0.40904, -13.5 %).
+// Asserted: the 3 % of the LP, as from the as-built start above (measured -1.92 %
+// against -2.03 % as built: the collapse no longer depends on which of the two starts), and the
+// LP as upper bound.
 TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJointsSettled) {
     const Model m = wall_with_associative_joints();
     const LimitResult lp = solve_limit_analysis(m, {.live_load_direction = {-1.0, 0.0}});
@@ -292,6 +297,7 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJointsSettled) {
     std::printf("wall with window, associative joints, settled: LP lambda = %.5f; DEM %.5f (%+.2f %%)\n", lp.lambda, dem_lambda,
                 100.0 * (dem_lambda / lp.lambda - 1.0));
     EXPECT_LT(dem_lambda, lp.lambda);
+    EXPECT_NEAR(dem_lambda / lp.lambda, 1.0, 0.03);
 }
 
 // The study behind the settings above, run by hand (about 90 s of CPU): the DEM's multiplier
@@ -308,15 +314,15 @@ TEST(LimitAnalysisDem, DISABLED_WallStudy) {
     }
 }
 
-// Diagnosis of the associative wall's start dependence, run by hand: every 0.5 deg of tilt, the
-// largest movement, the accumulated dilation (sum and largest u_d), the points sliding, the
-// changes of a pair's point count since the last line, and the kinetic energy.
-void trace_associative_wall(const char* what, double start_deg, double rate_deg_s, std::optional<SettlingSettings> settling) {
+// The associative wall's start dependence, traced: every 0.5 deg of tilt, the largest
+// movement, the accumulated dilation (sum and largest u_d), the points sliding, the changes of
+// a pair's point count since the last line, and the kinetic energy. Returns tan(tilt) at 1 cm.
+double trace_associative_wall(const char* what, double start_deg, std::optional<SettlingSettings> settling) {
     Model m = wall_with_associative_joints();
     m.settings.duration_s = 40.0;
     m.settings.dt_s.reset();
     m.settings.tilt_rad = start_deg * deg;
-    m.settings.tilt_rate_rad_s = rate_deg_s * deg;
+    m.settings.tilt_rate_rad_s = 1.0 * deg;
     m.settling = settling;
     World w = build_world(m);
     const std::vector<Vec2> p0 = w.bodies.position_m;
@@ -352,15 +358,25 @@ void trace_associative_wall(const char* what, double start_deg, double rate_deg_
             changes = 0;
             next_deg += 0.5;
         }
-        if (largest > 1e-2) break;
+        if (largest > 1e-2) return std::tan(tilt_deg * deg);
     }
+    return NAN;
 }
 
-TEST(LimitAnalysisDem, DISABLED_AssociativeWallTrace) {
-    const double lp_deg = std::atan(solve_limit_analysis(wall_with_associative_joints(), {.live_load_direction = {-1.0, 0.0}}).lambda) / deg;
-    if (std::getenv("TRACE_BUILT")) trace_associative_wall("as built, 8 deg below", lp_deg - 8.0, 1.0, std::nullopt);
-    if (std::getenv("TRACE_SETTLED")) trace_associative_wall("settled, 8 deg below", lp_deg - 8.0, 1.0, SettlingSettings{});
-    if (std::getenv("TRACE_REST")) trace_associative_wall("as built, from 0 deg", 0.0, 1.0, std::nullopt);
+// Run by hand (about 200 s of CPU): the associative wall from three starts, each within 3 % of
+// the LP, as an associative system's collapse must be whatever its (admissible) start. Fails
+// from rest (0.44850, -5.1 %) while an edge contact that hinges drops its point's tributary
+// length from l / 2 to 0.1 w in one step (docs/limit_analysis.md: with a corner's length equal
+// to a face end's, the three starts gave -1.07, -0.48 and -1.03 %).
+TEST(LimitAnalysisDem, DISABLED_AssociativeWallFromThreeStarts) {
+    const double lp = solve_limit_analysis(wall_with_associative_joints(), {.live_load_direction = {-1.0, 0.0}}).lambda;
+    const double lp_deg = std::atan(lp) / deg;
+    for (const double dem : {trace_associative_wall("as built, 8 deg below", lp_deg - 8.0, std::nullopt),
+                             trace_associative_wall("settled, 8 deg below", lp_deg - 8.0, SettlingSettings{}),
+                             trace_associative_wall("as built, from 0 deg", 0.0, std::nullopt)}) {
+        std::printf("DEM %.5f against LP %.5f (%+.2f %%)\n", dem, lp, 100.0 * (dem / lp - 1.0));
+        EXPECT_NEAR(dem / lp, 1.0, 0.03);
+    }
 }
 
 Model semicircular_arch(double thickness_over_radius, int voussoirs) {
