@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Writes OUT_DIR/report.html (and the figures in OUT_DIR/figures/) for a blockdem run folder.
+"""Writes OUT_DIR/report.html (and the figures in OUT_DIR/figures/) for a blockdem run folder, 2-D or
+3-D (summary.json "dimension": 3: report_3d.py, docs/3d.md).
 Usually called by `blockdem report OUT_DIR`; run it with Debian's Python:
 
   /usr/bin/python3 tools/blockdem_report.py OUT_DIR [--blockdem build/blockdem] [--no-animation]
@@ -12,7 +13,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from blockdem_view.convergence_section import study_base_folder  # noqa: E402
 from blockdem_view.report import write_report  # noqa: E402
-from blockdem_view.run_folder import RunFolder, RunFolderError  # noqa: E402
+from blockdem_view.report_3d import write_report_3d  # noqa: E402
+from blockdem_view.run_folder import RunFolder, RunFolderError, run_dimension  # noqa: E402
+from blockdem_view.run_folder_3d import RunFolder3d  # noqa: E402
 
 
 def main(argv=None):
@@ -24,10 +27,15 @@ def main(argv=None):
     args = parser.parse_args(argv)
     formats = ["png"] + [f for f in args.formats.split(",") if f and f != "png"]
     try:
-        run = RunFolder(study_base_folder(args.folder))
+        folder = study_base_folder(args.folder)
+        # A 3-D run (docs/3d.md): its own page, figures drawn from the VTK frames, no animation file.
+        run = RunFolder3d(folder) if run_dimension(folder) == 3 else RunFolder(folder)
         for note in run.limitations():
             print(f"blockdem report: note: {note}", file=sys.stderr)
-        path = write_report(run, args.blockdem, formats, not args.no_animation)
+        if isinstance(run, RunFolder3d):
+            path = write_report_3d(run, formats)
+        else:
+            path = write_report(run, args.blockdem, formats, not args.no_animation)
     except RunFolderError as e:
         print(f"blockdem_report: {e}", file=sys.stderr)
         return 2

@@ -12,6 +12,9 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "io/input_error.hpp"
+#include "io/scenario.hpp"
+#include "io/scenario_3d.hpp"
 #include "study/convergence_study.hpp"
 #include "world/simulation_error.hpp"
 
@@ -26,53 +29,65 @@ constexpr QuantityLabel labels[] = {{"peak_rotation_rad", "peak rotation [rad]"}
                                     {"final_slip_m", "final slip [m]"},            {"overturning_time_s", "overturned at [s]"},
                                     {"overturned", "overturned"},                  {"outcome", "outcome"}};
 
-std::string label_of(const std::string& key) {
-    for (const auto& l : labels)
-        if (key == l.key) return l.label;
-    return key;
-}
+// A 3-D summary's terms for the same quantities (study/convergence_verdict.hpp).
+constexpr QuantityLabel labels_3d[] = {{"peak_rotation_rad", "peak tilt [rad]"},
+                                       {"peak_slip_m", "peak |slip| [m]"},
+                                       {"final_slip_m", "final |slip| [m]"}};
+
+// Set once per study by print_study, before any table is printed.
+struct Labels {
+    bool three_d = false;
+    std::string of(const std::string& key) const {
+        if (three_d)
+            for (const auto& l : labels_3d)
+                if (key == l.key) return l.label;
+        for (const auto& l : labels)
+            if (key == l.key) return l.label;
+        return key;
+    }
+};
 
 std::string value_text(const std::optional<double>& v) { return v ? fmt::format("{:.4g}", *v) : "-"; }
 std::string change_text(const std::optional<double>& v) { return v ? fmt::format("{:.2f}%", 100.0 * *v) : "-"; }
 
-void print_dt_table(const BodyConvergence& b) {
+void print_dt_table(const BodyConvergence& b, const Labels& label) {
     fmt::print("  {:<22}{:>11}{:>11}{:>11}{:>13}{:>13}  {}\n", "quantity", "dt", "dt/2", "dt/4", "dt -> dt/2", "dt/2 -> dt/4",
                "");
     for (const QuantityComparison& q : b.dt) {
         std::vector<std::string> v;
         for (std::size_t i = 0; i < 3; ++i) v.push_back(q.discrete ? q.words[i].value_or("-") : value_text(q.values[i]));
         const std::string note = !q.judged ? "(not judged)" : q.converged ? "ok" : "NOT CONVERGED";
-        fmt::print("  {:<22}{:>11}{:>11}{:>11}{:>13}{:>13}  {}\n", label_of(q.quantity), v[0], v[1], v[2],
+        fmt::print("  {:<22}{:>11}{:>11}{:>11}{:>13}{:>13}  {}\n", label.of(q.quantity), v[0], v[1], v[2],
                    q.discrete ? "" : change_text(q.changes[0]), q.discrete ? "" : change_text(q.changes[1]), note);
     }
 }
 
-void print_ensemble(const BodyConvergence& b, std::size_t members) {
+void print_ensemble(const BodyConvergence& b, std::size_t members, const Labels& label) {
     fmt::print("  ensemble of {} runs at dt: overturned in {:.0f}%\n", members, 100.0 * b.fraction_overturned.value_or(0.0));
     for (const EnsembleSpread& s : b.ensemble) {
         if (s.discrete) {
-            fmt::print("    {:<22} seen: {}{}\n", label_of(s.quantity), fmt::join(s.distinct, ", "), s.chaotic ? "  CHAOTIC" : "");
+            fmt::print("    {:<22} seen: {}{}\n", label.of(s.quantity), fmt::join(s.distinct, ", "), s.chaotic ? "  CHAOTIC" : "");
         } else if (s.mean) {
-            fmt::print("    {:<22} mean {:.4g}, min {:.4g}, max {:.4g}, spread {}{}\n", label_of(s.quantity), *s.mean, *s.min,
+            fmt::print("    {:<22} mean {:.4g}, min {:.4g}, max {:.4g}, spread {}{}\n", label.of(s.quantity), *s.mean, *s.min,
                        *s.max, change_text(s.relative_spread),
                        !s.judged ? "  (not judged)" : s.chaotic ? "  CHAOTIC" : s.sensitive ? "  sensitive" : "");
         }
     }
 }
 
-void print_stiffness(const BodyConvergence& b) {
+void print_stiffness(const BodyConvergence& b, const Labels& label) {
     fmt::print("  contact stiffness x 0.5 / 1 / 2 (at dt/2):\n");
     for (const StiffnessComparison& s : b.stiffness) {
         std::vector<std::string> v;
         for (std::size_t i = 0; i < 3; ++i) v.push_back(s.discrete ? s.words[i].value_or("-") : value_text(s.values[i]));
-        fmt::print("    {:<22}{:>11}{:>11}{:>11}{:>13}  {}\n", label_of(s.quantity), v[0], v[1], v[2],
+        fmt::print("    {:<22}{:>11}{:>11}{:>11}{:>13}  {}\n", label.of(s.quantity), v[0], v[1], v[2],
                    s.discrete ? "" : change_text(s.max_change), !s.judged ? "(not judged)" : s.sensitive ? "SENSITIVE" : "ok");
     }
 }
 
 // The stiffness verdict with its largest change, so that an elastic tilt of a mrad is told
 // from a collapse at one stiffness only.
-void print_stiffness_line(const ConvergenceResult& r) {
+void print_stiffness_line(const ConvergenceResult& r, const Labels& label) {
     if (!*r.stiffness_sensitive) {
         fmt::print("contact stiffness: the answer does not depend on kn within the tolerance\n");
         return;
@@ -90,7 +105,7 @@ void print_stiffness_line(const ConvergenceResult& r) {
     std::vector<std::string> v;
     for (std::size_t i = 0; i < 3; ++i) v.push_back(worst->discrete ? worst->words[i].value_or("-") : value_text(worst->values[i]));
     fmt::print("contact stiffness: the answer DEPENDS on kn; most of all {} {} at kn x 0.5 / 1 / 2: {} / {} / {}\n", body->name,
-               label_of(worst->quantity), v[0], v[1], v[2]);
+               label.of(worst->quantity), v[0], v[1], v[2]);
 }
 
 int rank(Verdict v) { return v == Verdict::chaotic ? 0 : v == Verdict::not_converged ? 1 : 2; }
@@ -98,10 +113,13 @@ int rank(Verdict v) { return v == Verdict::chaotic ? 0 : v == Verdict::not_conve
 void print_study(const ConvergenceStudy& study, const ConvergenceTolerance& tol, std::size_t show) {
     const auto& r = study.result;
     const nlohmann::json& j = study.report;
-    fmt::print("base dt = {:.4g} s (stable limit {:.4g} s); tolerance: relative change <= {:g}% at dt/2 -> dt/4, "
+    const Labels label{j.value("dimension", 2) == 3};
+    // (0: a 3-D model with no body resting on another at the start has no bound there.)
+    const double critical_dt_s = j["critical_dt_s"].get<double>();
+    const std::string limit = critical_dt_s > 0.0 ? fmt::format("stable limit {:.4g} s", critical_dt_s) : "no stable limit at the start";
+    fmt::print("base dt = {:.4g} s ({}); tolerance: relative change <= {:g}% at dt/2 -> dt/4, "
                "floors {:g} rad (rotation), {:g} m (slip), {:g} s (overturning time)\n",
-               j["base_dt_s"].get<double>(), j["critical_dt_s"].get<double>(), 100.0 * tol.rtol, tol.floor_rotation_rad,
-               tol.floor_slip_m, tol.floor_time_s);
+               j["base_dt_s"].get<double>(), limit, 100.0 * tol.rtol, tol.floor_rotation_rad, tol.floor_slip_m, tol.floor_time_s);
     // The bodies that are not converged first; a large assembly prints only the first `show`.
     std::vector<const BodyConvergence*> order;
     for (const auto& b : r.bodies) order.push_back(&b);
@@ -111,16 +129,16 @@ void print_study(const ConvergenceStudy& study, const ConvergenceTolerance& tol,
         const BodyConvergence& b = *order[i];
         fmt::print("\n{}: {}{}\n", b.name, to_string(b.verdict),
                    b.verdict == Verdict::converged && !b.base_within_tolerance ? " at dt/4 (the base dt's answer is outside the tolerance)" : "");
-        if (!b.dt.empty()) print_dt_table(b);
-        if (!b.ensemble.empty()) print_ensemble(b, members);
-        if (!b.stiffness.empty()) print_stiffness(b);
+        if (!b.dt.empty()) print_dt_table(b, label);
+        if (!b.ensemble.empty()) print_ensemble(b, members, label);
+        if (!b.stiffness.empty()) print_stiffness(b, label);
         for (const std::string& reason : b.reasons) fmt::print("  - {}\n", reason);
     }
     if (order.size() > show) fmt::print("\n... and {} more bodies (all in converge.csv)\n", order.size() - show);
     for (const std::string& f : r.failed_runs) fmt::print("run failed: {}\n", f);
     fmt::print("\nverdict: {} ({} bodies converged, {} not converged, {} chaotic; rtol {:g}%)\n", to_string(r.verdict),
                r.converged_count, r.not_converged_count, r.chaotic_count, 100.0 * tol.rtol);
-    if (r.stiffness_sensitive) print_stiffness_line(r);
+    if (r.stiffness_sensitive) print_stiffness_line(r, label);
     if (r.verdict == Verdict::not_converged && study.outcomes.ensemble.empty())
         fmt::print("(--ensemble N tells a chaotic response from a too-long time step)\n");
 }
@@ -171,6 +189,12 @@ void add_converge_command(CLI::App& app) {
     cmd->add_flag("--report", *report, "also write DIR/dt/report.html, with the verdict");
     cmd->add_flag("--quiet,-q", *quiet, "no progress lines");
     cmd->callback([=] {
+        // The report draws 2-D runs only (blockdem report refuses a 3-D folder): refused before
+        // any run rather than after all of them.
+        if (*report && scenario_dimension(load_toml_file(*scenario), *scenario) == 3)
+            throw InputError({*scenario, "--report", 0, 0},
+                             "a 3-D study has no report yet (reports draw 2-D runs): its results are converge.json, "
+                             "converge.csv and each run's folder (ParaView frames in dt/vtk)");
         ConvergenceRequest request;
         request.scenario = *scenario;
         request.overrides = *sets;

@@ -47,6 +47,7 @@ std::string outcome_words(const nlohmann::json& body) {
 // A 3-D run's lines (docs/3d.md, "Outputs"): one a body, or for more than 12 bodies the count
 // that overturned and the largest tilt and slip (summary.json has every body).
 void print_outcome_3d(const nlohmann::json& summary, const std::string& out_dir) {
+    for (const auto& note : summary.value("assemblies", nlohmann::json::array())) fmt::print("{}\n", note.get<std::string>());
     std::vector<nlohmann::json> bodies;
     for (const auto& body : summary["bodies"])
         if (body["kind"] == "dynamic") bodies.push_back(body);

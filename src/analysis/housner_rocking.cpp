@@ -10,10 +10,15 @@ namespace blockdem {
 
 double HousnerBlock::alpha_rad() const { return std::atan(half_width_m / half_height_m); }
 double HousnerBlock::p_rad_s() const {
-    return std::sqrt(3.0 * gravity_m_s2 / (4.0 * std::hypot(half_width_m, half_height_m)));
+    const double radius_m = std::hypot(half_width_m, half_height_m);
+    if (corner_inertia_ratio > 0.0) return std::sqrt(gravity_m_s2 / (corner_inertia_ratio * radius_m));
+    return std::sqrt(3.0 * gravity_m_s2 / (4.0 * radius_m));
 }
+// Angular momentum about the new corner kept through the impact: I_c w+ = (I_c - 2 m R^2 sin^2
+// alpha) w-, so r = 1 - 2 sin^2 alpha / ratio (1 - 1.5 sin^2 alpha for the rectangle).
 double HousnerBlock::housner_restitution() const {
     const double s = std::sin(alpha_rad());
+    if (corner_inertia_ratio > 0.0) return 1.0 - 2.0 * s * s / corner_inertia_ratio;
     return 1.0 - 1.5 * s * s;
 }
 

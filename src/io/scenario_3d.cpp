@@ -7,10 +7,12 @@
 #include <fmt/format.h>
 
 #include "geometry/polygon.hpp"
+#include "io/assembly_3d_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/scenario.hpp"
 #include "io/scenario_keys.hpp"
+#include "io/vec3_keys.hpp"
 #include "scenes/brick_wall_3d.hpp"
 #include "world/world.hpp"
 #include "world/world_3d_start.hpp"
@@ -22,35 +24,6 @@ constexpr double pi = std::numbers::pi;
 // A prism's sides: the hull search is O(n^4) in the vertices (docs/3d.md): 64 sides take 25 ms,
 // 128 about 0.4 s a body.
 constexpr std::int64_t max_sides = 128;
-
-// A list of three numbers ([x, y, z]); nullopt when the key is absent.
-std::optional<Vec3> optional_vec3(TableReader& t, const std::string& key) {
-    if (!t.has(key)) return std::nullopt;
-    const std::vector<double> v = t.number_list(key);
-    if (v.size() != 3) t.fail(key, fmt::format("must be a list of three numbers [x, y, z], got {}", v.size()));
-    return Vec3{v[0], v[1], v[2]};
-}
-
-Vec3 vec3(TableReader& t, const std::string& key, const std::string& what) {
-    if (auto v = optional_vec3(t, key)) return *v;
-    t.fail_missing(key, what);
-}
-
-// A list of [x, y, z] points.
-std::vector<Vec3> vec3_list(TableReader& t, const std::string& key) {
-    t.has(key);
-    const toml::array* rows = t.raw().get_as<toml::array>(key);
-    if (!rows) t.fail_missing(key, " (a list of [x, y, z] in m)");
-    std::vector<Vec3> points;
-    for (std::size_t i = 0; i < rows->size(); ++i) {
-        const toml::array* row = (*rows)[i].as_array();
-        const auto number = [&](std::size_t k) { return row ? (*row)[k].value<double>() : std::nullopt; };
-        if (!row || row->size() != 3 || !number(0) || !number(1) || !number(2))
-            t.fail(key, fmt::format("point {} must be three numbers [x, y, z] in m", i));
-        points.push_back({*number(0), *number(1), *number(2)});
-    }
-    return points;
-}
 
 SimulationSettings read_settings_3d(TableReader t) {
     SimulationSettings s;
@@ -232,10 +205,28 @@ std::vector<BodyDef3d> read_brick_wall(TableReader& t, const std::string& name) 
     return bodies;
 }
 
-std::vector<BodyDef3d> read_assembly_3d(TableReader t) {
+// The generated assemblies (io/assembly_3d_keys.hpp) as body definitions; their note kept.
+std::vector<BodyDef3d> generated_bodies(GeneratedAssembly3d assembly, std::vector<std::string>& notes) {
+    std::vector<BodyDef3d> bodies;
+    for (GeneratedBody3d& g : assembly.bodies) {
+        BodyDef3d b;
+        b.name = std::move(g.name);
+        b.kind = g.kind;
+        b.vertices_m = std::move(g.vertices_m);
+        b.density_kg_m3 = g.density_kg_m3;
+        bodies.push_back(std::move(b));
+    }
+    notes.push_back(std::move(assembly.note));
+    return bodies;
+}
+
+std::vector<BodyDef3d> read_assembly_3d(TableReader t, std::vector<std::string>& notes) {
     const std::string name = read_body_name(t);  // (it begins every block's name)
-    const std::string type = t.choice("type", {"drum_column", "brick_wall"}, "");
-    std::vector<BodyDef3d> bodies = type == "drum_column" ? read_drum_column(t, name) : read_brick_wall(t, name);
+    const std::string type = t.choice("type", {"drum_column", "brick_wall", "rock_mass", "random_packing"}, "");
+    std::vector<BodyDef3d> bodies = type == "drum_column"      ? read_drum_column(t, name)
+                                    : type == "brick_wall"     ? read_brick_wall(t, name)
+                                    : type == "rock_mass"      ? generated_bodies(read_rock_mass_3d(t, name), notes)
+                                                               : generated_bodies(read_random_packing_3d(t, name), notes);
     for (BodyDef3d& b : bodies) b.key = t.path();
     t.reject_unknown_keys();
     return bodies;
@@ -333,12 +324,13 @@ InputError model_error(const std::filesystem::path& file, const std::string& key
     return InputError({file.string(), key, 0, 0}, what);
 }
 
-World3d build_world_3d(TableReader& top, const std::filesystem::path& file, const std::filesystem::path& scenario_dir) {
+World3d build_world_3d(TableReader& top, const std::filesystem::path& file, const std::filesystem::path& scenario_dir,
+                       std::vector<std::string>& notes) {
     World3d w;
     std::vector<BodyDef3d> defs;
     for (TableReader bt : top.table_array("bodies")) defs.push_back(read_body_3d(bt));
     for (TableReader at : top.table_array("assemblies"))
-        for (BodyDef3d& b : read_assembly_3d(at)) defs.push_back(std::move(b));
+        for (BodyDef3d& b : read_assembly_3d(at, notes)) defs.push_back(std::move(b));
     if (defs.empty()) top.fail("", "the scenario has no [[bodies]] or [[assemblies]]");
     std::set<std::string> names;
     for (const BodyDef3d& d : defs) {
@@ -388,7 +380,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     s.output_interval_s = settings.output_interval_s;
     s.max_energy_error = settings.max_energy_error;
     s.max_overlap_ratio = settings.max_overlap_ratio;
-    s.world = build_world_3d(top, file, file.parent_path());
+    s.world = build_world_3d(top, file, file.parent_path(), s.assembly_notes);
     s.world.gravity_m_s2 = settings.gravity_m_s2;
     if (auto output = top.optional_table("output")) {
         // (Read by the 2-D reader, so that the words are the same; two of its keys have nothing

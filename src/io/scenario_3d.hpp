@@ -28,6 +28,7 @@ struct LoadedScenario3d {
     double max_energy_error = 0.5;    ///< [-] stop when the balance error exceeds it (as 2-D)
     double max_overlap_ratio = 0.25;  ///< [-] stop when an overlap exceeds it of the thinner body's least width
     OutputSettings output;            ///< [output] vtk, vtk_interval
+    std::vector<std::string> assembly_notes;  ///< what each generated assembly built (rock mass, packing)
 };
 
 /// Loads, overrides, validates and builds. A model error (a non-convex or degenerate polyhedron,

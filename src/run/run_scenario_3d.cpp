@@ -72,6 +72,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const World3d& w, const Res
           {"table_work", e.table_work_j},
           {"residual", e.residual_j()},
           {"balance_error_relative", e.balance_error()}}}};
+    if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;
     if (!error.empty()) summary["error"] = error;
     return summary;
 }

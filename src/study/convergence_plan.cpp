@@ -11,9 +11,12 @@ namespace blockdem {
 namespace {
 
 // Every follow-up run has an explicit time step and writes no VTK frames (the base run keeps
-// the scenario's [output]); only the summary is compared.
-std::vector<std::string> common_overrides(double dt_s) {
-    return {"simulation.dt=" + toml_float(dt_s), "output.vtk=false", "output.report=false"};
+// the scenario's [output]); only the summary is compared. A 3-D scenario has no report to switch
+// off (its reader refuses the key).
+std::vector<std::string> run_overrides(double dt_s, int dimension) {
+    std::vector<std::string> out{"simulation.dt=" + toml_float(dt_s), "output.vtk=false"};
+    if (dimension != 3) out.push_back("output.report=false");
+    return out;
 }
 
 std::string factor_label(double f) { return fmt::format("kn_x{}", f); }
@@ -61,6 +64,8 @@ std::vector<double> ensemble_perturbations(int n, double magnitude) {
 
 std::vector<PlannedRun> plan_follow_up_runs(const toml::table& scenario, double base_dt_s, const ConvergenceOptions& options) {
     std::vector<PlannedRun> plan;
+    const int dimension = scenario["dimension"].value<int>().value_or(2);
+    const auto common_overrides = [dimension](double dt_s) { return run_overrides(dt_s, dimension); };
     for (const int divisor : {2, 4}) {
         PlannedRun r{fmt::format("dt_{}", divisor), RunRole::refinement, common_overrides(base_dt_s / divisor),
                      fmt::format("dt/{} = {:.4g} s", divisor, base_dt_s / divisor)};
@@ -82,6 +87,7 @@ std::vector<PlannedRun> plan_follow_up_runs(const toml::table& scenario, double 
     if (options.ensemble < 0) throw InputError({"", "--ensemble", 0, 0}, fmt::format("must be >= 0, got {}", options.ensemble));
     if (options.ensemble > 0) {
         // gravity = [gx, gy] is scaled as a whole: its magnitude is perturbed, its direction kept.
+        // (3-D gravity is a magnitude acting in -z: the scalar form.)
         const toml::array* vector = scenario["simulation"]["gravity"].as_array();
         const double gx = vector && vector->size() == 2 ? (*vector)[0].value<double>().value_or(0.0) : 0.0;
         const double gy = vector && vector->size() == 2 ? (*vector)[1].value<double>().value_or(0.0) : 0.0;

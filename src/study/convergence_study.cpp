@@ -8,6 +8,7 @@
 #include "io/overrides.hpp"
 #include "run/run_scenario.hpp"
 #include "io/scenario.hpp"
+#include "io/scenario_3d.hpp"
 #include "study/convergence_csv.hpp"
 
 namespace blockdem {
@@ -44,6 +45,11 @@ RunOutcome run_one(const ConvergenceRequest& request, const PlannedRun& plan, nl
     return outcome_of_summary(summary_out, plan.label);
 }
 
+// A number of the summary, or 0 where it has none (a 3-D run with no stable bound writes null).
+double number_or_zero(const nlohmann::json& summary, const char* key) {
+    return summary.is_object() && summary.contains(key) && summary[key].is_number() ? summary[key].get<double>() : 0.0;
+}
+
 nlohmann::json run_entry(const PlannedRun& plan, const RunOutcome& outcome, const nlohmann::json& summary) {
     nlohmann::json j{{"label", plan.label},
                      {"folder", plan.label},
@@ -54,8 +60,8 @@ nlohmann::json run_entry(const PlannedRun& plan, const RunOutcome& outcome, cons
                      {"dt_s", outcome.dt_s}};
     if (!outcome.error.empty()) j["error"] = outcome.error;
     if (summary.is_object()) {
-        j["critical_dt_s"] = summary.value("critical_dt_s", 0.0);
-        j["wall_time_s"] = summary.value("wall_time_s", 0.0);
+        j["critical_dt_s"] = number_or_zero(summary, "critical_dt_s");
+        j["wall_time_s"] = number_or_zero(summary, "wall_time_s");
     }
     return j;
 }
@@ -90,8 +96,11 @@ ConvergenceStudy run_convergence_study(const ConvergenceRequest& request) {
     // Every key and option is checked before the first run: the scenario as the runs will read
     // it, then the plan with a stand-in time step.
     toml::table root = load_toml_file(request.scenario);
+    const int dimension = scenario_dimension(root, request.scenario.string());
+    // A 3-D scenario is checked by building it as the run will (its reader applies the --set).
+    if (dimension == 3) load_scenario_3d(root, request.scenario, request.overrides);
     apply_overrides(root, request.overrides);
-    read_model(root, request.scenario.string(), request.scenario.parent_path());
+    if (dimension == 2) read_model(root, request.scenario.string(), request.scenario.parent_path());
     const std::size_t run_count = 1 + plan_follow_up_runs(root, 1.0, request.options).size();
 
     const PlannedRun base{base_run_label, RunRole::refinement, {}, "dt as the scenario sets it"};
@@ -100,7 +109,7 @@ ConvergenceStudy run_convergence_study(const ConvergenceRequest& request) {
     RunOutcome base_outcome = run_one(request, base, summary);
     nlohmann::json entries = nlohmann::json::array({run_entry(base, base_outcome, summary)});
     const double base_dt_s = base_outcome.dt_s;
-    const double critical_dt_s = summary.is_object() ? summary.value("critical_dt_s", 0.0) : 0.0;
+    const double critical_dt_s = number_or_zero(summary, "critical_dt_s");
     study.runs = {base};
     add(study.outcomes, base.role, std::move(base_outcome));
     if (!(base_dt_s > 0.0)) throw std::runtime_error("the base run stopped before it had a time step: " + study.outcomes.refinement[0].error);
@@ -120,6 +129,8 @@ ConvergenceStudy run_convergence_study(const ConvergenceRequest& request) {
 
     nlohmann::json& j = study.report;
     j["scenario"] = request.scenario.string();
+    j["dimension"] = dimension;
+    if (dimension == 3) j["quantities_3d"] = quantities_3d_json();
     j["overrides"] = request.overrides;
     j["base_run"] = base_run_label;
     j["base_dt_s"] = base_dt_s;

@@ -309,6 +309,34 @@ double relative_change(double a, double b, double floor) {
     return scale > 0.0 ? std::abs(b - a) / scale : 0.0;
 }
 
+namespace {
+
+// A 3-D body (run/run_scenario_3d.cpp's summary): the tilt is the rocking whatever its axis, the
+// slip a horizontal vector, compared by its length (a direction has no floor to judge it by). No
+// overturning time and no outcome word: those quantities are left out, as for an older 2-D file.
+BodyOutcome body_outcome_3d(const nlohmann::json& j, const std::string& where) {
+    BodyOutcome b;
+    b.name = j.value("name", std::string());
+    b.peak_rotation_rad = get_number(j, "peak_tilt_rad", where);
+    b.peak_slip_m = get_number(j, "peak_slip_m", where);
+    if (!j.contains("slip_m") || !j["slip_m"].is_array() || j["slip_m"].size() != 2 || !j["slip_m"][0].is_number() ||
+        !j["slip_m"][1].is_number())
+        throw std::runtime_error(fmt::format("{}: no slip vector 'slip_m' [x, y]", where));
+    b.final_slip_m = std::hypot(j["slip_m"][0].get<double>(), j["slip_m"][1].get<double>());
+    b.overturned = j.value("overturned", false);
+    return b;
+}
+
+}  // namespace
+
+nlohmann::json quantities_3d_json() {
+    return {{"peak_rotation_rad", "summary.json peak_tilt_rad: the peak tilt about any horizontal axis"},
+            {"peak_slip_m", "summary.json peak_slip_m: the peak length of the horizontal slip vector relative to the table"},
+            {"final_slip_m", "the length of summary.json slip_m [x, y] at the end"},
+            {"overturning_time_s", "not in a 3-D summary: not judged"},
+            {"overturned", "summary.json overturned"}};
+}
+
 RunOutcome outcome_of_summary(const nlohmann::json& summary, const std::string& label) {
     RunOutcome run;
     run.label = label;
@@ -317,8 +345,13 @@ RunOutcome outcome_of_summary(const nlohmann::json& summary, const std::string& 
     run.dt_s = get_number(summary, "dt_s", "summary of run " + label);
     if (!summary.contains("bodies") || !summary["bodies"].is_array())
         throw std::runtime_error(fmt::format("summary of run {}: no 'bodies' list", label));
+    const bool three_d = summary.value("dimension", 2) == 3;
     for (const auto& j : summary["bodies"]) {
         if (j.value("kind", std::string()) != "dynamic") continue;
+        if (three_d) {
+            run.bodies.push_back(body_outcome_3d(j, fmt::format("summary of run {}, body '{}'", label, j.value("name", std::string()))));
+            continue;
+        }
         BodyOutcome b;
         b.name = j.value("name", std::string());
         const std::string where = fmt::format("summary of run {}, body '{}'", label, b.name);

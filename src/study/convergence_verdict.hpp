@@ -12,12 +12,14 @@
 
 namespace blockdem {
 
-/// What summary.json says about one dynamic body: the quantities a study compares.
+/// What summary.json says about one dynamic body: the quantities a study compares. A 3-D
+/// summary gives the same three numbers in its own terms (quantities_3d_json): the peak tilt
+/// about any horizontal axis as the peak rotation, and the slip vector's length as the slip.
 struct BodyOutcome {
     std::string name;
-    double peak_rotation_rad = 0.0;            ///< [rad] peak |rotation|
-    double peak_slip_m = 0.0;                  ///< [m] peak |base slip|
-    double final_slip_m = 0.0;                 ///< [m] base slip at the end (signed)
+    double peak_rotation_rad = 0.0;            ///< [rad] peak |rotation| (3-D: peak tilt)
+    double peak_slip_m = 0.0;                  ///< [m] peak |base slip| (3-D: peak |slip vector|)
+    double final_slip_m = 0.0;                 ///< [m] base slip at the end (signed; 3-D: |slip vector|)
     bool overturned = false;
     std::optional<double> overturning_time_s;  ///< [s] when overturned
     std::optional<std::string> outcome;        ///< "stable", "rocked", ... when the summary has it
@@ -32,9 +34,12 @@ struct RunOutcome {
     std::vector<BodyOutcome> bodies;   ///< in the order of the summary
 };
 
-/// Reads the dynamic bodies of a summary.json. Throws std::runtime_error naming the key when a
-/// summary lacks one (a file from another program).
+/// Reads the dynamic bodies of a summary.json, 2-D or 3-D (its "dimension"). Throws
+/// std::runtime_error naming the key when a summary lacks one (a file from another program).
 RunOutcome outcome_of_summary(const nlohmann::json& summary, const std::string& label);
+
+/// converge.json's "quantities_3d": what each compared quantity is in a 3-D summary.
+nlohmann::json quantities_3d_json();
 
 /// How close is close enough. A relative change is |b - a| / max(|a|, |b|, floor): the floor of
 /// a quantity keeps a value near zero (a block at rest turns by 1e-6 rad) from giving a huge

@@ -8,36 +8,40 @@
 namespace blockdem {
 namespace {
 
-// atan(d / h) of body i at t = 0 (above): its lowest face's corners (within 1e-6 of its size),
-// their hull, and the centroid's distance to the hull's nearest edge.
+// The tilt at which body i would topple at t = 0 (above). It rests on the face whose outward
+// normal points most steeply down (the table, a bed joint, or a joint plane of a rock mass, which
+// may dip). Tipping over an edge of that face turns the centroid about the edge until the
+// centroid stands straight above it; in the plane across the edge that turn is the angle
+// between the centroid's arm (from the edge) and the vertical. On a level base it is atan(d / h),
+// d the centroid's distance inside the edge and h its height; on a face dipping at beta it is
+// atan(d / h) - beta over the lower edge. The least over the face's edges is the body's limit;
+// a centroid already beyond an edge gives 0.
 double overturning_angle_rad(const RigidBody3d& b) {
-    double low = std::numeric_limits<double>::infinity(), size = 0.0;
-    std::vector<Vec3> world;
-    for (std::size_t k = 0; k < b.shape.vertices_m.size(); ++k) {
-        world.push_back(world_vertex(b, k));
-        low = std::min(low, world.back().z);
-        size = std::max(size, length(b.shape.vertices_m[k]));
+    const Polyhedron& shape = b.shape;
+    std::size_t support = 0;
+    for (std::size_t f = 1; f < shape.faces.size(); ++f)
+        if (rotate(b.orientation, shape.face_normals[f]).z < rotate(b.orientation, shape.face_normals[support]).z) support = f;
+    const std::vector<std::size_t>& corners = shape.faces[support];
+    const Vec3 into_body = -rotate(b.orientation, shape.face_normals[support]);
+    Vec3 face_centre{};
+    for (std::size_t k : corners) face_centre = face_centre + (1.0 / corners.size()) * world_vertex(b, k);
+    const Vec3 up{0.0, 0.0, 1.0};
+    double least = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+        const Vec3 p = world_vertex(b, corners[k]);
+        const Vec3 e = normalized(world_vertex(b, corners[(k + 1) % corners.size()]) - p);
+        // In the plane across the edge: `inward` runs in the face, away from the edge, and
+        // `into_body` out of the face; angles are measured from `into_body` towards `inward`.
+        Vec3 inward = (face_centre - p) - dot(face_centre - p, e) * e;
+        inward = normalized(inward - dot(inward, into_body) * into_body);
+        const Vec3 arm = b.position_m - p;
+        const Vec3 up_across = up - dot(up, e) * e;
+        if (length(up_across) < 1e-9) continue;  // a vertical edge: no tipping about it
+        const double arm_angle = std::atan2(dot(arm, inward), dot(arm, into_body));
+        const double up_angle = std::atan2(dot(up_across, inward), dot(up_across, into_body));
+        least = std::min(least, arm_angle - up_angle);
     }
-    std::vector<Vec2> base;
-    for (const Vec3& v : world)
-        if (v.z < low + 1e-6 * size) base.push_back({v.x, v.y});
-    if (base.size() < 3) return 0.0;  // on an edge or a corner: any tilt is past it
-    // The corners of a convex face, in the shape's vertex order (a box lists them row by row):
-    // sorted by angle about their mean, they run counter-clockwise.
-    Vec2 mean{};
-    for (const Vec2& p : base) mean = {mean.x + p.x / base.size(), mean.y + p.y / base.size()};
-    std::sort(base.begin(), base.end(), [&](Vec2 p, Vec2 q) {
-        return std::atan2(p.y - mean.y, p.x - mean.x) < std::atan2(q.y - mean.y, q.x - mean.x);
-    });
-    const Vec2 c{b.position_m.x, b.position_m.y};
-    double d = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < base.size(); ++k) {
-        const Vec2 p = base[k], q = base[(k + 1) % base.size()];
-        const Vec2 e = q - p;
-        // Signed distance inside (counter-clockwise: the inside is on the left).
-        d = std::min(d, (e.x * (c.y - p.y) - e.y * (c.x - p.x)) / std::hypot(e.x, e.y));
-    }
-    return std::atan2(std::max(d, 0.0), b.position_m.z - low);
+    return std::isfinite(least) ? std::max(least, 0.0) : 0.0;
 }
 
 }  // namespace

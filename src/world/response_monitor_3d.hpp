@@ -19,7 +19,7 @@ namespace blockdem {
 struct BodyResponse3d {
     Vec3 start_position_m;        ///< [m] centroid at t = 0
     Quaternion start_orientation; ///< at t = 0
-    double overturning_angle_rad = 0.0;  ///< [rad] atan(d / h) at t = 0
+    double overturning_angle_rad = 0.0;  ///< [rad] tilt to topple from t = 0 over its resting face (atan(d / h) on a level one)
     double peak_tilt_rad = 0.0;          ///< [rad]
     double peak_tilt_time_s = 0.0;       ///< [s]
     Vec3 peak_tilt_axis;                 ///< unit, horizontal: the axis it tilted about at the peak

@@ -8,6 +8,7 @@
 #include "broad_phase/grid_broad_phase_3d.hpp"
 #include "contact/contact_table_3d.hpp"
 #include "dynamics/rigid_body_3d.hpp"
+#include "geometry/box_frame_3d.hpp"
 #include "geometry/polyhedron_contact_3d.hpp"
 #include "geometry/polyhedron_edges_3d.hpp"
 #include "laws/contact_parameters.hpp"
@@ -39,6 +40,7 @@ struct WorldScratch3d {
     std::vector<Vec3> world_vertices_m;       ///< [m]
     std::vector<Vec3> world_normals;
     std::vector<Vec3> world_directions;
+    std::vector<Vec3> angular_velocity_world_rad_s;  ///< [rad/s] per body, over the last step (the contact law's)
     std::vector<Aabb3d> boxes;
     std::vector<std::uint8_t> is_static;
     std::vector<BodyPair> pairs;
@@ -52,6 +54,7 @@ struct World3d {
     std::vector<RigidBody3d> bodies;
     std::vector<BodyKind3d> kinds;
     std::vector<PolyhedronEdges> edges;     ///< per body, numbered once
+    std::vector<BoxFrame3d> box_frames;     ///< per body: a box's frame for the box-box test, or is_box = false
     std::vector<Vec3> rest_positions_m;     ///< [m] a driven body's centroid with the table at rest
     ContactParameters contact;
     TableMotion3d table;

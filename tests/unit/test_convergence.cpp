@@ -198,6 +198,44 @@ TEST(Convergence, ASummaryWithoutAQuantityIsRefusedByName) {
     }
 }
 
+// A 3-D summary (run/run_scenario_3d.cpp): the peak tilt about any horizontal axis stands for
+// the peak rotation, the slip vector's length for the slip; no overturning time is given.
+TEST(Convergence, A3dSummaryGivesItsTiltAndTheLengthOfItsSlipVector) {
+    const nlohmann::json body{{"name", "drum_1"},      {"kind", "dynamic"},        {"peak_tilt_rad", 0.14},
+                              {"peak_slip_m", 0.2},    {"slip_m", {0.03, -0.04}},  {"overturned", true},
+                              {"rotation_vector_rad", {0.0, 0.1, 0.0}}};
+    const nlohmann::json s{{"status", "completed"}, {"dimension", 3}, {"dt_s", 3.5e-5},
+                           {"bodies", {{{"name", "table"}, {"kind", "driven"}}, body}}};
+    const RunOutcome r = outcome_of_summary(s, "dt");
+    ASSERT_EQ(r.bodies.size(), 1u);
+    EXPECT_EQ(r.bodies[0].name, "drum_1");
+    EXPECT_EQ(r.bodies[0].peak_rotation_rad, 0.14);
+    EXPECT_EQ(r.bodies[0].peak_slip_m, 0.2);
+    EXPECT_NEAR(r.bodies[0].final_slip_m, 0.05, 1e-15);
+    EXPECT_TRUE(r.bodies[0].overturned);
+    EXPECT_FALSE(r.bodies[0].overturning_time_s.has_value());
+    nlohmann::json bad = s;
+    bad["bodies"][1]["slip_m"] = {0.03};
+    try {
+        outcome_of_summary(bad, "dt_4");
+        FAIL() << "accepted a slip vector of one component";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("run dt_4, body 'drum_1': no slip vector 'slip_m'"), std::string::npos) << e.what();
+    }
+}
+
+// A 3-D scenario has no [output] report key (its reader refuses it): the runs do not set it.
+TEST(ConvergencePlan, A3dScenarioGetsNoReportKey) {
+    const toml::table scenario = toml::parse("dimension = 3\n[simulation]\ngravity = 9.81\n[contact]\nkn = 1e8\nks = 1e8\n");
+    for (const PlannedRun& run : plan_follow_up_runs(scenario, 1e-4, ConvergenceOptions{true, 2, 1e-9})) {
+        EXPECT_EQ(std::count(run.overrides.begin(), run.overrides.end(), "output.report=false"), 0) << run.label;
+        EXPECT_EQ(std::count(run.overrides.begin(), run.overrides.end(), "output.vtk=false"), 1) << run.label;
+    }
+    const toml::table two_d = toml::parse("[simulation]\ngravity = 9.81\n");
+    const auto plan = plan_follow_up_runs(two_d, 1e-4, ConvergenceOptions{});
+    EXPECT_EQ(std::count(plan[0].overrides.begin(), plan[0].overrides.end(), "output.report=false"), 1);
+}
+
 TEST(ConvergencePlan, RunsCarryTheirTimeStepStiffnessAndPerturbation) {
     const toml::table scenario = toml::parse(R"(
 [simulation]

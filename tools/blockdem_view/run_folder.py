@@ -21,16 +21,14 @@ def _read_csv(path):
     return header, data
 
 
-def _refuse_3d(path):
-    """A 3-D run (issue 15, in progress) has no bodies.json and no 2-D drawing: say so, not that
-    the folder is not a run."""
+def run_dimension(folder):
+    """3 for a folder whose summary.json says so, else 2 (also when there is no summary.json:
+    RunFolder then says what is missing)."""
     try:
-        summary = json.loads((path / "summary.json").read_text(encoding="utf-8"))
+        summary = json.loads((Path(folder) / "summary.json").read_text(encoding="utf-8"))
     except (OSError, ValueError):
-        return
-    if isinstance(summary, dict) and summary.get("dimension") == 3:
-        raise RunFolderError(f"{path}: a 3-D run: the report draws 2-D runs only for now; open "
-                             "vtk/bodies.pvd in ParaView and read history.csv, energy.csv and summary.json (docs/3d.md)")
+        return 2
+    return 3 if isinstance(summary, dict) and summary.get("dimension") == 3 else 2
 
 
 class RunFolder:
@@ -38,7 +36,9 @@ class RunFolder:
 
     def __init__(self, folder):
         self.path = Path(folder)
-        _refuse_3d(self.path)
+        if run_dimension(self.path) == 3:  # no bodies.json: say what reads it, not that it is no run
+            raise RunFolderError(f"{self.path}: a 3-D run: these figures are 2-D; `blockdem report` makes the 3-D "
+                                 "figures and report (run_folder_3d.py, docs/3d.md)")
         for name in ("history.csv", "summary.json", "bodies.json"):
             if not (self.path / name).is_file():
                 raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
