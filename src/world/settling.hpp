@@ -19,7 +19,8 @@
 // contact whose shear exceeds mu N slides from the first step: a block on a slope steeper than
 // its friction angle starts with its contacts loaded, not by falling onto the slope, and a block
 // on a gentler slope starts in equilibrium, with no release transient that the rigid-plastic
-// reference lacks. "actual" keeps mu, so bodies may slide into place while settling (and a body
+// reference lacks. Joints that dilate (tan_dilation > 0) are not held: they settle under their
+// own law (settling.cpp, hold: why). "actual" keeps mu, so bodies may slide into place while settling (and a body
 // that cannot stand does not settle). The tilt does not grow while settling (tilt_rate applies
 // from t = 0).
 #include <cstdint>

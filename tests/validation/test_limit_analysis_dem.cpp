@@ -270,9 +270,10 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJoints) {
                 "(%+.2f %%), %zu blocks move, %zu of them in the LP's mechanism\n",
                 lp.lambda, count(lp_moving), dem_lambda, 100.0 * (dem_lambda / lp.lambda - 1.0), count(dem_moving),
                 count_both(dem_moving, lp_moving));
-    // (This protocol: the tilt set 8 deg below at t = 0 on the wall as built. The collapse
-    // depends on the start: from rest at 0 deg 0.4485, -5.1 %; settled 8 deg below, -9.9 %:
-    // docs/limit_analysis.md. Asserted: what this protocol gives, and the LP as upper bound.)
+    // (This protocol: the tilt set 8 deg below at t = 0 on the wall as built. Settled 8 deg
+    // below: -1.9 %, the test below; from rest at 0 deg: -0.66 %, DISABLED_AssociativeWall-
+    // FromThreeStarts: docs/limit_analysis.md. Asserted: what this protocol gives, and the LP
+    // as upper bound.)
     EXPECT_LT(dem_lambda, lp.lambda);
     EXPECT_NEAR(dem_lambda / lp.lambda, 1.0, 0.03);
     EXPECT_EQ(count_both(dem_moving, lp_moving), count(lp_moving));  // every brick of the LP's mechanism moves
@@ -281,6 +282,11 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJoints) {
 
 // The same wall settled with the default criterion 8 deg below the LP's tilt (it settles now:
 // test_jointed_wall_at_rest.cpp), then tilted at 1 deg/s: the collapse from a settled start.
+// Its dilating joints settle under their own friction and dilation (world/settling.cpp: held
+// friction left them outside their Coulomb cone, and the wall collapsed at 0.40904, -13.5 %).
+// Asserted: the 3 % of the LP, as from the as-built start above (measured -1.92 %
+// against -2.03 % as built: the collapse no longer depends on which of the two starts), and the
+// LP as upper bound.
 TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJointsSettled) {
     const Model m = wall_with_associative_joints();
     const LimitResult lp = solve_limit_analysis(m, {.live_load_direction = {-1.0, 0.0}});
@@ -291,6 +297,7 @@ TEST(LimitAnalysisDem, WallWithWindowAndAssociativeJointsSettled) {
     std::printf("wall with window, associative joints, settled: LP lambda = %.5f; DEM %.5f (%+.2f %%)\n", lp.lambda, dem_lambda,
                 100.0 * (dem_lambda / lp.lambda - 1.0));
     EXPECT_LT(dem_lambda, lp.lambda);
+    EXPECT_NEAR(dem_lambda / lp.lambda, 1.0, 0.03);
 }
 
 // The study behind the settings above, run by hand (about 90 s of CPU): the DEM's multiplier
@@ -304,6 +311,71 @@ TEST(LimitAnalysisDem, DISABLED_WallStudy) {
         run_wall(m, lambda, 8.0, 0.5, 1.0);
         run_wall(m, lambda, 8.0, 1.0, 0.5);
         run_wall(m, lambda, 12.0, 1.0, 1.0);
+    }
+}
+
+// The associative wall's start dependence, traced: every 0.5 deg of tilt, the largest
+// movement, the accumulated dilation (sum and largest u_d), the points sliding, the changes of
+// a pair's point count since the last line, and the kinetic energy. Returns tan(tilt) at 1 cm.
+double trace_associative_wall(const char* what, double start_deg, std::optional<SettlingSettings> settling) {
+    Model m = wall_with_associative_joints();
+    m.settings.duration_s = 40.0;
+    m.settings.dt_s.reset();
+    m.settings.tilt_rad = start_deg * deg;
+    m.settings.tilt_rate_rad_s = 1.0 * deg;
+    m.settling = settling;
+    World w = build_world(m);
+    const std::vector<Vec2> p0 = w.bodies.position_m;
+    const std::vector<double> a0 = w.bodies.rotation_rad;
+    const std::size_t n = w.bodies.size();
+    std::vector<std::uint32_t> counts(n * n, 0);  // by (a, b): the pair's point count last step
+    std::size_t changes = 0;
+    double next_deg = std::floor(start_deg) + 0.5;
+    std::printf("%s\n  tilt deg   largest m   sum u_d m   max u_d m  sliding  changes  kinetic J\n", what);
+    while (w.time_s < m.settings.duration_s) {
+        step_begin(w);
+        step_end(w);
+        double sum_ud = 0.0, max_ud = 0.0;
+        std::size_t sliding = 0;
+        for (const PairContact& pair : w.contacts) {
+            std::uint32_t& c = counts[pair.a * n + pair.b];
+            if (c != pair.count) ++changes;
+            c = pair.count;
+            for (std::uint32_t k = 0; k < pair.count; ++k) {
+                sum_ud += pair.points[k].dilation_m;
+                max_ud = std::max(max_ud, pair.points[k].dilation_m);
+                sliding += pair.points[k].sliding;
+            }
+        }
+        double largest = 0.0;
+        for (std::size_t i = 0; i < w.bodies.size(); ++i)
+            if (w.bodies.kind[i] == BodyKind::dynamic) largest = std::max(largest, moved_m(w, i, p0, a0));
+        const double tilt_deg = tilt_at_rad(w.settings, w.time_s) / deg;
+        if (tilt_deg >= next_deg || largest > 1e-2) {
+            std::printf("  %8.3f  %10.3e  %10.3e  %10.3e  %7zu  %7zu  %9.3e\n", tilt_deg, largest, sum_ud, max_ud, sliding, changes,
+                        w.energy.kinetic_j);
+            std::fflush(stdout);
+            changes = 0;
+            next_deg += 0.5;
+        }
+        if (largest > 1e-2) return std::tan(tilt_deg * deg);
+    }
+    return NAN;
+}
+
+// Run by hand (54 s of CPU, the start from rest 35 of them): the associative wall from three
+// starts, each within 3 % of the LP, as an associative system's collapse must be whatever its
+// (admissible) start. Measured: as built 8 deg below -2.03 %, settled 8 deg below -1.92 %
+// (-13.5 % when settling held the joints' friction: world/settling.cpp), from rest at 0 deg
+// -0.66 % (docs/limit_analysis.md).
+TEST(LimitAnalysisDem, DISABLED_AssociativeWallFromThreeStarts) {
+    const double lp = solve_limit_analysis(wall_with_associative_joints(), {.live_load_direction = {-1.0, 0.0}}).lambda;
+    const double lp_deg = std::atan(lp) / deg;
+    for (const double dem : {trace_associative_wall("as built, 8 deg below", lp_deg - 8.0, std::nullopt),
+                             trace_associative_wall("settled, 8 deg below", lp_deg - 8.0, SettlingSettings{}),
+                             trace_associative_wall("as built, from 0 deg", 0.0, std::nullopt)}) {
+        std::printf("DEM %.5f against LP %.5f (%+.2f %%)\n", dem, lp, 100.0 * (dem / lp - 1.0));
+        EXPECT_NEAR(dem / lp, 1.0, 0.03);
     }
 }
 
