@@ -123,8 +123,14 @@ void print_derived(const World3d& w, std::size_t shown = 20) {
         const std::size_t n = resting_corners(b);
         const double overlap_m = b.mass_kg * w.gravity_m_s2 / (static_cast<double>(n) * w.contact.kn_N_m);
         const double fraction = overlap_m / (high - low);
-        if (angle < least_angle) least_angle = angle, least_angle_body = i;
-        if (fraction > largest_fraction) largest_fraction = fraction, largest_fraction_body = i;
+        if (angle < least_angle) {
+            least_angle = angle;
+            least_angle_body = i;
+        }
+        if (fraction > largest_fraction) {
+            largest_fraction = fraction;
+            largest_fraction_body = i;
+        }
         if (++count > shown) continue;
         fmt::print("  {}: overturns at a tilt of {:.4g} rad ({:.3g} deg); static overlap {:.3g} m on {} corners = {:.3g} of "
                    "its height {:.4g} m\n",
