@@ -16,6 +16,7 @@
 #include "io/input_error.hpp"
 #include "io/overrides.hpp"
 #include "io/toml_format.hpp"
+#include "io/scenario_3d.hpp"
 #include "python/bindings.hpp"
 #include "python/scenario_source.hpp"
 #include "python/toml_conversion.hpp"
@@ -31,7 +32,12 @@ fs::path named_in(const std::optional<fs::path>& base_dir, const char* name) {
 }
 
 ScenarioSource checked(ScenarioSource s) {
-    s.load(false);
+    // (A 3-D scenario is checked by the 3-D reader: blockdem.Simulation3d runs it.)
+    toml::table root = s.parse();
+    if (scenario_dimension(root, s.file.string()) == 3)
+        load_scenario_3d(std::move(root), s.file, {});
+    else
+        s.load(false);
     return s;
 }
 
@@ -40,9 +46,7 @@ template <class Edit>
 void edit(ScenarioSource& s, Edit&& change) {
     toml::table root = s.parse();
     change(root);
-    ScenarioSource copy{toml_text(root), s.file};
-    copy.load(false);
-    s = std::move(copy);
+    s = checked({toml_text(root), s.file});
 }
 
 std::string file_text(const fs::path& path) {

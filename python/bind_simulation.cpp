@@ -26,6 +26,8 @@
 #include <omp.h>
 #endif
 
+#include "io/input_error.hpp"
+#include "io/scenario_3d.hpp"
 #include "python/bindings.hpp"
 #include "python/run_arrays.hpp"
 #include "python/scenario_source.hpp"
@@ -43,6 +45,9 @@ public:
     Simulation(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force, bool history,
                const std::vector<double>& save_state_s, std::optional<double> save_state_every_s)
         : threads_(threads) {
+        if (scenario_dimension(scenario.parse(), scenario.file.string()) == 3)
+            throw InputError({scenario.file.string(), "dimension", 0, 0},
+                             "is 3: a 3-D scenario runs in blockdem.Simulation3d (the same step, t, positions, summary)");
         RunRequest request = make_request(threads, out_dir, force, save_state_s, save_state_every_s);
         request.scenario = scenario.file;
         LoadedScenario loaded = scenario.load(true);

@@ -9,6 +9,7 @@ namespace blockdem::python {
 void bind_errors(pybind11::module_& m);
 void bind_scenario(pybind11::module_& m);
 void bind_simulation(pybind11::module_& m);
+void bind_simulation_3d(pybind11::module_& m);
 void bind_study(pybind11::module_& m);
 void bind_analysis(pybind11::module_& m);
 void bind_limit(pybind11::module_& m);

@@ -6,6 +6,7 @@ PYBIND11_MODULE(_core, m) {
     blockdem::python::bind_errors(m);
     blockdem::python::bind_scenario(m);
     blockdem::python::bind_simulation(m);
+    blockdem::python::bind_simulation_3d(m);
     blockdem::python::bind_study(m);
     blockdem::python::bind_analysis(m);
     blockdem::python::bind_limit(m);

@@ -34,8 +34,11 @@ all=(fuzz_scenario fuzz_overrides fuzz_time_series_csv fuzz_record_auto fuzz_rec
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
 
 if [ "$build" = 1 ]; then
-  # Only what the harnesses need: the library and fuzz/ (no tests, benchmarks, MPI or OpenMP).
-  cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
+  # Only what the harnesses need: the library and fuzz/ (no tests, benchmarks, MPI or OpenMP),
+  # at -O1 with line tables only: the reports keep their file and line, and the build, which
+  # `make test` waits for, takes a fifth less.
+  cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
+    -DCMAKE_CXX_COMPILER=clang++-14 \
     -DBLOCKDEM_FUZZ=ON -DBLOCKDEM_BUILD_TESTS=OFF -DBLOCKDEM_BUILD_BENCHMARKS=OFF -DBLOCKDEM_WITH_MPI=OFF \
     -DCMAKE_DISABLE_FIND_PACKAGE_OpenMP=ON >/dev/null
   cmake --build "$build_dir" -j "${JOBS:-$(nproc)}" --target fuzzers

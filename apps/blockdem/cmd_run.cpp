@@ -72,6 +72,8 @@ void print_outcome_3d(const nlohmann::json& summary, const std::string& out_dir)
     fmt::print("energy balance error {:.3g} of the largest term; results in {}/ (history.csv, energy.csv, summary.json, "
                "vtk/bodies.pvd)\n",
                summary["energy_j"]["balance_error_relative"].get<double>(), out_dir);
+    if (summary.contains("warnings"))
+        for (const auto& warning : summary["warnings"]) fmt::print(stderr, "WARNING: {}\n", warning.get<std::string>());
 }
 
 void print_outcome(const nlohmann::json& summary, const std::string& out_dir) {

@@ -7,6 +7,7 @@ from blockdem._core import (  # noqa: F401  (the public API)
     OutputError,
     Scenario,
     Simulation,
+    Simulation3d,
     SimulationError,
 )
 # The laws, the sensor filter and the rocking calibration (python/bind_laws.cpp, bind_calibration.cpp).
@@ -35,7 +36,7 @@ from blockdem._core import (  # noqa: F401
 )
 from blockdem.study import sweep  # noqa: F401
 
-__all__ = ["InputError", "OutputError", "Scenario", "Simulation", "SimulationError",
+__all__ = ["InputError", "OutputError", "Scenario", "Simulation", "Simulation3d", "SimulationError",
            "Motion", "housner_rocking", "integrate_record", "intensity_measures", "limit_analysis", "process_record", "read_record",
            "response_spectrum", "rigid_plastic_sliding", "sweep",
            "butterworth_filter", "butterworth_magnitude", "calibrate_rocking", "contact_point_history",

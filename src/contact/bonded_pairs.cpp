@@ -9,15 +9,6 @@
 #include "laws/mohr_coulomb_joint.hpp"
 
 namespace blockdem {
-namespace {
-
-// What "touching" means at the start: apart by no more than round-off of the body size (the
-// start overlap check allows as much the other way).
-double touching_gap_m(const Bodies& b, const PairContact& pair) {
-    return 1e-9 * std::min(b.bounding_radius_m[pair.a], b.bounding_radius_m[pair.b]);
-}
-
-}  // namespace
 
 std::size_t bond_touching_pairs(World& w) {
     const Bodies& b = w.bodies;
@@ -51,8 +42,7 @@ std::size_t bond_touching_pairs(World& w) {
 
 double bonded_gap_m(const World& w, const PairContact& pair) {
     const Bodies& b = w.bodies;
-    const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
-    return 2.0 * bond_opening_m(params) + touching_gap_m(b, pair);
+    return bonded_gap_m(b, pair, w.contact.at(b.material[pair.a], b.material[pair.b]));
 }
 
 }  // namespace blockdem

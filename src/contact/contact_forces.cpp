@@ -45,13 +45,35 @@ DashpotCoefficients joint_dashpots(const ContactParameters& p, const JointPoint&
     return {2.0 * p.h_n * std::sqrt(mass_kg * joint.kn_N_m), 2.0 * p.h_s * std::sqrt(mass_kg * joint.ks_N_m)};
 }
 
+// The two bodies of a pair as the joint law reads them: their entries, found once per pair.
+// (References, not copies: a copy per pair was spilled and copied again by the compiler.)
+struct PairMotion {
+    const Vec2& position_a_m;             ///< [m]
+    const Vec2& position_b_m;             ///< [m]
+    const Vec2& velocity_a_m_s;           ///< [m/s]
+    const Vec2& velocity_b_m_s;           ///< [m/s]
+    const double& angular_velocity_a_rad_s;  ///< [rad/s]
+    const double& angular_velocity_b_rad_s;  ///< [rad/s]
+};
+
+PairMotion pair_motion(const Bodies& b, std::uint32_t ia, std::uint32_t ib) {
+    return {b.position_m[ia], b.position_m[ib], b.velocity_m_s[ia], b.velocity_m_s[ib],
+            b.angular_velocity_rad_s[ia], b.angular_velocity_rad_s[ib]};
+}
+
 // What one pass of the per-length law over a pair shares between its points.
 struct JointPass {
-    const Bodies& b;
-    std::uint32_t ia, ib;
+    const PairMotion& motion;
     Vec2 n, t;
     const ContactParameters& params;
     double dt_s;
+};
+
+// A point's force on b and its moments about the two bodies' centres (what the pair's slot holds).
+struct PointLoad {
+    Vec2 on_b_n;             ///< [N]
+    double on_b_n_m = 0.0;   ///< [N m] torque on b
+    double on_a_n_m = 0.0;   ///< [N m] torque on a, of the force on b (the slot's sign convention)
 };
 
 // A point of a joint that is open and not bonded (a cracked point past which the crack opened,
@@ -70,11 +92,15 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
 }
 
 // The law at one point of a per-length joint: updates the point and the ledger's terms, and
-// returns the point's force on b. (Flattened: the law and the energy inline here, as the dry
-// law does in pair_law; a call per point cost a bonded wall a third of its step.)
-[[gnu::flatten]] Vec2 joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint& joint, const DashpotCoefficients& dash,
-                      ContactEnergy& energy) {
-    const Vec2 relative = relative_velocity(s.b, s.ia, s.ib, point.point_m);
+// returns the point's force on b and its moments. (Flattened: the law and the energy inline
+// here, as the dry law does in pair_law; a call per point cost a bonded wall a third of its step.)
+[[gnu::flatten]] PointLoad joint_point_step(const JointPass& s, ContactPoint& point, const JointPoint& joint,
+                                            const DashpotCoefficients& dash, ContactEnergy& energy) {
+    const PairMotion& m = s.motion;
+    const Vec2 ra = point.point_m - m.position_a_m;
+    const Vec2 rb = point.point_m - m.position_b_m;
+    const Vec2 relative = (m.velocity_b_m_s + cross(m.angular_velocity_b_rad_s, rb)) -
+                          (m.velocity_a_m_s + cross(m.angular_velocity_a_rad_s, ra));
     const ContactKinematics kin{point.overlap_m, dot(relative, s.n), dot(relative, s.t)};
     // (A dilating joint's law treats its open points itself: its trial may dip below zero
     // overlap in steady sliding and dilate back: laws/mohr_coulomb_joint.hpp.)
@@ -96,7 +122,50 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
     energy.friction_j += f.friction_work_j;
     energy.bond_breakage_j += j.bond_breakage_j;
     energy.elastic_j += joint_elastic_energy(joint, point.overlap_m, point.shear_spring_n, point.bond, point.dilation_m);
-    return f.normal_n * s.n + f.shear_n * s.t;
+    const Vec2 on_b = f.normal_n * s.n + f.shear_n * s.t;
+    return {on_b, cross(rb, on_b), cross(ra, on_b)};
+}
+
+// The stiffness and area of an end point of a per-length pair (joint_point_of, inline here:
+// the law calls it once per pair at every step).
+inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, const ContactParameters& p,
+                                  double rounding_m, std::uint32_t points) {
+    const double thickness_m = std::min(b.thickness_m[pair.a], b.thickness_m[pair.b]);
+    const double least_width_m = std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
+    double tributary_m = tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m, rounding_m);
+    if (points > 2) tributary_m /= points - 1;  // an end's share of n points (contact/sub_contacts.hpp)
+    // (The softening of a vanishing overlap applies as to a per-point contact: polygon_contact.hpp.)
+    return joint_point(p, tributary_m * pair.stiffness_scale, thickness_m);
+}
+
+// The interior points of a pair with sub-contacts (points > 2 in all), placed from this step's
+// ends; returns the work of the dashpots of those dropped. Out of line, as interior_points_law.
+[[gnu::noinline]] ContactEnergy place_interior_points(const Bodies& b, const PairContact& pair, SubContacts& sub,
+                                                      std::uint32_t points, double dt_s) {
+    const double match_distance_m = 0.05 * std::min(b.part_radius_m[pair.part_a], b.part_radius_m[pair.part_b]);
+    return dropped_sub_points_work(b, pair, sub.normal, place_sub_points(sub, pair, points, match_distance_m), dt_s);
+}
+
+// The law at the interior points of a pair with sub-contacts: twice an end's tributary length,
+// stiffness and mass share; their forces go to the first end's slot. Returns energy with their
+// terms added. Out of line: most joints have none, and inlined, its point arrays crowded the
+// ends' loop off the registers. (The pass and the energy go by value: by reference they would
+// have to live in memory through the ends' loop.)
+[[gnu::noinline, gnu::flatten]] ContactEnergy interior_points_law(const Bodies& b, const PairContact& pair,
+                                                                  const ContactParameters& params, double dt_s,
+                                                                  SubContacts& sub, JointPoint end, double reduced_mass_kg,
+                                                                  double end_share, ContactEnergy energy, PairForces& out) {
+    const PairMotion motion = pair_motion(b, pair.a, pair.b);
+    const JointPass pass{motion, pair.normal, perp(pair.normal), params, dt_s};
+    const JointPoint inner{2.0 * end.kn_N_m, 2.0 * end.ks_N_m, 2.0 * end.area_m2};
+    const DashpotCoefficients inner_dash = joint_dashpots(params, inner, 2.0 * reduced_mass_kg / end_share);
+    for (std::uint32_t k = 0; k < sub.count; ++k) {
+        const PointLoad load = joint_point_step(pass, sub.points[k], inner, inner_dash, energy);
+        out.on_b_n[0] += load.on_b_n;
+        out.torque_on_b_n_m[0] += load.on_b_n_m;
+        out.torque_on_a_n_m[0] += load.on_a_n_m;
+    }
+    return energy;
 }
 
 // The per-length joint at every point of one pair (laws/mohr_coulomb_joint.hpp): each point
@@ -107,20 +176,18 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
 // points' dashpots together give the pair the requested damping ratio. Kept apart from
 // pair_law so that the per-point law's loop is what it was. mass_sharing_points: the active
 // points of the body pair over all its part pairs (concave bodies), pair.count otherwise.
-// (Flattened, as joint_point_step: the pair's points in one body of code.)
-[[gnu::noinline, gnu::flatten]] ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
+// (Flattened, as joint_point_step: the ends' points in one body of code.)
+[[gnu::flatten]] inline ContactEnergy joint_pair_law(PairContact& pair, const Bodies& b, const ContactParameters& stored, double rounding_m,
                                                  std::uint32_t sub_contacts, SubContacts* sub, double dt_s,
                                                  std::uint32_t mass_sharing_points, PairForces& out) {
-    ContactEnergy energy;
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const std::uint32_t points = sub != nullptr && pair.count == 2 ? sub_contacts : pair.count;
-    if (points > 2) {
-        const double match_distance_m = 0.05 * std::min(b.part_radius_m[pair.part_a], b.part_radius_m[pair.part_b]);
-        energy += dropped_sub_points_work(b, pair, sub->normal, place_sub_points(*sub, pair, points, match_distance_m), dt_s);
-    }
-    const JointPass pass{b, ia, ib, pair.normal, perp(pair.normal), stored, dt_s};
-    const JointPoint joint = joint_point_of(b, pair, stored, rounding_m, points);
+    ContactEnergy energy;
+    if (points > 2) energy = place_interior_points(b, pair, *sub, points, dt_s);
+    const PairMotion motion = pair_motion(b, ia, ib);
+    const JointPass pass{motion, pair.normal, perp(pair.normal), stored, dt_s};
+    const JointPoint joint = end_joint_point(b, pair, stored, rounding_m, points);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const double end_share = pair.count == 2 ? 2.0 * (points - 1) : 1.0;
     // (An end's share: 1 / (2 (n - 1)) of the mass for an edge contact, all of it for a corner,
@@ -129,27 +196,23 @@ JointForce open_point(const JointPoint& joint, const DashpotCoefficients& dash, 
     const DashpotCoefficients dash = joint_dashpots(stored, joint, reduced_mass / (end_share * pair_share));
     double deepest_m = 0.0;
     for (std::uint32_t k = 0; k < pair.count; ++k) {
-        ContactPoint& point = pair.points[k];
-        const Vec2 on_b = joint_point_step(pass, point, joint, dash, energy);
-        out.on_b_n[k] = on_b;
-        out.torque_on_b_n_m[k] = cross(point.point_m - b.position_m[ib], on_b);
-        out.torque_on_a_n_m[k] = cross(point.point_m - b.position_m[ia], on_b);
-        deepest_m = std::max(deepest_m, point.overlap_m);
+        const PointLoad load = joint_point_step(pass, pair.points[k], joint, dash, energy);
+        out.on_b_n[k] = load.on_b_n;
+        out.torque_on_b_n_m[k] = load.on_b_n_m;
+        out.torque_on_a_n_m[k] = load.on_a_n_m;
+        deepest_m = std::max(deepest_m, pair.points[k].overlap_m);
     }
-    if (points > 2) {
-        // Interior points: twice an end's tributary length, stiffness and mass share.
-        const JointPoint inner{2.0 * joint.kn_N_m, 2.0 * joint.ks_N_m, 2.0 * joint.area_m2};
-        const DashpotCoefficients inner_dash = joint_dashpots(stored, inner, 2.0 * reduced_mass / end_share);
-        for (std::uint32_t k = 0; k < sub->count; ++k) {
-            ContactPoint& point = sub->points[k];
-            const Vec2 on_b = joint_point_step(pass, point, inner, inner_dash, energy);
-            out.on_b_n[0] += on_b;
-            out.torque_on_b_n_m[0] += cross(point.point_m - b.position_m[ib], on_b);
-            out.torque_on_a_n_m[0] += cross(point.point_m - b.position_m[ia], on_b);
-        }
-    }
+    if (points > 2) energy = interior_points_law(b, pair, stored, dt_s, *sub, joint, reduced_mass, end_share, energy, out);
     energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
     return energy;
+}
+
+// joint_pair_law out of line, for pair_law: kept apart from it so that the per-point law's loop
+// is what it was.
+[[gnu::noinline]] ContactEnergy joint_pair_law_apart(PairContact& pair, const Bodies& b, const ContactParameters& stored,
+                                                     double rounding_m, std::uint32_t sub_contacts, SubContacts* sub,
+                                                     double dt_s, std::uint32_t mass_sharing_points, PairForces& out) {
+    return joint_pair_law(pair, b, stored, rounding_m, sub_contacts, sub, dt_s, mass_sharing_points, out);
 }
 
 // The law at every point of one pair: updates the points' forces and history, and writes what
@@ -164,7 +227,7 @@ ContactEnergy pair_law(PairContact& pair, const Bodies& b, const MaterialPairs& 
     const std::uint32_t ib = pair.b;
     const ContactParameters& stored = contact.at(b.material[ia], b.material[ib]);
     if (stored.stiffness == StiffnessBasis::per_length)
-        return joint_pair_law(pair, b, stored, contact.rounding_m, contact.sub_contacts, sub, dt_s, mass_sharing_points, out);
+        return joint_pair_law_apart(pair, b, stored, contact.rounding_m, contact.sub_contacts, sub, dt_s, mass_sharing_points, out);
     const ContactParameters params = softened(stored, pair.stiffness_scale);
     const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
     const DashpotCoefficients dash = dashpot_coefficients(params, reduced_mass / mass_sharing_points);
@@ -230,12 +293,7 @@ ContactEnergy opened_points_work(const World& w, const PairContact& pair, const 
 
 JointPoint joint_point_of(const Bodies& b, const PairContact& pair, const ContactParameters& p, double rounding_m,
                           std::uint32_t points) {
-    const double thickness_m = std::min(b.thickness_m[pair.a], b.thickness_m[pair.b]);
-    const double least_width_m = std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
-    double tributary_m = tributary_length_m(pair.count, pair.points[0].point_m, pair.points[1].point_m, least_width_m, rounding_m);
-    if (points > 2) tributary_m /= points - 1;  // an end's share of n points (contact/sub_contacts.hpp)
-    // (The softening of a vanishing overlap applies as to a per-point contact: polygon_contact.hpp.)
-    return joint_point(p, tributary_m * pair.stiffness_scale, thickness_m);
+    return end_joint_point(b, pair, p, rounding_m, points);
 }
 
 void index_pairs_by_body(World& w) {
@@ -284,6 +342,33 @@ ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing
     SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
     ContactEnergy energy = pair_law(pair, w.bodies, w.contact, sub, w.dt_s, mass_sharing_points, w.pair_forces[p]);
     // Interior points exist only while the pair has its two ends (contact/sub_contacts.hpp).
+    if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
+        energy += dropped_sub_points_work(w.bodies, pair, sub->normal, drop_sub_points(*sub), w.dt_s);
+    if (opened.count > 0) energy += opened_points_work(w, pair, opened);
+    energy.deepest_pair = static_cast<std::uint32_t>(p);
+    return energy;
+}
+
+bool every_pair_per_length(const MaterialPairs& contact) {
+    for (const ContactParameters& params : contact.parameters)
+        if (params.stiffness != StiffnessBasis::per_length) return false;
+    return !contact.parameters.empty();
+}
+
+// apply_pair_law with pair_law's per-length branch taken, in one body of code (flattened).
+[[gnu::flatten]] ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
+                                                    const OpenedPoints& opened) {
+    PairContact& pair = w.contacts[p];
+    SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
+    PairForces& out = w.pair_forces[p];
+    out.count = pair.count;
+    ContactEnergy energy;
+    if (pair.count > 0) {
+        const ContactParameters& stored = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
+        energy = joint_pair_law(pair, w.bodies, stored, w.contact.rounding_m, w.contact.sub_contacts, sub, w.dt_s,
+                                mass_sharing_points, out);
+    }
+    // (The rest as apply_pair_law.)
     if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
         energy += dropped_sub_points_work(w.bodies, pair, sub->normal, drop_sub_points(*sub), w.dt_s);
     if (opened.count > 0) energy += opened_points_work(w, pair, opened);

@@ -20,8 +20,8 @@ PolygonView part_view(const Bodies& b, std::uint32_t part) {
 }
 
 // How far the open end of a per-length joint's two-point (edge-to-edge) contact may be apart
-// and the pair still keep it, as a point carrying nothing [m] (0 for other pairs). Why: the
-// per-length law gives each end of an edge contact half the face and a lone corner point 0.1
+// and the pair still keep it, as a point carrying nothing [m] (0 for its other pairs). Why:
+// the per-length law gives each end of an edge contact half the face and a lone corner point 0.1
 // of the least width (laws/mohr_coulomb_joint.hpp), so a face whose end flickers about zero
 // overlap (bricks laid exactly touching: a head joint at rest) jumped its stiffness five-fold
 // at every flicker; the energy each jump made or took never came to rest (a wall at rest on a
@@ -29,11 +29,42 @@ PolygonView part_view(const Bodies& b, std::uint32_t part) {
 // test_jointed_wall_at_rest.cpp). Kept up to joint_face_keep_fraction of the thinner body's
 // least width, and taken back as a face only when both ends touch again, the pair changes its
 // point count on a real opening or closing, once, not at every step.
-double joint_face_gap_m(const World& w, const PairContact& pair) {
+double joint_face_gap_m(const Bodies& b, const PairContact& pair) {
     if (pair.count != 2) return 0.0;
-    const Bodies& b = w.bodies;
-    if (w.contact.at(b.material[pair.a], b.material[pair.b]).stiffness != StiffnessBasis::per_length) return 0.0;
     return joint_face_keep_fraction * std::min(b.least_width_m[pair.a], b.least_width_m[pair.b]);
+}
+
+// How far pair p's points may be apart and still be kept [m], and whether its face is kept
+// whole for its sub-contacts (both below). (The pair's parameters looked up once: bonded pairs
+// asked for them twice a step.)
+struct KeptGap {
+    double gap_m = 0.0;
+    bool face_kept = false;
+};
+
+inline KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p) {
+    KeptGap kept;
+    if (pair.count == 0) return kept;
+    const Bodies& b = w.bodies;
+    const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
+    // (Bonds and dilation exist only on per-length joints: bonded_pairs.cpp, the scenario
+    // reader; a per-point pair's points never hold either.)
+    if (params.stiffness != StiffnessBasis::per_length) return kept;
+    // A bonded joint holds its points while it opens by less than its gap (bonded_pairs.hpp),
+    // or by the interior points of its sub-contacts (contact/sub_contacts.hpp).
+    if (has_intact_bond(pair))
+        kept.gap_m = bonded_gap_m(b, pair, params);
+    else if (!w.sub_contacts.empty() && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
+        kept.gap_m = bonded_gap_m(b, pair, params);
+    // A bonded joint discretised into sub-contacts stays one face while any of its points is in
+    // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
+    // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
+    kept.face_kept = kept.gap_m > 0.0 && !w.sub_contacts.empty() && w.sub_contacts[p].count > 0;
+    // A dilated joint point pushes while the faces are apart by less than its dilation.
+    if (w.contact.any_dilation) [[unlikely]]
+        kept.gap_m = std::max(kept.gap_m, dilated_gap_m(pair));
+    kept.gap_m = std::max(kept.gap_m, joint_face_gap_m(b, pair));
+    return kept;
 }
 
 }  // namespace
@@ -45,22 +76,10 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     // that moves them is their bodies'.
     const std::uint32_t part_a = pair.part_a;
     const std::uint32_t part_b = pair.part_b;
-    // A bonded joint holds its points while it opens by less than gap_m (bonded_pairs.hpp):
-    // no early exit on the boxes.
-    // (Or by the interior points of its sub-contacts: contact/sub_contacts.hpp.)
-    double gap_m = 0.0;
-    if (pair.count > 0 && has_intact_bond(pair))
-        gap_m = bonded_gap_m(w, pair);
-    else if (!w.sub_contacts.empty() && pair.count > 0 && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
-        gap_m = bonded_gap_m(w, pair);
-    // A bonded joint discretised into sub-contacts stays one face while any of its points is in
-    // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
-    // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
-    const bool face_kept = gap_m > 0.0 && !w.sub_contacts.empty() && w.sub_contacts[p].count > 0;
-    // A dilated joint point pushes while the faces are apart by less than its dilation.
-    if (pair.count > 0 && w.contact.any_dilation) [[unlikely]]
-        gap_m = std::max(gap_m, dilated_gap_m(pair));
-    gap_m = std::max(gap_m, joint_face_gap_m(w, pair));
+    // A pair that keeps points apart by a gap gets no early exit on the boxes.
+    const KeptGap kept = kept_gap_m(w, pair, p);
+    const double gap_m = kept.gap_m;
+    const bool face_kept = kept.face_kept;
     const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
     // Early exit: boxes apart by a gap means some edge normal separates the polygons, so
     // collide_polygons would return no points; the pair is updated exactly as it would be.

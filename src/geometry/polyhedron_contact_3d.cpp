@@ -74,6 +74,78 @@ EdgeAxis best_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, bool
     return best;
 }
 
+// Two boxes: the same axes in the same order as best_face_axis and best_edge_axis, projected from
+// the centres and half lengths (geometry/box_frame_3d.hpp). dots[i][j] = a's direction i . b's j.
+struct BoxPair {
+    Vec3 offset_m;        ///< [m] b's centre minus a's
+    double dots[3][3];    ///< a.directions[i] . b.directions[j]
+};
+
+BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
+    BoxPair p;
+    p.offset_m = b.centroid_m - a.centroid_m;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) p.dots[i][j] = dot(a.directions[i], b.directions[j]);
+    return p;
+}
+
+// The faces of r against the box o: o's deepest point below face f's plane is its centre's
+// projection less sum h_j |n . o_j|, the plane is r's centre's plus h_i. r_is_a says which index
+// of dots is r's.
+FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, const BoxPair& pair, bool r_is_a,
+                       bool& apart) {
+    FaceAxis best;
+    const Vec3 offset_m = r_is_a ? pair.offset_m : -pair.offset_m;  // o's centre minus r's
+    const Vec3 hr = r.box->half_lengths_m;
+    const Vec3 ho = o.box->half_lengths_m;
+    double reach_o[3];  // o's half width along r's direction i
+    double centre[3];   // o's centre along r's direction i
+    for (int i = 0; i < 3; ++i) {
+        const auto d = [&](int j) { return std::abs(r_is_a ? pair.dots[i][j] : pair.dots[j][i]); };
+        reach_o[i] = ho.x * d(0) + ho.y * d(1) + ho.z * d(2);
+        centre[i] = dot(r.directions[i], offset_m);
+    }
+    const double half_r[3] = {hr.x, hr.y, hr.z};
+    for (std::uint32_t f = 0; f < 6; ++f) {
+        const int i = r.box->face_direction[f];
+        const double separation = r.box->face_sign[f] * centre[i] - reach_o[i] - half_r[i];
+        if (separation > 0.0) { apart = true; return best; }
+        if (separation > best.separation_m) best = {separation, f};
+    }
+    return best;
+}
+
+EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair, bool& apart) {
+    EdgeAxis best;
+    const Vec3 ha = a.box->half_lengths_m;
+    const Vec3 hb = b.box->half_lengths_m;
+    const double half_a[3] = {ha.x, ha.y, ha.z};
+    const double half_b[3] = {hb.x, hb.y, hb.z};
+    for (std::uint32_t i = 0; i < 3; ++i) {
+        for (std::uint32_t j = 0; j < 3; ++j) {
+            Vec3 axis = cross(a.directions[i], b.directions[j]);
+            const double l = length(axis);
+            if (l < 1e-6) continue;  // parallel edges: their plane's normal is a face axis already tested
+            const double inverse_l = 1.0 / l;
+            axis = inverse_l * axis;
+            // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index (the
+            // directions are perpendicular unit vectors), and likewise for b: the dots already taken.
+            const std::uint32_t i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const double reach_a =
+                inverse_l * (half_a[i1] * std::abs(pair.dots[i2][j]) + half_a[i2] * std::abs(pair.dots[i1][j]));
+            const double reach_b =
+                inverse_l * (half_b[j1] * std::abs(pair.dots[i][j2]) + half_b[j2] * std::abs(pair.dots[i][j1]));
+            const double centre = dot(axis, pair.offset_m);
+            const double along = centre - reach_a - reach_b;     // b beyond a along +axis
+            const double against = -centre - reach_a - reach_b;  // b beyond a along -axis
+            if (along > 0.0 || against > 0.0) { apart = true; return best; }
+            const double separation = std::max(along, against);
+            if (separation > best.separation_m) best = {separation, along >= against ? axis : -axis, i, j};
+        }
+    }
+    return best;
+}
+
 // The edge of p along direction d whose middle reaches furthest along axis (sign +1) or least (-1).
 std::uint32_t supporting_edge(const PosedPolyhedron& p, std::uint32_t direction, Vec3 axis, double sign) {
     std::uint32_t best = 0;
@@ -146,11 +218,16 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
         const double slack = 1e-9 * dot(side, side);
         const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
         clipped.clear();
+        // Each corner's height over the side plane once (a corner is "here" once and "next" once).
+        auto& heights = scratch.heights_m2;
+        heights.resize(polygon.size());
+        for (std::size_t i = 0; i < polygon.size(); ++i) heights[i] = dot(side, polygon[i].point_m) - plane;
         for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const std::size_t i_next = i + 1 == polygon.size() ? 0 : i + 1;
             const ClipCorner3d& here = polygon[i];
-            const ClipCorner3d& next = polygon[(i + 1) % polygon.size()];
-            const double dh = dot(side, here.point_m) - plane;
-            const double dn = dot(side, next.point_m) - plane;
+            const ClipCorner3d& next = polygon[i_next];
+            const double dh = heights[i];
+            const double dn = heights[i_next];
             const bool here_in = dh <= slack;
             if (here_in) clipped.push_back(here);
             if (here_in == (dn <= slack)) continue;
@@ -163,7 +240,9 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
             } else {  // two reference sides meet: a corner of the reference face inside the incident face
                 const std::size_t u = ref_corners[k];
                 const std::size_t v = ref_corners[(k + 1) % m];
-                const bool nearer_u = length(c.point_m - p0) <= length(c.point_m - p1);
+                const Vec3 to_u = c.point_m - p0;
+                const Vec3 to_v = c.point_m - p1;
+                const bool nearer_u = dot(to_u, to_u) <= dot(to_v, to_v);
                 c.feature_reference = feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(nearer_u ? u : v));
                 c.feature_incident = feature_3d(FeatureKind3d::face, inc_face);
             }
@@ -189,11 +268,13 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
 std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedron& b, ContactScratch3d& scratch,
                                   std::vector<ContactGeometry3d>& out) {
     bool apart = false;
-    const FaceAxis face_a = best_face_axis(a, b, apart);
+    const bool boxes = a.box != nullptr && a.box->is_box && b.box != nullptr && b.box->is_box;
+    const BoxPair pair = boxes ? box_pair(a, b) : BoxPair{};
+    const FaceAxis face_a = boxes ? box_face_axis(a, b, pair, true, apart) : best_face_axis(a, b, apart);
     if (apart) return 0;
-    const FaceAxis face_b = best_face_axis(b, a, apart);
+    const FaceAxis face_b = boxes ? box_face_axis(b, a, pair, false, apart) : best_face_axis(b, a, apart);
     if (apart) return 0;
-    const EdgeAxis edge = best_edge_axis(a, b, apart);
+    const EdgeAxis edge = boxes ? box_edge_axis(a, b, pair, apart) : best_edge_axis(a, b, apart);
     if (apart) return 0;
     const std::size_t first = out.size();
     // Overlaps (>= 0); a candidate replaces the preferred one only when it is clearly smaller.
@@ -211,7 +292,7 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
         return x.feature_a != y.feature_a ? x.feature_a < y.feature_a : x.feature_b < y.feature_b;
     };
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
-    std::sort(begin, out.end(), key_less);
+    if (!std::is_sorted(begin, out.end(), key_less)) std::sort(begin, out.end(), key_less);
     // A key twice (a reference corner found from both its sides): the first stands for it.
     out.erase(std::unique(begin, out.end(),
                           [](const ContactGeometry3d& x, const ContactGeometry3d& y) {

@@ -6,7 +6,8 @@
 
 namespace blockdem {
 
-History3dWriter::History3dWriter(const std::filesystem::path& file, const World3d& w) : out_(file) {
+History3dWriter::History3dWriter(const std::filesystem::path& file, const World3d& w, OutputFile::Mode mode)
+    : out_(file, mode) {
     std::string header = "t_s";
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
         if (w.kinds[i] == BodyKind3d::fixed) continue;
@@ -15,7 +16,7 @@ History3dWriter::History3dWriter(const std::filesystem::path& file, const World3
                                    "vx_m_s", "vy_m_s", "vz_m_s"})
             fmt::format_to(std::back_inserter(header), ",{}.{}", w.bodies[i].name, column);
     }
-    out_.append(header + "\n");
+    if (mode == OutputFile::Mode::replace) out_.append(header + "\n");
 }
 
 void History3dWriter::record(const World3d& w, const ResponseMonitor3d& monitor) {

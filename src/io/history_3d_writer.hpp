@@ -16,9 +16,12 @@ namespace blockdem {
 
 class History3dWriter {
 public:
-    History3dWriter(const std::filesystem::path& file, const World3d& w);
+    /// mode append: the file already holds the header and the rows before a restart.
+    History3dWriter(const std::filesystem::path& file, const World3d& w, OutputFile::Mode mode = OutputFile::Mode::replace);
     void record(const World3d& w, const ResponseMonitor3d& monitor);
     void finish() { out_.close(); }
+    /// Writes the rows buffered so far (before a state file is saved).
+    void flush() { out_.flush(); }
 
 private:
     OutputFile out_;

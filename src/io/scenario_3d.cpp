@@ -382,6 +382,8 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     s.max_overlap_ratio = settings.max_overlap_ratio;
     s.world = build_world_3d(top, file, file.parent_path(), s.assembly_notes);
     s.world.gravity_m_s2 = settings.gravity_m_s2;
+    s.world.duration_s = settings.duration_s;
+    s.world.output_interval_s = settings.output_interval_s;
     if (auto output = top.optional_table("output")) {
         // (Read by the 2-D reader, so that the words are the same; two of its keys have nothing
         // behind them in 3-D yet, and are refused rather than ignored.)

@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <cstdio>
+#include <functional>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -714,11 +715,14 @@ WorldState read_world(const StateGroup& root) {
 
 }  // namespace
 
-void write_state_file(const std::filesystem::path& file, const World& w, const StateFileInfo& info,
-                      const std::vector<const StatePart*>& parts) {
+namespace {
+
+// The file is built in memory (HDF5's core driver) and written through OutputFile, so that a
+// full disk is met by the project's own checks: the library never holds a half-written file.
+// write_groups fills the root after the run's facts.
+void write_state_image(const std::filesystem::path& file, const StateFileInfo& info, double time_s,
+                       std::int64_t step_index, const std::function<void(StateGroup&)>& write_groups) {
     quiet_hdf5();
-    // The file is built in memory (HDF5's core driver) and written through OutputFile, so that a
-    // full disk is met by the project's own checks: the library never holds a half-written file.
     std::string image;
     {
         Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
@@ -734,13 +738,9 @@ void write_state_file(const std::filesystem::path& file, const World& w, const S
         root.set("scenario_toml", info.scenario_toml);
         root.set("run_folder", info.run_folder);
         root.set("output_rows", info.output_rows);
-        root.set("time_s", w.time_s);
-        root.set("step_index", w.step_index);
-        write_world(root, capture_state(w));
-        for (const StatePart* part : parts) {
-            StateGroup g = root.create_group(part->state_group());
-            part->save_state(g);
-        }
+        root.set("time_s", time_s);
+        root.set("step_index", step_index);
+        write_groups(root);
         const ssize_t size = H5Fflush(id, H5F_SCOPE_GLOBAL) < 0 ? -1 : H5Fget_file_image(id, nullptr, 0);
         if (size <= 0) throw OutputError(fmt::format("{}: cannot complete the state file in memory", file.string()));
         image.resize(static_cast<std::size_t>(size));
@@ -765,6 +765,33 @@ void write_state_file(const std::filesystem::path& file, const World& w, const S
     }
 }
 
+void write_parts(StateGroup& root, const std::vector<const StatePart*>& parts) {
+    for (const StatePart* part : parts) {
+        StateGroup g = root.create_group(part->state_group());
+        part->save_state(g);
+    }
+}
+
+}  // namespace
+
+void write_state_file(const std::filesystem::path& file, const World& w, const StateFileInfo& info,
+                      const std::vector<const StatePart*>& parts) {
+    write_state_image(file, info, w.time_s, w.step_index, [&](StateGroup& root) {
+        write_world(root, capture_state(w));
+        write_parts(root, parts);
+    });
+}
+
+void write_state_file(const std::filesystem::path& file, int dimension, double time_s, std::int64_t step_index,
+                      const StateFileInfo& info, const std::function<void(StateGroup&)>& write_world,
+                      const std::vector<const StatePart*>& parts) {
+    write_state_image(file, info, time_s, step_index, [&](StateGroup& root) {
+        root.set("dimension", static_cast<std::int64_t>(dimension));
+        write_world(root);
+        write_parts(root, parts);
+    });
+}
+
 StateFile::StateFile(const std::filesystem::path& file) : file_(file) {
     quiet_hdf5();
     const InputLocation where{file.string(), "", 0, 0};
@@ -784,10 +811,18 @@ StateFile::StateFile(const std::filesystem::path& file) : file_(file) {
     info_.scenario_toml = root_->text("scenario_toml");
     info_.run_folder = root_->text("run_folder");
     info_.output_rows = root_->integer("output_rows");
-    world_ = read_world(*root_);
+    // (A 2-D file has no dimension attribute: its world is in the fixed groups read here; a 3-D
+    // file keeps its world in a part's group, io/state_file_3d.hpp.)
+    dimension_ = root_->has("dimension") ? static_cast<int>(root_->integer("dimension")) : 2;
+    if (dimension_ == 2) world_ = read_world(*root_);
 }
 
 void StateFile::restore(StatePart& part) const { part.restore_state(root_->open_group(part.state_group())); }
+void write_ledger(StateGroup group, const EnergyLedger& ledger) { write_energy(std::move(group), ledger); }
+EnergyLedger read_ledger(const StateGroup& group) { return read_energy(group); }
+
+double StateFile::time_s() const { return root_->number("time_s"); }
+std::int64_t StateFile::step_index() const { return root_->integer("step_index"); }
 
 std::filesystem::path state_file_name(const std::filesystem::path& run_dir, double t_s) {
     return run_dir / "state" / fmt::format("t_{:.6f}s.h5", t_s);

@@ -13,6 +13,7 @@
 // disk) never leaves a torn state file and never replaces an earlier one.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -93,16 +94,34 @@ struct StateFileInfo {
 void write_state_file(const std::filesystem::path& file, const World& w, const StateFileInfo& info,
                       const std::vector<const StatePart*>& parts);
 
+/// Writes the state of a world of another dimension (3-D: io/state_file_3d.hpp): the run's facts,
+/// the attribute dimension, the world's groups by write_world, and every part's group. Throws
+/// OutputError.
+void write_state_file(const std::filesystem::path& file, int dimension, double time_s, std::int64_t step_index,
+                      const StateFileInfo& info, const std::function<void(StateGroup&)>& write_world,
+                      const std::vector<const StatePart*>& parts);
+
+/// The energy ledger's group (the same in both dimensions): /energy in a 2-D file.
+void write_ledger(StateGroup group, const EnergyLedger& ledger);
+EnergyLedger read_ledger(const StateGroup& group);
+
 /// An open state file. Throws InputError naming the file and the item for a missing, corrupt or
 /// foreign file.
 class StateFile {
 public:
     explicit StateFile(const std::filesystem::path& file);
+    /// The 2-D world (empty for a 3-D file: its world is a part's group).
     const WorldState& world() const { return world_; }
+    /// 2 or 3 (a file without the attribute is 2-D).
+    int dimension() const { return dimension_; }
+    double time_s() const;             ///< [s] of the state
+    std::int64_t step_index() const;   ///< the step the run goes on from
     const StateFileInfo& info() const { return info_; }
     /// Restores part from its group; InputError when the file has none.
     void restore(StatePart& part) const;
     bool has_group(const std::string& name) const { return root_->has(name); }
+    /// The file's root, for a world of another dimension to read its groups.
+    const StateGroup& root() const { return *root_; }
     const std::filesystem::path& path() const { return file_; }
 
 private:
@@ -110,6 +129,7 @@ private:
     std::shared_ptr<StateGroup> root_;
     WorldState world_;
     StateFileInfo info_;
+    int dimension_ = 2;
 };
 
 /// The name of a state file at time t_s in a run folder: state/t_0.500000s.h5.

@@ -5,9 +5,10 @@
 //   bodies_NNNNNN.vtp  the faces of every body at one time, cell data per face: body (index),
 //                      tilt_rad and speed_m_s of its body;
 //   bodies.pvd         the frames with their times, so that ParaView plays them as a series.
-// ASCII, as the 2-D writer (io/vtk_writer.hpp). Frames at the first step at or after each
-// multiple of the frame interval.
+// ASCII, as the 2-D writer (io/vtk_writer.hpp). The run calls record at its output times; a
+// frame is taken at the first of them at or after each multiple of the frame interval.
 #include <filesystem>
+#include <utility>
 #include <vector>
 
 #include "world/response_monitor_3d.hpp"
@@ -23,6 +24,10 @@ public:
     /// Writes bodies.pvd.
     void finish();
     std::size_t frames_written() const { return times_s_.size(); }
+    /// [s] the frames' times, in order (a state file keeps them).
+    const std::vector<double>& frame_times_s() const { return times_s_; }
+    /// A restarted run: the frames written before its state stay listed, the next is numbered after them.
+    void continue_after(std::vector<double> times_s) { times_s_ = std::move(times_s); }
 
 private:
     std::filesystem::path dir_;

@@ -1,12 +1,14 @@
 #pragma once
 // A 3-D scenario, end to end, as `blockdem run` does it (run/run_scenario.cpp dispatches here on
-// `dimension = 3`): load it (io/scenario_3d.hpp), step the world (world/step_3d.hpp) to the end,
-// and write history.csv, energy.csv, VTK frames and summary.json (docs/3d.md, "Outputs").
-//
-// The 2-D ScenarioRun's loop is not shared: it is built around World, its recorders, state files
-// and restarts. What the two share is below it (the step's order, the ledger, energy.csv's rows,
-// the output folder's rules) and the request and its callbacks. State files and restarts are 2-D
-// only for now, and refused here.
+// `dimension = 3`, or on a 3-D state file given to --restart): load it (io/scenario_3d.hpp), step
+// the world to the end in the run loop both dimensions share (world/simulation.hpp, RunLoopOf),
+// and write history.csv, energy.csv, VTK frames, summary.json and run_info.json (docs/3d.md,
+// "Outputs"). What is 3-D here is only what the world is: its writers, its guards
+// (world/run_checks_3d.hpp) and its state (io/state_file_3d.hpp); the stop request, progress,
+// save points, state file names, restarts' cut files and run_info.json are the 2-D run's
+// (run/run_files.hpp, io/run_restart.hpp).
+#include <optional>
+
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
@@ -14,11 +16,13 @@
 
 namespace blockdem {
 
-/// Runs the scenario already parsed from request.scenario. Throws InputError for bad input or an
-/// output folder that holds another run (nothing written). A run that fails once started
-/// (SimulationError, OutputError) writes summary.json with status "failed" and rethrows; a stop
-/// request ends it after the current step with status "interrupted". Returns the summary with
-/// "run_folder", "wall_time_s" and "state_files" (empty) added.
-nlohmann::json run_scenario_3d(toml::table root, const RunRequest& request);
+/// Runs the scenario (root: already parsed from request.scenario; nullopt: read it, or with a
+/// restart the run folder's scenario.toml). Throws InputError for bad input, a state file that
+/// does not fit, or an output folder that holds another run (nothing written). A run that fails
+/// once started (SimulationError, OutputError) writes summary.json with status "failed" and
+/// rethrows; a stop request ends it after the current step with status "interrupted" and a
+/// state file to go on from. Returns the summary with "run_folder", "wall_time_s" and
+/// "state_files" added.
+nlohmann::json run_scenario_3d(std::optional<toml::table> root, const RunRequest& request);
 
 }  // namespace blockdem

@@ -26,6 +26,7 @@
 #include "io/summary_writer.hpp"
 #include "io/toml_format.hpp"
 #include "io/vtk_writer.hpp"
+#include "run/run_files.hpp"
 #include "world/response_monitor.hpp"
 #include "world/simulation_error.hpp"
 #include "world/world_state.hpp"
@@ -111,46 +112,6 @@ void check_restart(const World& w, const StateFile& state, const fs::path& scena
                          fmt::format("the state is at t = {:g} s, after the end of the run (simulation.duration = {:g} "
                                      "s); give a longer duration with --set simulation.duration=...",
                                      s.time_s, w.settings.duration_s));
-}
-
-// Without its duration (a restart may go on longer than the run it continues).
-std::string without_duration(const std::string& scenario_toml) {
-    try {
-        toml::table root = toml::parse(scenario_toml);
-        if (auto* simulation = root["simulation"].as_table()) simulation->erase("duration");
-        std::ostringstream text;
-        text << root;
-        return text.str();
-    } catch (const toml::parse_error&) {
-        return scenario_toml;  // (not a scenario: it differs from any)
-    }
-}
-
-// The steps of the state files asked for: --save-state times and --save-state-every.
-SavePoints save_points(const World& w, const RunRequest& request) {
-    SavePoints points;
-    for (double t_s : request.save_state_times_s) {
-        if (!(t_s >= 0.0) || t_s > w.settings.duration_s + 0.5 * w.dt_s)
-            throw InputError({"--save-state", "", 0, 0},
-                             fmt::format("{:g} s is outside the run (0 to {:g} s)", t_s, w.settings.duration_s));
-        points.steps.push_back(step_at_time(w, t_s));
-    }
-    if (request.save_state_every_s > 0.0)
-        points.every_steps = std::max<std::int64_t>(1, std::llround(request.save_state_every_s / w.dt_s));
-    return points;
-}
-
-// A restart into a new folder takes the frames written before the state with it, so that the
-// folder is complete (the .pvd collections list them).
-void copy_vtk_frames(const fs::path& from, const fs::path& to, std::int64_t frames) {
-    for (std::int64_t i = 0; i < frames; ++i)
-        for (const char* kind : {"bodies", "contacts"}) {
-            const fs::path file = from / fmt::format("{}_{:06d}.vtp", kind, i);
-            if (!fs::exists(file)) continue;  // (contacts = false)
-            std::error_code ec;
-            fs::copy_file(file, to / file.filename(), fs::copy_options::overwrite_existing, ec);
-            if (ec) throw OutputError(fmt::format("{}: cannot copy it to {}: {}", file.string(), to.string(), ec.message()));
-        }
 }
 
 }  // namespace
@@ -261,7 +222,7 @@ void ScenarioRun::Parts::open_outputs(bool keep_trace) {
             // The monitor's group is required; a part the state lacks (VTK frames that the saved
             // run did not write) starts afresh.
             if (part == &*monitor_state || start.restart->has_group(part->state_group())) start.restart->restore(*part);
-    if (start.restart && !in_place && vtk) copy_vtk_frames(start.run_folder / "vtk", out_dir / "vtk", vtk->frames_written());
+    if (start.restart && !in_place && vtk) copy_vtk_frames(start.run_folder / "vtk", out_dir / "vtk", vtk->frames_written(), {"bodies", "contacts"});
 }
 
 RunOptions ScenarioRun::Parts::run_options() {
@@ -284,24 +245,14 @@ RunOptions ScenarioRun::Parts::run_options() {
 }
 
 void ScenarioRun::Parts::save_state(const World& w, SaveReason reason) {
-    // A state file is named by the time asked for (the step nearest 0.3 s may be at 0.2999994 s).
-    auto name_time = [&] {
-        if (reason == SaveReason::at_time)
-            for (double t_s : request.save_state_times_s)
-                if (step_at_time(w, t_s) == w.step_index) return t_s;
-        if (reason == SaveReason::every)
-            return static_cast<double>(w.step_index / points.every_steps) * request.save_state_every_s;
-        return static_cast<double>(w.step_index) * w.dt_s;
-    };
     // The rows the state counts must be on disk with it.
     history->flush();
     energy->flush();
     if (sensors) sensors->flush();
     if (interfaces) interfaces->flush();
-    state_info.reason = reason == SaveReason::stopped ? "interrupted" : reason == SaveReason::every ? "save_state_every"
-                                                                                                      : "save_state";
+    state_info.reason = state_reason(reason);
     state_info.output_rows = output_rows_before(w, w.step_index);
-    const fs::path file = state_file_name(out_dir, name_time());
+    const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
     std::vector<const StatePart*> const_parts(state_parts.begin(), state_parts.end());
     write_state_file(file, w, state_info, const_parts);
     state_files.push_back(file.string());
@@ -335,12 +286,15 @@ nlohmann::json ScenarioRun::Parts::summary_with(const std::string& status, const
 // What differs from one invocation to the next, kept out of summary.json so that a restarted
 // run's summary is the uninterrupted run's, byte for byte.
 nlohmann::json ScenarioRun::Parts::run_info(const std::string& status) const {
-    return nlohmann::json{{"status", status},
-                          {"wall_time_s", wall_s()},
-                          {"started_at_time_s", start.restart ? start.restart->world().time_s : 0.0},
-                          {"restarted_from", start.restart ? nlohmann::json(fs::absolute(request.restart).string()) : nullptr},
-                          {"initial_state", start.initial ? nlohmann::json(fs::absolute(loaded.initial_state).string()) : nullptr},
-                          {"state_files", state_files}};
+    RunInvocation run;
+    run.wall_s = wall_s();
+    if (start.restart) {
+        run.started_at_time_s = start.restart->world().time_s;
+        run.restarted_from = request.restart;
+    }
+    if (start.initial) run.initial_state = loaded.initial_state;
+    run.state_files = state_files;
+    return run_info_json(status, run);
 }
 
 void ScenarioRun::Parts::write_failed_summary(const std::string& error) {

@@ -10,6 +10,7 @@
 // lowest face and h the centroid's height above it: the centroid ended beyond that edge, so the
 // body did not rock back (the 2-D outcome's rule, world/outcome.hpp, on the initial base).
 // Slip: the centroid's horizontal displacement minus the table's.
+#include <utility>
 #include <vector>
 
 #include "world/world_3d.hpp"
@@ -45,6 +46,8 @@ public:
     void update(const World3d& w);
     const std::vector<BodyResponse3d>& bodies() const { return bodies_; }
     bool overturned(const World3d& w, std::size_t i) const;
+    /// Puts back what a state file kept (io/state_file_3d.hpp); one entry per body.
+    void restore(std::vector<BodyResponse3d> bodies) { bodies_ = std::move(bodies); }
 
 private:
     std::vector<BodyResponse3d> bodies_;

@@ -19,11 +19,43 @@ void check_energy_balance_3d(const World3d& w, double max_error, double start_bo
     for (std::size_t i = 1; i < w.bodies.size(); ++i)
         if (length(w.bodies[i].velocity_at_t_m_s) > length(w.bodies[fastest].velocity_at_t_m_s)) fastest = i;
     const CriticalTimeStep3d live = live_time_step_3d(w);
+    const StabilityWatch3d& watch = w.stability;
+    const std::string least =
+        watch.first_exceeded_s < 0.0 ? std::string()
+                                     : fmt::format("; {:.4g} s for the contacts body '{}' had at t = {:.6g} s", watch.least_limit_s,
+                                                   watch.least_limit_body, watch.least_limit_time_s);
     throw SimulationError(fmt::format(
         "unstable: energy balance error {:.3g} (of the largest term, {:.4g} J) exceeds {:g} at t = {:.6g} s (step {}); "
-        "fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s; stable limit {:.4g} s at the start, {:.4g} s now)",
+        "fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s; stable limit {:.4g} s at the start, {:.4g} s now{})",
         error, w.ledger.scale_j(), max_error, w.time_s, w.steps, w.bodies[fastest].name,
-        length(w.bodies[fastest].velocity_at_t_m_s), w.dt_s, start_bound_s, live.dt_s));
+        length(w.bodies[fastest].velocity_at_t_m_s), w.dt_s, start_bound_s, live.dt_s, least));
+}
+
+void watch_live_time_step_3d(World3d& w) {
+    if (w.steps % live_limit_every_3d != 0) return;
+    const CriticalTimeStep3d bound = live_time_step_3d(w);
+    if (!std::isfinite(bound.dt_s)) return;  // (no dynamic body carries a point)
+    StabilityWatch3d& watch = w.stability;
+    // (The 3-D start bound is the Gershgorin bound itself, world/world_3d_start.hpp, so the live
+    // one is compared with dt directly; the 2-D watch scales a highest-mode limit instead.)
+    if (watch.least_limit_s == 0.0 || bound.dt_s < watch.least_limit_s) {
+        watch.least_limit_s = bound.dt_s;
+        watch.least_limit_body = w.bodies[bound.body].name;
+        watch.least_limit_time_s = w.time_s;
+    }
+    if (w.dt_s > bound.dt_s && watch.first_exceeded_s < 0.0) {
+        watch.first_exceeded_s = w.time_s;
+        watch.exceeded_body = w.bodies[bound.body].name;
+    }
+}
+
+std::string live_time_step_warning_3d(const World3d& w) {
+    const StabilityWatch3d& s = w.stability;
+    if (s.first_exceeded_s < 0.0) return "";
+    return fmt::format(
+        "dt = {:g} s was above the stable limit of the live contacts from t = {:.6g} s (body '{}'; least {:.4g} s, body "
+        "'{}' at t = {:.6g} s): the result may be wrong; rerun with a smaller dt (blockdem converge)",
+        w.dt_s, s.first_exceeded_s, s.exceeded_body, s.least_limit_s, s.least_limit_body, s.least_limit_time_s);
 }
 
 std::vector<double> least_widths_m(const World3d& w) {

@@ -9,24 +9,29 @@
 #include <utility>
 
 #include "world/step.hpp"
+#include "world/step_3d.hpp"
 
 namespace blockdem {
 
-std::int64_t total_steps(const World& w) {
-    return static_cast<std::int64_t>(std::llround(w.settings.duration_s / w.dt_s));
+template <class W>
+std::int64_t total_steps(const W& w) {
+    return static_cast<std::int64_t>(std::llround(end_time_s(w) / w.dt_s));
 }
 
-std::int64_t steps_per_output(const World& w) {
+template <class W>
+std::int64_t steps_per_output(const W& w) {
     // Clamped as a double before the cast: output_interval = 1e300 s means "only the ends".
-    return static_cast<std::int64_t>(std::clamp(std::round(w.settings.output_interval_s / w.dt_s), 1.0, 1e18));
+    return static_cast<std::int64_t>(std::clamp(std::round(output_interval_s(w) / w.dt_s), 1.0, 1e18));
 }
 
-std::int64_t output_rows_before(const World& w, std::int64_t n) {
+template <class W>
+std::int64_t output_rows_before(const W& w, std::int64_t n) {
     // The rows of the steps k < n with k % every == 0 (the last step's row comes at k = n = steps).
     return n <= 0 ? 0 : (n - 1) / steps_per_output(w) + 1;
 }
 
-std::int64_t step_at_time(const World& w, double t_s) {
+template <class W>
+std::int64_t step_at_time(const W& w, double t_s) {
     return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::llround(t_s / w.dt_s)), 0, total_steps(w));
 }
 
@@ -38,9 +43,10 @@ bool save_point_due(const SavePoints& points, std::int64_t n) {
 }
 
 // Every recorder is finished (each closes its own files), then the first failure is rethrown.
-void finish_all(const World& w, const std::vector<Recorder*>& recorders) {
+template <class W>
+void finish_all(const W& w, const std::vector<RecorderOf<W>*>& recorders) {
     std::exception_ptr first_error;
-    for (Recorder* r : recorders) {
+    for (RecorderOf<W>* r : recorders) {
         try {
             r->finish(w);
         } catch (...) {
@@ -52,17 +58,19 @@ void finish_all(const World& w, const std::vector<Recorder*>& recorders) {
 
 }  // namespace
 
-RunLoop::RunLoop(World& w, RunOptions options)
+template <class W>
+RunLoopOf<W>::RunLoopOf(W& w, RunOptionsOf<W> options)
     : w_(w),
       options_(std::move(options)),
       steps_(total_steps(w)),
       every_(steps_per_output(w)),
-      first_(w.step_index),
+      first_(step_index(w)),
       started_(std::chrono::steady_clock::now()),
       last_report_(started_) {}
 
-void RunLoop::begin_step() {
-    const std::int64_t n = w_.step_index;
+template <class W>
+void RunLoopOf<W>::begin_step() {
+    const std::int64_t n = step_index(w_);
     // (A restored run does not save again the state it started from.)
     const auto& at = options_.save_points.steps;
     if (options_.on_save_point && (n > first_ || first_ == 0) && save_point_due(options_.save_points, n))
@@ -72,25 +80,27 @@ void RunLoop::begin_step() {
     if (options_.on_step) options_.on_step(w_);
     output_now_ = n % every_ == 0 || n == steps_;
     if (output_now_)
-        for (Recorder* r : options_.recorders) r->record(w_);
+        for (RecorderOf<W>* r : options_.recorders) r->record(w_);
     if (n == steps_) ended_ = true;
 }
 
-void RunLoop::end_step() {
-    const std::int64_t n = w_.step_index;
+template <class W>
+void RunLoopOf<W>::end_step() {
+    const std::int64_t n = step_index(w_);
     step_end(w_);
     begun_ = false;
     if (options_.on_progress && (n & 255) == 0) {
         const auto now = std::chrono::steady_clock::now();
         if (now - last_report_ > std::chrono::seconds(1)) {
             last_report_ = now;
-            options_.on_progress({w_.time_s, w_.settings.duration_s, w_.step_index,
+            options_.on_progress({w_.time_s, end_time_s(w_), step_index(w_),
                                   std::chrono::duration<double>(now - started_).count()});
         }
     }
 }
 
-void RunLoop::fail_and_rethrow() {
+template <class W>
+void RunLoopOf<W>::fail_and_rethrow() {
     failed_ = true;
     ended_ = true;
     // Keep what was written readable; a second failure (the same full disk) must not hide the
@@ -105,7 +115,8 @@ void RunLoop::fail_and_rethrow() {
     throw;
 }
 
-std::int64_t RunLoop::advance(std::int64_t steps) {
+template <class W>
+std::int64_t RunLoopOf<W>::advance(std::int64_t steps) {
     if (failed_) throw std::logic_error("the run failed earlier: it cannot go on");
     std::int64_t taken = 0;
     try {
@@ -128,18 +139,19 @@ std::int64_t RunLoop::advance(std::int64_t steps) {
     return taken;
 }
 
-void RunLoop::stop() {
+template <class W>
+void RunLoopOf<W>::stop() {
     if (ended_) return;
     try {
         if (!begun_) begin_step();
         if (ended_) return;  // (the start was the end)
         // The time reached is the last row of every file, also between output times.
         if (!output_now_)
-            for (Recorder* r : options_.recorders) r->record(w_);
+            for (RecorderOf<W>* r : options_.recorders) r->record(w_);
         if (options_.on_save_point) {
             // The world stays at the time recorded last (the summary reports it); the state to
             // go on from is the one after this step.
-            World next = w_;
+            W next = w_;
             step_end(next);
             options_.on_save_point(next, SaveReason::stopped);
         }
@@ -150,11 +162,23 @@ void RunLoop::stop() {
     }
 }
 
-void RunLoop::finish() {
+template <class W>
+void RunLoopOf<W>::finish() {
     if (finished_) return;
     finished_ = true;
     finish_all(w_, options_.recorders);
 }
+
+template class RunLoopOf<World>;
+template class RunLoopOf<World3d>;
+template std::int64_t total_steps(const World&);
+template std::int64_t total_steps(const World3d&);
+template std::int64_t steps_per_output(const World&);
+template std::int64_t steps_per_output(const World3d&);
+template std::int64_t output_rows_before(const World&, std::int64_t);
+template std::int64_t output_rows_before(const World3d&, std::int64_t);
+template std::int64_t step_at_time(const World&, double);
+template std::int64_t step_at_time(const World3d&, double);
 
 RunEnd run_simulation(World& w, const RunOptions& options) {
     RunLoop loop(w, options);

@@ -56,6 +56,7 @@ void size_pose_arrays(World3d& w) {
     s.world_vertices_m.resize(s.vertex_start[n]);
     s.world_normals.resize(s.face_start[n]);
     s.world_directions.resize(s.direction_start[n]);
+    s.angular_velocity_world_rad_s.resize(n);
     s.boxes.resize(n);
     s.is_static.resize(n);
 }
@@ -76,6 +77,8 @@ void pose_body(World3d& w, std::size_t i) {
         s.world_normals[s.face_start[i] + k] = rotate(b.orientation, b.shape.face_normals[k]);
     for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
         s.world_directions[s.direction_start[i] + k] = rotate(b.orientation, w.edges[i].directions[k]);
+    // The drift turned the body about this axis, so its world direction is the same at both ends.
+    s.angular_velocity_world_rad_s[i] = rotate(b.orientation, b.angular_velocity_body_rad_s);
     s.boxes[i] = box;
     s.is_static[i] = w.kinds[i] != BodyKind3d::dynamic;
 }
@@ -83,7 +86,7 @@ void pose_body(World3d& w, std::size_t i) {
 PosedPolyhedron posed(const World3d& w, std::uint32_t i) {
     const WorldScratch3d& s = w.scratch;
     return {&w.bodies[i].shape, &w.edges[i], &s.world_vertices_m[s.vertex_start[i]], &s.world_normals[s.face_start[i]],
-            s.world_directions.data() + s.direction_start[i], w.bodies[i].position_m};
+            s.world_directions.data() + s.direction_start[i], w.bodies[i].position_m, &w.box_frames[i]};
 }
 
 // The mass a pair's dashpots use (docs/physics.md, "Which mass the damping uses").
@@ -133,9 +136,7 @@ void find_contacts(World3d& w) {
 Vec3 point_velocity(const World3d& w, std::uint32_t i, Vec3 point_m) {
     const RigidBody3d& b = w.bodies[i];
     if (w.kinds[i] != BodyKind3d::dynamic) return b.velocity_m_s;
-    // The drift turned the body about this axis, so its world direction is the same at both ends.
-    const Vec3 omega_world = rotate(b.orientation, b.angular_velocity_body_rad_s);
-    return b.velocity_m_s + cross(omega_world, point_m - b.position_m);
+    return b.velocity_m_s + cross(w.scratch.angular_velocity_world_rad_s[i], point_m - b.position_m);
 }
 
 // The energy terms of the law, totalled in deterministic chunks (world/parallel.hpp, rule 3).
@@ -219,7 +220,7 @@ struct BodyTotals {
 
 }  // namespace
 
-void step_3d(World3d& w) {
+void step_begin(World3d& w) {
     const double dt = w.dt_s;
     const double t = w.time_s;
     const Vec3 d_now = table_displacement(w.table, t);
@@ -255,7 +256,11 @@ void step_3d(World3d& w) {
         ledger.initial_gravitational_j = ledger.gravitational_j;
     }
     ledger.peak_scale_j = std::max(ledger.peak_scale_j, ledger.current_scale_j());
-    parallel_for(n, [&](std::ptrdiff_t i) {
+}
+
+void step_end(World3d& w) {
+    const double dt = w.dt_s;
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
         if (w.kinds[i] == BodyKind3d::dynamic) update_position_3d(w.bodies[i], dt);
     });
     w.time_s += dt;

@@ -14,7 +14,18 @@
 
 namespace blockdem {
 
+/// First half of a step, 1 to 6 up to the drift: the world then holds a complete state at t
+/// (contacts, forces, velocities at t and to t + dt/2, the ledger at t), which the run's
+/// monitors and writers read (world/simulation.hpp, as the 2-D step_begin).
+void step_begin(World3d& w);
+/// Second half: the drift to t + dt, and time advances. Between step_end and the next
+/// step_begin the state is whole for a state file (io/state_file_3d.hpp).
+void step_end(World3d& w);
+
 /// Advances the world by one step of w.dt_s.
-void step_3d(World3d& w);
+inline void step_3d(World3d& w) {
+    step_begin(w);
+    step_end(w);
+}
 
 }  // namespace blockdem

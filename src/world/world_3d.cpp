@@ -4,6 +4,7 @@ namespace blockdem {
 
 std::uint32_t add_body(World3d& w, RigidBody3d body, BodyKind3d kind) {
     w.edges.push_back(polyhedron_edges(body.shape));
+    w.box_frames.push_back(box_frame(body.shape, w.edges.back()));
     w.rest_positions_m.push_back(body.position_m);
     w.kinds.push_back(kind);
     w.bodies.push_back(std::move(body));
@@ -28,7 +29,7 @@ std::size_t held(const std::vector<T>& v) { return v.capacity() * sizeof(T); }
 }  // namespace
 
 std::size_t memory_bytes(const World3d& w) {
-    std::size_t bytes = sizeof(World3d) + held(w.bodies) + held(w.kinds) + held(w.edges) + held(w.rest_positions_m) +
+    std::size_t bytes = sizeof(World3d) + held(w.bodies) + held(w.kinds) + held(w.edges) + held(w.box_frames) + held(w.rest_positions_m) +
                         held(w.contacts);
     for (const RigidBody3d& b : w.bodies) {
         bytes += b.name.capacity() + held(b.shape.vertices_m) + held(b.shape.faces) + held(b.shape.face_normals);
@@ -40,10 +41,10 @@ std::size_t memory_bytes(const World3d& w) {
     }
     const WorldScratch3d& s = w.scratch;
     bytes += held(s.vertex_start) + held(s.face_start) + held(s.direction_start) + held(s.world_vertices_m) +
-             held(s.world_normals) + held(s.world_directions) + held(s.boxes) + held(s.is_static) + held(s.pairs) +
+             held(s.world_normals) + held(s.world_directions) + held(s.angular_velocity_world_rad_s) + held(s.boxes) + held(s.is_static) + held(s.pairs) +
              held(s.pair_points) + held(s.previous) + held(s.clipping) + s.broad_phase.memory_bytes();
     for (const auto& points : s.pair_points) bytes += held(points);
-    for (const ContactScratch3d& c : s.clipping) bytes += held(c.polygon) + held(c.clipped);
+    for (const ContactScratch3d& c : s.clipping) bytes += held(c.polygon) + held(c.clipped) + held(c.heights_m2);
     return bytes;
 }
 

@@ -3,11 +3,13 @@
 // the contact law's parameters, the contact table and the energy ledger (docs/3d.md). The 3-D
 // counterpart of world/world.hpp; the step is world/step_3d.hpp.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "broad_phase/grid_broad_phase_3d.hpp"
 #include "contact/contact_table_3d.hpp"
 #include "dynamics/rigid_body_3d.hpp"
+#include "geometry/box_frame_3d.hpp"
 #include "geometry/polyhedron_contact_3d.hpp"
 #include "geometry/polyhedron_edges_3d.hpp"
 #include "laws/contact_parameters.hpp"
@@ -39,6 +41,7 @@ struct WorldScratch3d {
     std::vector<Vec3> world_vertices_m;       ///< [m]
     std::vector<Vec3> world_normals;
     std::vector<Vec3> world_directions;
+    std::vector<Vec3> angular_velocity_world_rad_s;  ///< [rad/s] per body, over the last step (the contact law's)
     std::vector<Aabb3d> boxes;
     std::vector<std::uint8_t> is_static;
     std::vector<BodyPair> pairs;
@@ -48,10 +51,22 @@ struct WorldScratch3d {
     GridBroadPhase3d broad_phase;
 };
 
+/// The stable step of the live contacts, watched during a run (world/run_checks_3d.hpp) as the
+/// 2-D StabilityWatch: a body landing on a lighter one, or a stack gaining points, may need a
+/// smaller dt than the start did.
+struct StabilityWatch3d {
+    double least_limit_s = 0.0;          ///< [s] least live bound seen; 0: not yet evaluated
+    std::string least_limit_body;        ///< the body that set it
+    double least_limit_time_s = 0.0;     ///< [s] when
+    double first_exceeded_s = -1.0;      ///< [s] first time dt was above the live bound; -1: never
+    std::string exceeded_body;           ///< the body whose contacts were too stiff then
+};
+
 struct World3d {
     std::vector<RigidBody3d> bodies;
     std::vector<BodyKind3d> kinds;
     std::vector<PolyhedronEdges> edges;     ///< per body, numbered once
+    std::vector<BoxFrame3d> box_frames;     ///< per body: a box's frame for the box-box test, or is_box = false
     std::vector<Vec3> rest_positions_m;     ///< [m] a driven body's centroid with the table at rest
     ContactParameters contact;
     TableMotion3d table;
@@ -59,7 +74,10 @@ struct World3d {
     double dt_s = 1e-4;                     ///< [s]
     double time_s = 0.0;                    ///< [s]
     std::int64_t steps = 0;
+    double duration_s = 0.0;                ///< [s] the run's end (the run loop reads it)
+    double output_interval_s = 1e-3;        ///< [s] between rows of history.csv and energy.csv
     EnergyLedger ledger;
+    StabilityWatch3d stability;
     std::vector<ContactPoint3d> contacts;   ///< this step's points, sorted by key
     WorldScratch3d scratch;
 };

@@ -11,6 +11,7 @@ bin=$(realpath "$1")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/restart_check.sh"
 export OMP_WAIT_POLICY=passive
 py=/usr/bin/python3
 
@@ -55,15 +56,7 @@ unit = "g"
 period = 0.2
 TOML
 
-  "$bin" run "$dir/wall.toml" --out "$dir/full" -q --threads 1 --save-state 0.15 > /dev/null 2> "$dir/full.log" \
-    || fail "$name full run: $(tail -2 "$dir/full.log")"
-  state=$(ls "$dir/full/state/"t_*.h5 2>/dev/null | head -1)
-[ -n "$state" ] || fail "$name: no state file in $dir/full/state"
-  "$bin" run --restart "$state" --out "$dir/restarted" -q --threads 2 > /dev/null 2> "$dir/restarted.log" \
-    || fail "$name restart: $(tail -2 "$dir/restarted.log")"
-  for f in history.csv energy.csv summary.json interfaces.csv; do
-    cmp -s "$dir/full/$f" "$dir/restarted/$f" || fail "$name: $f differs between the straight run and the restarted one"
-  done
+  restart_matches "$name" "$dir/wall.toml" "$dir" 0.15
 
   $py - "$dir/full" "$name" <<'PY' || fail "$name: the bonds are not reported"
 import csv, json, sys, pathlib

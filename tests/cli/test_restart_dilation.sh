@@ -10,6 +10,7 @@ bin=$(realpath "$1")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/restart_check.sh"
 export OMP_WAIT_POLICY=passive
 
 dir="$tmp/wall"
@@ -44,15 +45,7 @@ unit = "g"
 period = 0.2
 TOML
 
-"$bin" run "$dir/wall.toml" --out "$dir/full" -q --threads 1 --save-state 0.15 > /dev/null 2> "$dir/full.log" \
-  || fail "full run: $(tail -2 "$dir/full.log")"
-state=$(ls "$dir/full/state/"t_*.h5 2>/dev/null | head -1)
-[ -n "$state" ] || fail "no state file in $dir/full/state"
-"$bin" run --restart "$state" --out "$dir/restarted" -q --threads 2 > /dev/null 2> "$dir/restarted.log" \
-  || fail "restart: $(tail -2 "$dir/restarted.log")"
-for f in history.csv energy.csv summary.json interfaces.csv; do
-  cmp -s "$dir/full/$f" "$dir/restarted/$f" || fail "$f differs between the straight run and the restarted one"
-done
+restart_matches "dilating wall" "$dir/wall.toml" "$dir" 0.15
 # The dilation acts: without it the same wall moves otherwise.
 sed 's/^dilation_deg = 25.0$//' "$dir/wall.toml" > "$dir/dry.toml"
 "$bin" run "$dir/dry.toml" --out "$dir/dry" -q --threads 1 > /dev/null 2> "$dir/dry.log" || fail "dry run: $(tail -2 "$dir/dry.log")"

@@ -5,7 +5,8 @@
 # slender block overturns about the axis across the shaking; bad scenarios exit with status 2
 # naming the file and the key or the bodies: an unknown key, overlapping bodies, a non-convex
 # polyhedron, a dt above the stable bound, a record of two components where three are asked; a
-# ledger that stops closing or a block sinking into the table ends the run with status 3; a 2-D command refuses a 3-D file; Ctrl-C leaves whole files and status "interrupted".
+# ledger that stops closing or a block sinking into the table ends the run with status 3; a 2-D command refuses a 3-D file; Ctrl-C leaves whole files and status "interrupted"; a light block
+# landing on a heavy one with dt above its contacts' stable bound is reported (the live stable step).
 # Usage: test_run_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1
@@ -224,6 +225,62 @@ for name in ("history.csv", "energy.csv"):
     assert text.endswith("\n"), name
     rows = list(csv.reader(text.splitlines()))
     assert len(rows) >= 2 and all(len(r) == len(rows[0]) for r in rows), name
+PY
+
+# The live stable step (docs/3d.md, "The run"): a 10 cm cube of 1 kg dropped on a 256 kg pier.
+# The start's bound is the pier's on the table (the cube touches nothing at t = 0), and the
+# default dt is half of it; once the cube lands, its own points give a bound ten times below dt:
+# the run says so (summary.json checks and warnings, and on stderr), naming the cube and when.
+# With dt below the cube's bound the same run has nothing to say.
+cat > "$tmp/land.toml" <<'TOML'
+dimension = 3
+[simulation]
+duration = 0.25
+output_interval = 0.01
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.5
+e = 0.5
+[[bodies]]
+name = "table"
+kind = "fixed"
+shape = "box"
+size = [2.0, 2.0, 0.2]
+position = [0.0, 0.0, -0.1]
+[[bodies]]
+name = "pier"
+shape = "box"
+size = [0.4, 0.4, 0.8]
+position = [0.0, 0.0, 0.4]
+density = 2000.0
+[[bodies]]
+name = "cube"
+shape = "box"
+size = [0.1, 0.1, 0.1]
+position = [0.0, 0.0, 0.9]
+density = 1000.0
+TOML
+out=$("$bin" run "$tmp/land.toml" --out "$tmp/land" -q 2>&1); status=$?
+[[ $status -eq 0 ]] || fail "the landing cube: exit status $status, expected 0 (a warning, not a stop): $out"
+expect_in "$out" "above the stable limit of the live contacts"
+expect_in "$out" "body 'cube'"
+"$bin" run "$tmp/land.toml" --out "$tmp/land_fine" --set simulation.dt=1e-5 -q >"$tmp/land_fine.txt" 2>&1 \
+    || fail "the landing cube at dt = 1e-5 s failed: $(cat "$tmp/land_fine.txt")"
+/usr/bin/python3 - "$tmp/land" "$tmp/land_fine" <<'PY' || fail "the live stable step is not reported as expected"
+import json, sys
+coarse = json.load(open(f"{sys.argv[1]}/summary.json"))
+step = coarse["checks"]["time_step"]
+assert step["dt_above_live_limit"] is True and step["least_live_limit_body"] == "cube", step
+# The cube falls 0.05 m (0.101 s) before it lands; the watch looks every 32 steps.
+assert 0.1 < step["dt_above_live_limit_from_s"] < 0.101 + 33 * step["dt_s"], step
+assert step["least_live_limit_s"] < 0.2 * step["dt_s"], step
+assert any("live contacts" in w for w in coarse["warnings"]), coarse.get("warnings")
+fine = json.load(open(f"{sys.argv[2]}/summary.json"))
+step = fine["checks"]["time_step"]
+assert step["dt_above_live_limit"] is False and step["dt_above_live_limit_from_s"] is None, step
+assert step["dt_s"] < step["least_live_limit_s"], step
+assert "warnings" not in fine, fine["warnings"]
 PY
 
 if [[ $failures -gt 0 ]]; then echo "$failures failure(s)"; exit 1; fi

@@ -10,6 +10,7 @@ bin=$(realpath "$1")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/restart_check.sh"
 export OMP_WAIT_POLICY=passive
 
 cat > "$tmp/wall.toml" <<TOML
@@ -46,15 +47,7 @@ unit = "g"
 period = 0.2
 TOML
 
-"$bin" run "$tmp/wall.toml" --out "$tmp/full" -q --threads 1 --save-state 0.15 > /dev/null 2> "$tmp/full.log" \
-  || fail "full run: $(tail -2 "$tmp/full.log")"
-state=$(ls "$tmp/full/state/"t_*.h5 2>/dev/null | head -1)
-[ -n "$state" ] || fail "no state file in $tmp/full/state"
-"$bin" run --restart "$state" --out "$tmp/restarted" -q --threads 2 > /dev/null 2> "$tmp/restarted.log" \
-  || fail "restart: $(tail -2 "$tmp/restarted.log")"
-for f in history.csv energy.csv summary.json interfaces.csv; do
-  cmp -s "$tmp/full/$f" "$tmp/restarted/$f" || fail "$f differs between the straight run and the restarted one"
-done
+restart_matches "sub-contacts wall" "$tmp/wall.toml" "$tmp" 0.15
 # At t = 0 every touching joint of the wall is edge to edge: 4 points, 4 bonded.
 start_rows=$(awk -F, '$1 == "0" && $6 > 0' "$tmp/full/interfaces.csv" | wc -l)
 [ "$start_rows" -gt 0 ] || fail "no touching interface at t = 0"

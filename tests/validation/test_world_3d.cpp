@@ -18,6 +18,7 @@
 #include "laws/restitution.hpp"
 #include "support/table_run_3d.hpp"
 #include "scenes/brick_wall_3d.hpp"
+#include "scenes/s3d_wall_3d.hpp"
 #include "world/step_3d.hpp"
 
 #ifdef _OPENMP
@@ -376,6 +377,34 @@ TEST(World3d, BrickWallIsTheSameBytesAtOneAndTwoThreads) {
     }
     omp_set_num_threads(threads_before);
     EXPECT_GT(points, 2048u);
+    EXPECT_EQ(runs[0], runs[1]);
+#endif
+}
+
+TEST(World3d, PeersS3dWallIsTheSameBytesAtOneAndTwoThreads) {
+    // The benchmark's scene (scenes/s3d_wall_3d.hpp, the peers' S3D) with 1100 bricks: settled,
+    // then 150 shaken steps, at 1 and 2 threads.
+#ifndef _OPENMP
+    GTEST_SKIP() << "built without OpenMP";
+#else
+    scenes::S3dWallDef def;
+    def.bricks = 1100;
+    std::vector<std::vector<unsigned char>> runs;
+    std::size_t points = 0;
+    const int threads_before = omp_get_max_threads();
+    for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        World3d w = scenes::settled_s3d_wall_3d(def);
+        for (int i = 0; i < 150; ++i) step_3d(w);
+        points = w.contacts.size();
+        runs.push_back(state_bytes(w));
+    }
+    omp_set_num_threads(threads_before);
+    // The layout: C = round(sqrt(1100)) = 33 bricks a wythe in even courses, 32 in odd ones.
+    int per_course = 0;
+    EXPECT_EQ(scenes::s3d_brick_centres(def, per_course).size(), 1100u);
+    EXPECT_EQ(per_course, 33);
+    EXPECT_GT(points, 2048u);  // more than a chunk: the loops do share out
     EXPECT_EQ(runs[0], runs[1]);
 #endif
 }

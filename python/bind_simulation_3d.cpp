@@ -1,0 +1,173 @@
+// blockdem.Simulation3d: a run of a 3-D scenario (run/scenario_run_3d.hpp) stepped from Python,
+// with the 2-D Simulation's API where the concept is the same (python/bind_simulation.cpp):
+//   sim = blockdem.Simulation3d(scenario, threads=2, out_dir=None)
+//   sim.step(n); sim.t; sim.positions (N x 3); sim.quaternions (N x 4); sim.summary(); sim.finish()
+// A 3-D body is a struct of its own (dynamics/rigid_body_3d.hpp), not an array per quantity, so
+// the state comes as numpy copies taken when read, not as views. The GIL is released while
+// stepping, and Ctrl-C (KeyboardInterrupt) is seen between chunks of steps, as in 2-D.
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "python/bindings.hpp"
+#include "python/run_arrays.hpp"
+#include "python/scenario_source.hpp"
+#include "run/scenario_run_3d.hpp"
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+
+namespace blockdem::python {
+namespace {
+
+// Steps between two looks at Python's signals (Ctrl-C): short against a second of stepping.
+constexpr std::int64_t steps_between_signal_checks_3d = 256;
+
+class Simulation3d {
+public:
+    Simulation3d(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force)
+        : threads_(threads) {
+        if (threads < 1) throw py::value_error(fmt::format("threads must be 1 or more, got {}", threads));
+        RunRequest request;
+        request.scenario = scenario.file;
+        if (out_dir) request.out_dir = *out_dir;
+        request.force = force;
+        run_ = std::make_unique<ScenarioRun3d>(request, scenario.parse());
+        writes_files_ = out_dir.has_value();
+        step(0);  // the state at t = 0 complete before anything reads it
+    }
+
+    // As the 2-D Simulation: a run with files dropped before finish() ends as an interrupted one.
+    ~Simulation3d() {
+        if (!writes_files_ || !run_ || run_->finished() || run_->failed()) return;
+        try {
+            run_->finish();
+        } catch (const std::exception&) {
+            // (A destructor cannot raise; a failed write was the disk's.)
+        }
+    }
+    Simulation3d(const Simulation3d&) = delete;
+    Simulation3d& operator=(const Simulation3d&) = delete;
+
+    std::int64_t step(std::int64_t steps) {
+        if (steps < 0) throw py::value_error(fmt::format("step(n) needs n >= 0, got {}", steps));
+        if (stepping_.exchange(true)) throw std::logic_error("the simulation is being stepped in another thread");
+        struct Done {
+            std::atomic<bool>& flag;
+            ~Done() { flag = false; }
+        } done{stepping_};
+        std::int64_t taken = 0;
+        do {
+            const std::int64_t chunk = std::min(steps - taken, steps_between_signal_checks_3d);
+            std::int64_t got = 0;
+            {
+                py::gil_scoped_release release;
+#ifdef _OPENMP
+                omp_set_num_threads(threads_);
+#endif
+                got = run_->step(chunk);
+            }
+            taken += got;
+            if (got < chunk) break;  // the end of the run
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        } while (taken < steps);
+        return taken;
+    }
+
+    py::object finish() { return json_to_python(run().finish()); }
+
+    const World3d& world() const { return run_->world(); }
+    ScenarioRun3d& run() {
+        if (stepping_) throw std::logic_error("the simulation is being stepped in another thread: wait for step() to return");
+        return *run_;
+    }
+
+    // N x columns, one row a body, from a body's row function.
+    template <class Row>
+    py::array_t<double> rows(std::size_t columns, Row row) const {
+        const std::size_t n = world().bodies.size();
+        py::array_t<double> out({n, columns});
+        auto view = out.mutable_unchecked<2>();
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::vector<double> values = row(i);
+            for (std::size_t k = 0; k < columns; ++k) view(i, k) = values[k];
+        }
+        return out;
+    }
+
+private:
+    std::unique_ptr<ScenarioRun3d> run_;
+    int threads_ = 1;
+    bool writes_files_ = false;
+    std::atomic<bool> stepping_{false};
+};
+
+std::vector<double> xyz(Vec3 v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+void bind_simulation_3d(py::module_& m) {
+    py::class_<Simulation3d>(m, "Simulation3d",
+                             "A run of a 3-D scenario (dimension = 3), stepped from Python (docs/python.md, docs/3d.md).")
+        .def(py::init<const ScenarioSource&, int, std::optional<fs::path>, bool>(), py::arg("scenario"),
+             py::arg("threads") = 2, py::arg("out_dir") = py::none(), py::arg("force") = false,
+             "Builds the world. out_dir: write the CLI's files there (history.csv, energy.csv, summary.json, VTK).")
+        .def("step", &Simulation3d::step, py::arg("n") = 1, "Takes n steps (fewer at the end); returns the steps taken.")
+        .def("finish", &Simulation3d::finish, "Finishes the outputs (summary.json with out_dir); returns the summary.")
+        .def_property_readonly("t", [](const Simulation3d& s) { return s.world().time_s; }, "[s] time of the state")
+        .def_property_readonly("step_index", [](const Simulation3d& s) { return s.world().steps; })
+        .def_property_readonly("dt", [](const Simulation3d& s) { return s.world().dt_s; }, "[s]")
+        .def_property_readonly("duration", [](const Simulation3d& s) { return s.world().duration_s; }, "[s]")
+        .def_property_readonly("done", [](Simulation3d& s) { return s.run().ended(); })
+        .def_property_readonly("failed", [](Simulation3d& s) { return s.run().failed(); })
+        .def_property_readonly("body_names",
+                               [](const Simulation3d& s) {
+                                   std::vector<std::string> names;
+                                   for (const RigidBody3d& b : s.world().bodies) names.push_back(b.name);
+                                   return names;
+                               })
+        .def_property_readonly(
+            "positions",
+            [](Simulation3d& s) { return s.rows(3, [&](std::size_t i) { return xyz(position_now_m(s.world(), i)); }); },
+            "[m] N x 3 centroids at t (a copy)")
+        .def_property_readonly(
+            "quaternions",
+            [](Simulation3d& s) {
+                return s.rows(4, [&](std::size_t i) {
+                    const Quaternion q = turn_since_start(s.world(), s.run().monitor().bodies()[i], i);
+                    return std::vector<double>{q.w, q.x, q.y, q.z};
+                });
+            },
+            "N x 4 (w, x, y, z): each body's turn since t = 0, as history.csv writes it (a copy)")
+        .def_property_readonly(
+            "velocities",
+            [](Simulation3d& s) { return s.rows(3, [&](std::size_t i) { return xyz(velocity_now_m_s(s.world(), i)); }); },
+            "[m/s] N x 3 at t (a copy)")
+        .def_property_readonly(
+            "angular_velocities",
+            [](Simulation3d& s) { return s.rows(3, [&](std::size_t i) { return xyz(s.world().bodies[i].angular_velocity_at_t_rad_s); }); },
+            "[rad/s] N x 3 at t, world frame (a copy)")
+        .def_property_readonly(
+            "masses",
+            [](Simulation3d& s) { return s.rows(1, [&](std::size_t i) { return std::vector<double>{s.world().bodies[i].mass_kg}; }); },
+            "[kg] N x 1")
+        .def("energy", [](Simulation3d& s) { return energy_dict(s.run().world().ledger); },
+             "The energy balance at t [J] and its relative error.")
+        .def("summary", [](Simulation3d& s) { return json_to_python(s.run().summary("running")); },
+             "The summary of the state now (as summary.json, nothing written).");
+}
+
+}  // namespace blockdem::python

@@ -1,0 +1,29 @@
+#pragma once
+// A polyhedron that is a rectangular box, as the narrow phase's box-box separating-axis test
+// needs it (geometry/polyhedron_contact_3d.cpp): its three edge directions with the half lengths
+// along them, and which direction and side each face is. Why: a box's projection on an axis is
+// its centre's plus sum h_i |d_i . axis| (3 products instead of 8 vertices), and its face planes
+// are the centre's plus h_i, so the 6 + 6 face axes and 9 edge axes of two boxes cost a few dozen
+// products (Gottschalk, Lin and Manocha, "OBBTree", SIGGRAPH 1996), where the vertex projections
+// of the general test cost a few hundred. Found once per shape.
+#include <array>
+#include <cstdint>
+
+#include "geometry/polyhedron.hpp"
+#include "geometry/polyhedron_edges_3d.hpp"
+
+namespace blockdem {
+
+struct BoxFrame3d {
+    bool is_box = false;
+    Vec3 half_lengths_m;                  ///< [m] along the edge directions 0, 1, 2 (PolyhedronEdges::directions)
+    std::array<std::uint8_t, 6> face_direction{};  ///< per face, the direction its normal lies along
+    std::array<double, 6> face_sign{};             ///< per face, +1 when its normal is that direction, -1 against
+};
+
+/// The box frame of p when p is a box about its centroid (the body frame's origin): 8 vertices, 6
+/// faces, 3 mutually perpendicular edge directions, every vertex at +/- the half lengths along them
+/// (to 1e-12 of the box's size); otherwise is_box = false and the general test is used.
+BoxFrame3d box_frame(const Polyhedron& p, const PolyhedronEdges& edges);
+
+}  // namespace blockdem

@@ -1,0 +1,217 @@
+#include "io/state_file_3d.hpp"
+
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+
+namespace blockdem {
+namespace {
+
+std::vector<double> flat(const std::vector<Vec3>& v) {
+    std::vector<double> out;
+    out.reserve(3 * v.size());
+    for (Vec3 p : v) out.insert(out.end(), {p.x, p.y, p.z});
+    return out;
+}
+
+std::vector<Vec3> vec3s(const StateGroup& g, const std::string& name, std::size_t n) {
+    const std::vector<double> v = g.doubles(name, static_cast<std::int64_t>(3 * n), 3);
+    std::vector<Vec3> out(n);
+    for (std::size_t i = 0; i < n; ++i) out[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+    return out;
+}
+
+template <class T, class Item, class Field>
+std::vector<T> column(const std::vector<Item>& items, Field field) {
+    std::vector<T> out;
+    out.reserve(items.size());
+    for (const Item& item : items) out.push_back(field(item));
+    return out;
+}
+
+void write_bodies(StateGroup g, const World3d& w) {
+    const auto& b = w.bodies;
+    g.write("name", column<std::string>(b, [](const RigidBody3d& x) { return x.name; }));
+    g.write("kind", column<std::uint8_t>(w.kinds, [](BodyKind3d k) { return static_cast<std::uint8_t>(k); }));
+    g.write("vertex_count", column<std::uint32_t>(b, [](const RigidBody3d& x) { return std::uint32_t(x.shape.vertices_m.size()); }));
+    g.write("position_m", flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.position_m; })), 3);
+    std::vector<double> q;
+    for (const RigidBody3d& x : b) q.insert(q.end(), {x.orientation.w, x.orientation.x, x.orientation.y, x.orientation.z});
+    g.write("orientation", q, 4);
+    g.write("velocity_m_s", flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.velocity_m_s; })), 3);
+    g.write("angular_momentum_kg_m2_s", flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.angular_momentum_kg_m2_s; })), 3);
+    g.write("angular_velocity_body_rad_s",
+            flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.angular_velocity_body_rad_s; })), 3);
+    g.write("velocity_at_t_m_s", flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.velocity_at_t_m_s; })), 3);
+    g.write("angular_velocity_at_t_rad_s",
+            flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.angular_velocity_at_t_rad_s; })), 3);
+}
+
+void write_contacts(StateGroup g, const std::vector<ContactPoint3d>& c) {
+    g.write("body_a", column<std::uint32_t>(c, [](const ContactPoint3d& p) { return p.key.body_a; }));
+    g.write("body_b", column<std::uint32_t>(c, [](const ContactPoint3d& p) { return p.key.body_b; }));
+    g.write("feature_a", column<std::uint32_t>(c, [](const ContactPoint3d& p) { return p.key.feature_a; }));
+    g.write("feature_b", column<std::uint32_t>(c, [](const ContactPoint3d& p) { return p.key.feature_b; }));
+    g.write("point_m", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.point_m; })), 3);
+    g.write("normal", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.normal; })), 3);
+    g.write("overlap_m", column<double>(c, [](const ContactPoint3d& p) { return p.overlap_m; }));
+    g.write("dashpot_mass_kg", column<double>(c, [](const ContactPoint3d& p) { return p.dashpot_mass_kg; }));
+    g.write("normal_dashpot_n", column<double>(c, [](const ContactPoint3d& p) { return p.normal_dashpot_n; }));
+    g.write("shear_spring_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.spring_n; })), 3);
+    g.write("shear_dashpot_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.dashpot_n; })), 3);
+    g.write("sliding", column<std::uint8_t>(c, [](const ContactPoint3d& p) { return std::uint8_t(p.sliding); }));
+    g.write("force_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.force_n; })), 3);
+}
+
+void write_stability(StateGroup g, const StabilityWatch3d& s) {
+    g.set("least_limit_s", s.least_limit_s);
+    g.set("least_limit_body", s.least_limit_body);
+    g.set("least_limit_time_s", s.least_limit_time_s);
+    g.set("first_exceeded_s", s.first_exceeded_s);
+    g.set("exceeded_body", s.exceeded_body);
+}
+
+[[noreturn]] void refuse(const StateFile& file, const std::filesystem::path& scenario, const std::string& why) {
+    throw InputError({file.path().string(), "", 0, 0},
+                     fmt::format("the state does not belong to scenario {}: {}", scenario.string(), why));
+}
+
+void read_bodies(const StateFile& file, const std::filesystem::path& scenario, World3d& w) {
+    const StateGroup g = file.root().open_group("bodies3d");
+    const std::vector<std::string> name = g.strings("name");
+    const std::size_t n = w.bodies.size();
+    if (name.size() != n) refuse(file, scenario, fmt::format("the state has {} bodies, the scenario {}", name.size(), n));
+    const auto count = static_cast<std::int64_t>(n);
+    const std::vector<std::uint8_t> kind = g.flags("kind", count);
+    const std::vector<std::uint32_t> vertices = g.indices("vertex_count", count);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (name[i] != w.bodies[i].name)
+            refuse(file, scenario, fmt::format("body {} is '{}' in the state but '{}' in the scenario", i + 1, name[i], w.bodies[i].name));
+        if (kind[i] != static_cast<std::uint8_t>(w.kinds[i]) || vertices[i] != w.bodies[i].shape.vertices_m.size())
+            refuse(file, scenario, fmt::format("body '{}' has another kind or shape in the state than in the scenario", name[i]));
+    }
+    const std::vector<Vec3> position = vec3s(g, "position_m", n), velocity = vec3s(g, "velocity_m_s", n),
+                            momentum = vec3s(g, "angular_momentum_kg_m2_s", n),
+                            omega_body = vec3s(g, "angular_velocity_body_rad_s", n),
+                            velocity_t = vec3s(g, "velocity_at_t_m_s", n),
+                            omega_t = vec3s(g, "angular_velocity_at_t_rad_s", n);
+    const std::vector<double> q = g.doubles("orientation", 4 * count, 4);
+    for (std::size_t i = 0; i < n; ++i) {
+        RigidBody3d& b = w.bodies[i];
+        b.position_m = position[i];
+        b.orientation = {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]};
+        b.velocity_m_s = velocity[i];
+        b.angular_momentum_kg_m2_s = momentum[i];
+        b.angular_velocity_body_rad_s = omega_body[i];
+        b.velocity_at_t_m_s = velocity_t[i];
+        b.angular_velocity_at_t_rad_s = omega_t[i];
+    }
+}
+
+std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_count) {
+    const std::vector<std::uint32_t> a = g.indices("body_a");
+    const std::size_t n = a.size();
+    const auto count = static_cast<std::int64_t>(n);
+    const std::vector<std::uint32_t> b = g.indices("body_b", count), fa = g.indices("feature_a", count),
+                                     fb = g.indices("feature_b", count);
+    const std::vector<Vec3> point = vec3s(g, "point_m", n), normal = vec3s(g, "normal", n),
+                            spring = vec3s(g, "shear_spring_n", n), dashpot = vec3s(g, "shear_dashpot_n", n),
+                            force = vec3s(g, "force_n", n);
+    const std::vector<double> overlap = g.doubles("overlap_m", count), mass = g.doubles("dashpot_mass_kg", count),
+                              normal_dashpot = g.doubles("normal_dashpot_n", count);
+    const std::vector<std::uint8_t> sliding = g.flags("sliding", count);
+    std::vector<ContactPoint3d> out(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        ContactPoint3d& c = out[i];
+        c.key = {a[i], b[i], fa[i], fb[i]};
+        // The table is sorted by key, a < b: the history's merge pass relies on it.
+        if (a[i] >= b[i] || b[i] >= body_count || (i > 0 && !(out[i - 1].key < c.key)))
+            throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: {}: point {} is not a "
+                                                               "valid entry of the contact table", g.path(), i + 1));
+        c.point_m = point[i];
+        c.normal = normal[i];
+        c.overlap_m = overlap[i];
+        c.dashpot_mass_kg = mass[i];
+        c.normal_dashpot_n = normal_dashpot[i];
+        c.shear = {spring[i], dashpot[i]};
+        c.sliding = sliding[i] != 0;
+        c.force_n = force[i];
+    }
+    return out;
+}
+
+StabilityWatch3d read_stability(const StateGroup& g) {
+    StabilityWatch3d s;
+    s.least_limit_s = g.number("least_limit_s");
+    s.least_limit_body = g.text("least_limit_body");
+    s.least_limit_time_s = g.number("least_limit_time_s");
+    s.first_exceeded_s = g.number("first_exceeded_s");
+    s.exceeded_body = g.text("exceeded_body");
+    return s;
+}
+
+}  // namespace
+
+void write_world_3d(StateGroup& root, const World3d& w) {
+    root.set("dt_s", w.dt_s);
+    write_bodies(root.create_group("bodies3d"), w);
+    write_contacts(root.create_group("contacts3d"), w.contacts);
+    write_ledger(root.create_group("energy"), w.ledger);
+    write_stability(root.create_group("stability3d"), w.stability);
+}
+
+void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
+    const InputLocation where{file.path().string(), "", 0, 0};
+    if (file.dimension() != 3)
+        throw InputError(where, fmt::format("a {}-D state: scenario {} is 3-D", file.dimension(), scenario.string()));
+    const StateGroup& root = file.root();
+    read_bodies(file, scenario, w);  // (first: a state of another scenario is told as such)
+    const double dt_s = root.number("dt_s");
+    if (dt_s != w.dt_s)
+        throw InputError(where, fmt::format("the state was saved with dt = {:.17g} s, scenario {} gives dt = {:.17g} s: a "
+                                            "restart keeps the time step",
+                                            dt_s, scenario.string(), w.dt_s));
+    w.contacts = read_contacts(root.open_group("contacts3d"), w.bodies.size());
+    w.ledger = read_ledger(root.open_group("energy"));
+    w.stability = read_stability(root.open_group("stability3d"));
+    w.time_s = file.time_s();
+    w.steps = file.step_index();
+}
+
+void Monitor3dStatePart::save_state(StateGroup& g) const {
+    const std::vector<BodyResponse3d>& r = monitor_.bodies();
+    using R = BodyResponse3d;
+    g.write("start_position_m", flat(column<Vec3>(r, [](const R& x) { return x.start_position_m; })), 3);
+    std::vector<double> q;
+    for (const R& x : r) q.insert(q.end(), {x.start_orientation.w, x.start_orientation.x, x.start_orientation.y, x.start_orientation.z});
+    g.write("start_orientation", q, 4);
+    g.write("overturning_angle_rad", column<double>(r, [](const R& x) { return x.overturning_angle_rad; }));
+    g.write("peak_tilt_rad", column<double>(r, [](const R& x) { return x.peak_tilt_rad; }));
+    g.write("peak_tilt_time_s", column<double>(r, [](const R& x) { return x.peak_tilt_time_s; }));
+    g.write("peak_tilt_axis", flat(column<Vec3>(r, [](const R& x) { return x.peak_tilt_axis; })), 3);
+    g.write("peak_slip_m", column<double>(r, [](const R& x) { return x.peak_slip_m; }));
+}
+
+void Monitor3dStatePart::restore_state(const StateGroup& g) {
+    std::vector<BodyResponse3d> r = monitor_.bodies();
+    const std::size_t n = r.size();
+    const auto count = static_cast<std::int64_t>(n);
+    const std::vector<Vec3> start = vec3s(g, "start_position_m", n), axis = vec3s(g, "peak_tilt_axis", n);
+    const std::vector<double> q = g.doubles("start_orientation", 4 * count, 4);
+    const std::vector<double> overturning = g.doubles("overturning_angle_rad", count), tilt = g.doubles("peak_tilt_rad", count),
+                              tilt_time = g.doubles("peak_tilt_time_s", count), slip = g.doubles("peak_slip_m", count);
+    for (std::size_t i = 0; i < n; ++i)
+        r[i] = {start[i], {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]}, overturning[i], tilt[i], tilt_time[i], axis[i], slip[i]};
+    monitor_.restore(std::move(r));
+}
+
+void Vtk3dStatePart::save_state(StateGroup& g) const { g.write("frame_times_s", writer_.frame_times_s()); }
+
+void Vtk3dStatePart::restore_state(const StateGroup& g) {
+    std::vector<double> times = g.doubles("frame_times_s");
+    // (Frames are taken at output times, which are whole steps: half a step tells before from at.)
+    while (!times.empty() && times.back() > world_.time_s - 0.5 * world_.dt_s) times.pop_back();
+    writer_.continue_after(std::move(times));
+}
+
+}  // namespace blockdem

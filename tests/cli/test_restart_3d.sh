@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# State files of a 3-D run (docs/3d.md, "The run"): a run of 0 to T and a run saved at T/2 and
+# restarted from its state file to T write byte-identical history.csv, energy.csv and
+# summary.json (the drum column example under its three-component record, and a brick wall on 2
+# threads; a state of --save-state-every too); a run interrupted by SIGINT resumes in place from
+# the state it wrote as it stopped and ends as a run straight to the same time; a 3-D state
+# given a 2-D scenario, a state of another scenario and a 2-D state given to a 3-D scenario are
+# refused with exit 2, naming the file.
+# Usage: test_restart_3d.sh BLOCKDEM SOURCE_DIR
+set -u
+bin=$(realpath "$1"); src=$(realpath "$2")
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+expect_in() { grep -qF -- "$2" <<<"$1" || fail "expected '$2' in: $1"; }
+export OMP_WAIT_POLICY=passive
+
+same_results() {  # LABEL DIR1 DIR2
+  for f in history.csv energy.csv summary.json; do
+    cmp -s "$2/$f" "$3/$f" || fail "$1: $f differs between $2 and $3"
+  done
+}
+
+# 1. The drum column, 0.2 s, whole and cut at 0.1 s (--save-state) and at 0.15 s (--save-state-every
+# 0.075), each time into a new folder.
+drums="$src/examples/3d/drum_column.toml"
+"$bin" run "$drums" --out "$tmp/whole" --set simulation.duration=0.2 -q --threads 1 >"$tmp/log" 2>&1 \
+  || fail "the whole drum run failed: $(cat "$tmp/log")"
+"$bin" run "$drums" --out "$tmp/first" --set simulation.duration=0.2 --save-state 0.1 --save-state-every 0.075 -q \
+  --threads 1 >"$tmp/log" 2>&1 || fail "the saving drum run failed: $(cat "$tmp/log")"
+for t in 0.075000 0.100000 0.150000; do
+  [[ -s "$tmp/first/state/t_${t}s.h5" ]] || fail "no state file at $t s: $(ls "$tmp/first" "$tmp/first/state" 2>&1)"
+done
+"$bin" run --restart "$tmp/first/state/t_0.150000s.h5" --out "$tmp/third" -q --threads 1 >"$tmp/log" 2>&1 \
+  || fail "the drum run restarted at 0.15 s failed: $(cat "$tmp/log")"
+same_results "drums restarted at 0.15 s (--save-state-every)" "$tmp/whole" "$tmp/third"
+"$bin" run --restart "$tmp/first/state/t_0.100000s.h5" --out "$tmp/second" -q --threads 1 >"$tmp/log" 2>&1 \
+  || fail "the restarted drum run failed: $(cat "$tmp/log")"
+same_results "drums restarted at 0.1 s" "$tmp/whole" "$tmp/second"
+/usr/bin/python3 - "$tmp/second" "$tmp/whole" <<'PY' || fail "the restarted run's folder is not complete"
+import json, sys
+second, whole = sys.argv[1], sys.argv[2]
+info = json.load(open(f"{second}/run_info.json"))
+assert info["status"] == "completed" and abs(info["started_at_time_s"] - 0.1) < 1e-9, info
+assert info["restarted_from"].endswith("t_0.100000s.h5"), info
+# The VTK frames before the state were taken along, the rest written again: the same list.
+assert open(f"{second}/vtk/bodies.pvd").read() == open(f"{whole}/vtk/bodies.pvd").read()
+PY
+
+# 2. The brick wall on 2 threads (its contact loops run in parallel), cut at 0.02 s of 0.04 s.
+wall="$src/examples/3d/brick_wall.toml"
+"$bin" run "$wall" --out "$tmp/wall_whole" --set simulation.duration=0.04 -q --threads 2 >"$tmp/log" 2>&1 \
+  || fail "the whole wall run failed: $(cat "$tmp/log")"
+"$bin" run "$wall" --out "$tmp/wall_first" --set simulation.duration=0.04 --save-state 0.02 -q --threads 2 >"$tmp/log" 2>&1 \
+  || fail "the saving wall run failed: $(cat "$tmp/log")"
+"$bin" run --restart "$tmp/wall_first/state/t_0.020000s.h5" --out "$tmp/wall_second" -q --threads 2 >"$tmp/log" 2>&1 \
+  || fail "the restarted wall run failed: $(cat "$tmp/log")"
+same_results "wall restarted at 0.02 s" "$tmp/wall_whole" "$tmp/wall_second"
+
+# 3. Ctrl-C in the middle of a long wall run, then --restart in the same folder from the state it
+# wrote, to 0.01 s after the time it stopped at (a restart may change the duration), against a
+# run straight to that time.
+"$bin" run "$wall" --out "$tmp/int" --threads 2 >"$tmp/int.txt" 2>&1 &
+pid=$!
+for _ in $(seq 100); do [[ -s "$tmp/int/energy.csv" ]] && break; sleep 0.05; done
+sleep 1
+kill -s INT $pid
+wait $pid; status=$?
+[[ $status -eq 130 ]] || fail "SIGINT: exit status $status, expected 130: $(cat "$tmp/int.txt")"
+state=$(ls "$tmp/int/state/"*.h5 2>/dev/null | head -1)
+[[ -n "$state" ]] || fail "the interrupted run wrote no state file: $(cat "$tmp/int.txt")"
+expect_in "$(cat "$tmp/int.txt")" "to go on: blockdem run --restart"
+end=$(/usr/bin/python3 -c "import json, sys; print(round(json.load(open(sys.argv[1]))['time_s'] + 0.01, 6))" "$tmp/int/summary.json")
+"$bin" run --restart "$state" --set simulation.duration=$end -q --threads 2 >"$tmp/log" 2>&1 \
+  || fail "the resumed run failed: $(cat "$tmp/log")"
+"$bin" run "$wall" --out "$tmp/int_whole" --set simulation.duration=$end -q --threads 2 >"$tmp/log" 2>&1 \
+  || fail "the wall run to $end s failed: $(cat "$tmp/log")"
+same_results "wall interrupted and resumed in place to $end s" "$tmp/int_whole" "$tmp/int"
+
+# 4. Refusals, exit 2 with the file named.
+state="$tmp/first/state/t_0.100000s.h5"
+out=$("$bin" run --restart "$state" "$src/examples/paper/sliding.toml" --out "$tmp/bad1" -q 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "3-D state, 2-D scenario: exit status $status, expected 2: $out"
+expect_in "$out" "t_0.100000s.h5"
+out=$("$bin" run --restart "$state" "$wall" --out "$tmp/bad2" -q 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "state of another scenario: exit status $status, expected 2: $out"
+expect_in "$out" "does not belong to scenario"
+
+"$bin" run "$src/examples/paper/sliding.toml" --out "$tmp/flat" --set simulation.duration=0.2 --save-state 0.1 -q >"$tmp/log" 2>&1 \
+  || fail "the 2-D run failed: $(cat "$tmp/log")"
+out=$("$bin" run --restart "$tmp/flat/state/t_0.100000s.h5" "$drums" --out "$tmp/bad3" -q 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "2-D state, 3-D scenario: exit status $status, expected 2: $out"
+expect_in "$out" "a 2-D state: scenario"
+
+if [[ $failures -gt 0 ]]; then echo "$failures failure(s)"; exit 1; fi
+echo "test_restart_3d: all passed"

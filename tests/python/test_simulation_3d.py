@@ -1,0 +1,106 @@
+"""blockdem.Simulation3d (python/bind_simulation_3d.cpp): a 3-D scenario stepped from Python with the
+2-D Simulation's API, against `blockdem run` on the same file and against closed forms."""
+import csv
+import json
+import math
+
+import numpy as np
+import pytest
+
+import blockdem
+
+# A 0.4 x 0.4 x 0.8 m block at rest on a fixed slab, and a 10 cm cube falling 0.05 m onto it.
+DROP = """dimension = 3
+[simulation]
+duration = 0.2
+output_interval = 0.01
+dt = 2e-5
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.5
+e = 0.5
+[[bodies]]
+name = "slab"
+kind = "fixed"
+shape = "box"
+size = [2.0, 2.0, 0.2]
+position = [0.0, 0.0, -0.1]
+[[bodies]]
+name = "pier"
+shape = "box"
+size = [0.4, 0.4, 0.8]
+position = [0.0, 0.0, 0.4]
+density = 2000.0
+[[bodies]]
+name = "cube"
+shape = "box"
+size = [0.1, 0.1, 0.1]
+position = [0.0, 0.0, 0.9]
+density = 1000.0
+"""
+
+
+def test_a_falling_cube_follows_free_fall_until_it_lands():
+    sim = blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=1)
+    assert sim.body_names == ["slab", "pier", "cube"]
+    assert sim.t == 0.0 and sim.step_index == 0 and sim.dt == pytest.approx(2e-5)
+    assert sim.positions.shape == (3, 3) and sim.quaternions.shape == (3, 4)
+    np.testing.assert_array_equal(sim.quaternions[:, 0], 1.0)   # the turn since t = 0
+    z0 = sim.positions[2, 2]
+    assert sim.step(2500) == 2500                               # t = 0.05 s, in flight
+    # Central differences integrate a constant g exactly at the steps (z = z0 - g t^2 / 2 up to
+    # the start's half step, g dt t / 2 = 5e-6 m): within 1e-5 m.
+    assert sim.t == pytest.approx(0.05, abs=1e-12)
+    assert sim.positions[2, 2] == pytest.approx(z0 - 0.5 * 9.81 * 0.05 ** 2, abs=1e-5)
+    assert sim.velocities[2, 2] == pytest.approx(-9.81 * 0.05, rel=1e-9)
+    # Then it lands on the pier's top (z = 0.8 m, its centroid 0.05 m above) and rebounds: it
+    # neither sinks into the pier by more than the springs' sag (1 mm) nor rises to where it fell
+    # from (e = 0.5 takes energy away).
+    lowest, highest = z0, 0.0
+    while not sim.done:
+        sim.step(50)
+        lowest = min(lowest, sim.positions[2, 2])
+        if lowest < 0.851:  # (landed: the rebound from here on)
+            highest = max(highest, sim.positions[2, 2])
+    assert sim.t == pytest.approx(0.2, abs=1e-12)
+    assert 0.849 < lowest < 0.85 and highest < z0 - 0.02, (lowest, highest)
+    energy = sim.energy()
+    assert abs(energy["balance_error"]) < 1e-2
+    summary = sim.summary()
+    assert summary["dimension"] == 3 and summary["status"] == "running"
+    assert summary["bodies"][2]["name"] == "cube"
+
+
+def test_stepped_from_python_writes_the_files_of_blockdem_run(tmp_path, source_dir):
+    """The drum column example cut into uneven pieces from Python: the same history.csv as one run."""
+    scenario = blockdem.Scenario.from_file(source_dir / "examples/3d/drum_column.toml")
+    scenario.set("simulation.duration", 0.05)
+    whole = blockdem.Simulation3d(scenario, threads=1, out_dir=tmp_path / "whole")
+    whole.step(10 ** 9)
+    whole_summary = whole.finish()
+    cut = blockdem.Simulation3d(scenario, threads=1, out_dir=tmp_path / "cut")
+    for n in (1, 17, 300, 5):
+        assert cut.step(n) == n
+    cut.step(10 ** 9)
+    cut_summary = cut.finish()
+    assert cut_summary["status"] == whole_summary["status"] == "completed"
+    for name in ("history.csv", "energy.csv", "summary.json"):
+        assert (tmp_path / "cut" / name).read_bytes() == (tmp_path / "whole" / name).read_bytes(), name
+    rows = list(csv.reader(open(tmp_path / "whole" / "history.csv")))
+    assert rows[0][0] == "t_s" and "drum_3.qw" in rows[0]
+    assert float(rows[-1][0]) == pytest.approx(0.05, abs=1e-9)
+    assert json.load(open(tmp_path / "whole" / "summary.json"))["dimension"] == 3
+
+
+def test_a_3d_scenario_given_to_the_2d_simulation_names_simulation3d():
+    with pytest.raises(blockdem.InputError, match="Simulation3d"):
+        blockdem.Simulation(blockdem.Scenario.from_toml(DROP))
+
+
+def test_bad_arguments_are_refused():
+    with pytest.raises(ValueError, match="threads"):
+        blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=0)
+    sim = blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=1)
+    with pytest.raises(ValueError, match="n >= 0"):
+        sim.step(-1)

@@ -1,0 +1,88 @@
+// The box-box separating-axis test (geometry/box_frame_3d.hpp, geometry/polyhedron_contact_3d.cpp)
+// against the general vertex test it replaces for two boxes: the same points with the same keys,
+// overlaps and normals to round-off, over random poses near contact.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "geometry/box_frame_3d.hpp"
+#include "geometry/polyhedron_contact_3d.hpp"
+
+namespace blockdem {
+namespace {
+
+// A shape about its centroid, turned by q and moved to c, as the world poses it.
+struct PosedBox {
+    Polyhedron shape;
+    PolyhedronEdges edges;
+    BoxFrame3d frame;
+    std::vector<Vec3> vertices, normals, directions;
+    Vec3 centre;
+    PosedBox(const std::vector<Vec3>& body_vertices, Quaternion q, Vec3 c)
+        : shape(convex_polyhedron(body_vertices)), edges(polyhedron_edges(shape)), frame(box_frame(shape, edges)),
+          centre(c) {
+        for (const Vec3& v : shape.vertices_m) vertices.push_back(c + rotate(q, v));
+        for (const Vec3& n : shape.face_normals) normals.push_back(rotate(q, n));
+        for (const Vec3& d : edges.directions) directions.push_back(rotate(q, d));
+    }
+    PosedPolyhedron view(bool as_box) const {
+        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), centre, as_box ? &frame : nullptr};
+    }
+};
+
+TEST(BoxFrame3d, RecognisesBoxesAndOnlyBoxes) {
+    const auto frame_of = [](const std::vector<Vec3>& v) {
+        const Polyhedron p = convex_polyhedron(v);
+        return box_frame(p, polyhedron_edges(p));
+    };
+    const BoxFrame3d brick = frame_of(box_vertices({0.2, 0.1, 0.05}, {}));
+    ASSERT_TRUE(brick.is_box);
+    EXPECT_DOUBLE_EQ(brick.half_lengths_m.x + brick.half_lengths_m.y + brick.half_lengths_m.z, 0.175);
+    // Turned about its centre: still a box (the directions are the turned axes).
+    EXPECT_TRUE(frame_of(box_vertices({0.2, 0.1, 0.05}, {}, from_rotation_vector({0.3, -0.2, 0.7}))).is_box);
+    // Not about the origin, sheared, or not six-faced: the general test.
+    EXPECT_FALSE(frame_of(box_vertices({0.2, 0.1, 0.05}, {1.0, 0.0, 0.0})).is_box);
+    EXPECT_FALSE(frame_of({{-1, -1, -1}, {1, -1, -1}, {-0.5, 1, -1}, {1.5, 1, -1}, {-1, -1, 1}, {1, -1, 1},
+                           {-0.5, 1, 1}, {1.5, 1, 1}})
+                     .is_box);
+    EXPECT_FALSE(frame_of(prism_vertices({{1, 0}, {0, 1}, {-1, 0}, {0, -1.2}, {0.5, -0.9}}, 1.0)).is_box);
+}
+
+TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    const std::vector<Vec3> slab = box_vertices({2.0, 1.0, 0.5}, {});
+    int touching = 0, apart = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        // A brick on a brick or on the slab, small turns (resting, rocking) and larger ones.
+        const double turn = trial % 2 == 0 ? 0.02 : 0.6;
+        const bool on_slab = trial % 3 == 0;
+        const Quaternion qa = from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)});
+        const Quaternion qb = from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)});
+        const double gap = on_slab ? 0.3 : 0.1;
+        const PosedBox a(on_slab ? slab : brick, qa, {0.0, 0.0, 0.0});
+        const PosedBox b(brick, qb, {0.1 * u(random), 0.05 * u(random), gap + 0.01 * u(random)});
+        ASSERT_TRUE(a.frame.is_box && b.frame.is_box);
+        ContactScratch3d scratch;
+        std::vector<ContactGeometry3d> general, boxes;
+        polyhedron_contact_3d(a.view(false), b.view(false), scratch, general);
+        polyhedron_contact_3d(a.view(true), b.view(true), scratch, boxes);
+        ASSERT_EQ(general.size(), boxes.size()) << "trial " << trial;
+        (general.empty() ? apart : touching) += 1;
+        for (std::size_t k = 0; k < general.size(); ++k) {
+            EXPECT_EQ(general[k].feature_a, boxes[k].feature_a);
+            EXPECT_EQ(general[k].feature_b, boxes[k].feature_b);
+            // Round-off of sums of products of lengths below 2 m.
+            EXPECT_NEAR(general[k].overlap_m, boxes[k].overlap_m, 1e-14);
+            EXPECT_NEAR(length(general[k].normal - boxes[k].normal), 0.0, 1e-14);
+            EXPECT_NEAR(length(general[k].point_m - boxes[k].point_m), 0.0, 1e-14);
+        }
+    }
+    // Both outcomes are exercised.
+    EXPECT_GT(touching, 500);
+    EXPECT_GT(apart, 200);
+}
+
+}  // namespace
+}  // namespace blockdem

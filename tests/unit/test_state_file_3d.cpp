@@ -1,0 +1,154 @@
+// A 3-D state file (io/state_file_3d.hpp): a world saved between two steps and restored into a
+// fresh world of the same scenario goes on bit for bit as the world that never stopped (bodies,
+// contact points with their keys and shear history, ledger); the monitor's peaks come back; a
+// state is refused, naming the file, by a scenario with another body or another dt.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstring>
+#include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "io/input_error.hpp"
+#include "io/scenario_3d.hpp"
+#include "io/state_file_3d.hpp"
+#include "world/step_3d.hpp"
+
+namespace blockdem {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A block tilted on a shaken slab: it rocks and slides, so every kind of history is live.
+LoadedScenario3d load(const std::string& block_name = "block", const std::string& dt = "") {
+    const std::string text = fmt::format(R"(dimension = 3
+[simulation]
+duration = 0.2
+{}
+[contact]
+kn = 1e6
+ks = 1e6
+mu = 0.3
+e = 0.5
+[[bodies]]
+name = "slab"
+kind = "driven"
+shape = "box"
+size = [4.0, 4.0, 0.2]
+position = [0.0, 0.0, -0.1]
+[[bodies]]
+name = "{}"
+shape = "box"
+size = [0.3, 0.2, 0.6]
+position = [0.0, 0.0, 0.3]
+density = 2000.0
+[table_motion.x]
+type = "sine"
+amplitude = 0.5
+unit = "g"
+period = 0.1
+[table_motion.y]
+type = "sine"
+amplitude = 0.3
+unit = "g"
+period = 0.07
+)",
+                                         dt, block_name);
+    return load_scenario_3d(toml::parse(text), "state_3d.toml", {});
+}
+
+void advance(World3d& w, ResponseMonitor3d& monitor, int steps) {
+    for (int i = 0; i < steps; ++i) {
+        step_begin(w);
+        monitor.update(w);
+        step_end(w);
+    }
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+class StateFile3dTest : public ::testing::Test {
+protected:
+    fs::path dir_ = fs::temp_directory_path() / fmt::format("blockdem_state_3d_test_{}", ::getpid());
+    void SetUp() override { fs::create_directories(dir_); }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // The whole run's world after 400 steps, and a world saved after 200 and restored.
+    fs::path save_after(LoadedScenario3d& s, ResponseMonitor3d& monitor, int steps) {
+        advance(s.world, monitor, steps);
+        const fs::path file = dir_ / "t.h5";
+        Monitor3dStatePart part(monitor);
+        write_state_file(file, 3, s.world.time_s, s.world.steps, StateFileInfo{}, [&](StateGroup& root) { write_world_3d(root, s.world); },
+                         {&part});
+        return file;
+    }
+};
+
+TEST_F(StateFile3dTest, ARestoredWorldGoesOnBitForBit) {
+    LoadedScenario3d whole = load();
+    ResponseMonitor3d whole_monitor(whole.world);
+    advance(whole.world, whole_monitor, 400);
+
+    LoadedScenario3d first = load();
+    ResponseMonitor3d first_monitor(first.world);
+    const fs::path file = save_after(first, first_monitor, 200);
+    ASSERT_GT(first.world.contacts.size(), 0u);
+    bool any_shear = false;
+    for (const ContactPoint3d& c : first.world.contacts) any_shear = any_shear || length(c.shear.spring_n) > 0.0;
+    ASSERT_TRUE(any_shear) << "the saved points carry no shear history: the test would not test it";
+
+    LoadedScenario3d second = load();
+    ResponseMonitor3d second_monitor(second.world);
+    const StateFile state(file);
+    EXPECT_EQ(state.dimension(), 3);
+    restore_world_3d(state, second.world, "state_3d.toml");
+    Monitor3dStatePart part(second_monitor);
+    state.restore(part);
+    EXPECT_EQ(second.world.steps, 200);
+    advance(second.world, second_monitor, 200);
+
+    const World3d& a = whole.world;
+    const World3d& b = second.world;
+    EXPECT_TRUE(same_bits(a.time_s, b.time_s));
+    for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+        const RigidBody3d& x = a.bodies[i];
+        const RigidBody3d& y = b.bodies[i];
+        for (auto [p, q] : {std::pair{x.position_m, y.position_m}, std::pair{x.velocity_m_s, y.velocity_m_s},
+                            std::pair{x.angular_momentum_kg_m2_s, y.angular_momentum_kg_m2_s}})
+            EXPECT_TRUE(same_bits(p.x, q.x) && same_bits(p.y, q.y) && same_bits(p.z, q.z)) << x.name;
+        EXPECT_TRUE(same_bits(x.orientation.w, y.orientation.w) && same_bits(x.orientation.z, y.orientation.z)) << x.name;
+    }
+    ASSERT_EQ(a.contacts.size(), b.contacts.size());
+    for (std::size_t k = 0; k < a.contacts.size(); ++k) {
+        EXPECT_TRUE(a.contacts[k].key == b.contacts[k].key);
+        EXPECT_TRUE(same_bits(a.contacts[k].shear.spring_n.x, b.contacts[k].shear.spring_n.x));
+    }
+    EXPECT_TRUE(same_bits(a.ledger.residual_j(), b.ledger.residual_j()));
+    EXPECT_TRUE(same_bits(a.ledger.friction_j, b.ledger.friction_j));
+    EXPECT_TRUE(same_bits(whole_monitor.bodies()[1].peak_tilt_rad, second_monitor.bodies()[1].peak_tilt_rad));
+    EXPECT_TRUE(same_bits(whole_monitor.bodies()[1].peak_slip_m, second_monitor.bodies()[1].peak_slip_m));
+}
+
+TEST_F(StateFile3dTest, AStateOfAnotherScenarioIsRefusedNamingTheFile) {
+    LoadedScenario3d first = load();
+    ResponseMonitor3d monitor(first.world);
+    const fs::path file = save_after(first, monitor, 20);
+    const StateFile state(file);
+
+    LoadedScenario3d renamed = load("statue");
+    try {
+        restore_world_3d(state, renamed.world, "other.toml");
+        FAIL() << "a state with another body was taken";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("t.h5"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("body 2 is 'block' in the state but 'statue'"), std::string::npos) << e.what();
+    }
+    LoadedScenario3d finer = load("block", "dt = 1e-5");
+    EXPECT_THROW(restore_world_3d(state, finer.world, "finer.toml"), InputError);
+}
+
+}  // namespace
+}  // namespace blockdem
