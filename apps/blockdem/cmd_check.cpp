@@ -14,10 +14,12 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "apps/blockdem/check_3d.hpp"
 #include "apps/blockdem/commands.hpp"
 #include "dynamics/critical_time_step.hpp"
 #include "io/run_checks.hpp"
 #include "io/scenario.hpp"
+#include "io/scenario_3d.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 #include "laws/material_stiffness.hpp"
 #include "laws/restitution.hpp"
@@ -191,6 +193,8 @@ void add_check_command(CLI::App& app) {
     cmd->add_option("scenario", *scenario, "scenario file (TOML)")->required();
     cmd->add_option("--set", *sets, "override a scenario key: --set contact.h_s=0.5 (repeatable)");
     cmd->callback([=] {
+        toml::table root = load_toml_file(*scenario);
+        if (scenario_dimension(root, *scenario) == 3) return check_scenario_3d(std::move(root), *scenario, *sets);
         const LoadedScenario s = load_scenario(*scenario, *sets);
         const World& w = s.world;
         fmt::print("scenario {}: valid\n", *scenario);

@@ -43,13 +43,29 @@ void check_no_initial_overlap_3d(const World3d& w) {
     }
 }
 
-CriticalTimeStep3d start_time_step_3d(const World3d& w) {
+namespace {
+
+// The world after the probe's three steps (none without a dynamic body).
+std::optional<World3d> probed(const World3d& w) {
     const double dt = probe_step_s(w);
-    if (!std::isfinite(dt)) return {.dt_s = std::numeric_limits<double>::infinity()};
+    if (!std::isfinite(dt)) return std::nullopt;
     World3d probe = w;
     probe.dt_s = dt;
     for (int k = 0; k < 3; ++k) step_3d(probe);
-    return live_time_step_3d(probe);
+    return probe;
+}
+
+}  // namespace
+
+CriticalTimeStep3d start_time_step_3d(const World3d& w) {
+    const std::optional<World3d> probe = probed(w);
+    if (!probe) return {.dt_s = std::numeric_limits<double>::infinity()};
+    return live_time_step_3d(*probe);
+}
+
+std::vector<ContactPoint3d> start_contacts_3d(const World3d& w) {
+    std::optional<World3d> probe = probed(w);
+    return probe ? std::move(probe->contacts) : std::vector<ContactPoint3d>{};
 }
 
 CriticalTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety, double output_interval_s) {

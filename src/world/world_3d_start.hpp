@@ -12,6 +12,7 @@
 // loaded model at rest. A model that starts with no body on another (a drop from a height) has
 // no bound at the start, and the time step must then be given, as in 2-D.
 #include <optional>
+#include <vector>
 
 #include "dynamics/critical_time_step_3d.hpp"
 #include "world/world_3d.hpp"
@@ -24,6 +25,10 @@ void check_no_initial_overlap_3d(const World3d& w);
 
 /// The stable bound at the start, from the probe above (dt_s infinite: no point at the start).
 CriticalTimeStep3d start_time_step_3d(const World3d& w);
+
+/// The probe's contact points (above): those the loaded model at rest carries, with each point's
+/// share of its pair's reduced mass (empty: no dynamic body). For `blockdem check`.
+std::vector<ContactPoint3d> start_contacts_3d(const World3d& w);
 
 /// Sets w.dt_s: the given dt, refused (ModelError, naming the body of the bound) above the bound;
 /// or dt_safety times the bound, rounded down to a whole number of steps per output interval.

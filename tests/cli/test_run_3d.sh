@@ -203,8 +203,8 @@ out=$("$bin" run "$tmp/box.toml" --out "$tmp/soft" --set contact.kn=10 --set sim
 [[ $status -eq 3 ]] || fail "overlap stop: exit status $status, expected 3: $out"
 expect_in "$out" "penetration: bodies 'table' and 'block'"
 
-out=$("$bin" check "$tmp/box.toml" 2>&1); status=$?
-[[ $status -eq 2 ]] || fail "check on a 3-D scenario: exit status $status, expected 2: $out"
+out=$("$bin" limit "$tmp/box.toml" 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "limit on a 3-D scenario: exit status $status, expected 2: $out"
 expect_in "$out" "dimension"
 
 # Ctrl-C (SIGINT) in the middle of a 3-D run: exit status 130, summary.json "interrupted",
