@@ -138,6 +138,79 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
     return joint_point(p, tributary_m * pair.stiffness_scale, thickness_m);
 }
 
+// The per-length law at the points of a pair that has no interior points and does not dilate
+// (every pair of a wall without sub-contacts or dilation): joint_pair_law's results, bit for
+// bit, at two thirds of its instructions (docs/performance.md, "Joints"). What it leaves out:
+// the interior points' bookkeeping; the dilation branch; the JointForce of a point that is not
+// bonded (a dry point keeps its bond, breaks nothing, and has no dilation once closed, as in
+// mohr_coulomb_joint); and the mass shares' product, end share times pair share, which for a
+// pair's own one or two points is mass_sharing_points exactly (a halving and a doubling).
+// The ledger's terms are summed in locals and written once.
+[[gnu::flatten]] inline ContactEnergy joint_ends_law(PairContact& pair, const Bodies& b, const ContactParameters& p,
+                                                 double rounding_m, double dt_s, std::uint32_t mass_sharing_points,
+                                                 PairForces& out) {
+    const std::uint32_t ia = pair.a;
+    const std::uint32_t ib = pair.b;
+    const JointPoint joint = end_joint_point(b, pair, p, rounding_m, pair.count);
+    const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
+    const DashpotCoefficients dash = joint_dashpots(p, joint, reduced_mass / mass_sharing_points);
+    const double broken_mu = residual_friction(p);
+    const Vec2 n = pair.normal;
+    const Vec2 t = perp(n);
+    double normal_dashpot_j = 0.0, shear_dashpot_j = 0.0, friction_j = 0.0, breakage_j = 0.0, elastic_j = 0.0;
+    double deepest_m = 0.0;
+    for (std::uint32_t k = 0; k < pair.count; ++k) {
+        ContactPoint& point = pair.points[k];
+        const Vec2 ra = point.point_m - b.position_m[ia];
+        const Vec2 rb = point.point_m - b.position_m[ib];
+        const Vec2 relative = (b.velocity_m_s[ib] + cross(b.angular_velocity_rad_s[ib], rb)) -
+                              (b.velocity_m_s[ia] + cross(b.angular_velocity_rad_s[ia], ra));
+        const ContactKinematics kin{point.overlap_m, dot(relative, n), dot(relative, t)};
+        ContactForce f;
+        double normal_m;  // [m] what the normal spring stores energy on (joint_elastic_energy)
+        if (point.bond == BondState::intact) {
+            const JointForce j = mohr_coulomb_joint(p, joint, dash, kin, point.history(), point.bond, dt_s);
+            f = j.force;
+            point.bond = j.bond;
+            point.dilation_m = j.dilation_m;
+            breakage_j += j.bond_breakage_j;
+            normal_m = j.bond == BondState::intact ? point.overlap_m : std::max(0.0, point.overlap_m + j.dilation_m);
+        } else if (point.overlap_m < 0.0) {
+            f = open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, dt_s).force;
+            normal_m = std::max(0.0, point.overlap_m + point.dilation_m);
+        } else {
+            const double friction = point.bond == BondState::none ? p.mu : broken_mu;
+            f = joint_detail::dry_point(p, friction, joint, dash, kin, point.history(), dt_s);
+            point.dilation_m = 0.0;
+            normal_m = std::max(0.0, point.overlap_m);  // (overlap + 0: the same bits)
+        }
+        point.normal_force_n = f.normal_n;
+        point.shear_spring_n = f.shear_spring_n;
+        point.shear_force_n = f.shear_n;
+        point.normal_dashpot_n = f.normal_dashpot_n;
+        point.shear_dashpot_n = f.shear_dashpot_n;
+        point.sliding = f.sliding;
+        normal_dashpot_j += f.normal_dashpot_work_j;
+        shear_dashpot_j += f.shear_dashpot_work_j;
+        friction_j += f.friction_work_j;
+        const double shear_j = joint.ks_N_m > 0.0 ? 0.5 * f.shear_spring_n * f.shear_spring_n / joint.ks_N_m : 0.0;
+        elastic_j += 0.5 * joint.kn_N_m * normal_m * normal_m + shear_j;
+        const Vec2 on_b = f.normal_n * n + f.shear_n * t;
+        out.on_b_n[k] = on_b;
+        out.torque_on_b_n_m[k] = cross(rb, on_b);
+        out.torque_on_a_n_m[k] = cross(ra, on_b);
+        deepest_m = std::max(deepest_m, point.overlap_m);
+    }
+    ContactEnergy energy;
+    energy.normal_dashpot_j = normal_dashpot_j;
+    energy.shear_dashpot_j = shear_dashpot_j;
+    energy.friction_j = friction_j;
+    energy.bond_breakage_j = breakage_j;
+    energy.elastic_j = elastic_j;
+    energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
+    return energy;
+}
+
 // The interior points of a pair with sub-contacts (points > 2 in all), placed from this step's
 // ends; returns the work of the dashpots of those dropped. Out of line, as interior_points_law.
 [[gnu::noinline]] ContactEnergy place_interior_points(const Bodies& b, const PairContact& pair, SubContacts& sub,
@@ -183,6 +256,8 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const std::uint32_t points = sub != nullptr && pair.count == 2 ? sub_contacts : pair.count;
+    if (points == pair.count && stored.tan_dilation == 0.0) [[likely]]
+        return joint_ends_law(pair, b, stored, rounding_m, dt_s, mass_sharing_points, out);
     ContactEnergy energy;
     if (points > 2) energy = place_interior_points(b, pair, *sub, points, dt_s);
     const PairMotion motion = pair_motion(b, ia, ib);
