@@ -434,7 +434,8 @@ bool every_pair_per_length(const MaterialPairs& contact) {
 [[gnu::flatten]] ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
                                                     const OpenedPoints& opened) {
     PairContact& pair = w.contacts[p];
-    SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
+    // (Empty first: the size is a division by the entry's size, at every pair of every step.)
+    SubContacts* sub = !w.sub_contacts.empty() && p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
     PairForces& out = w.pair_forces[p];
     out.count = pair.count;
     ContactEnergy energy;
