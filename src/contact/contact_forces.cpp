@@ -146,9 +146,9 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
 // mohr_coulomb_joint); and the mass shares' product, end share times pair share, which for a
 // pair's own one or two points is mass_sharing_points exactly (a halving and a doubling).
 // The ledger's terms are summed in locals and written once.
-[[gnu::flatten]] inline ContactEnergy joint_ends_law(PairContact& pair, const Bodies& b, const ContactParameters& p,
-                                                 double rounding_m, double dt_s, std::uint32_t mass_sharing_points,
-                                                 PairForces& out) {
+[[gnu::flatten]] inline void joint_ends_law(PairContact& pair, const Bodies& b, const ContactParameters& p,
+                                        double rounding_m, double dt_s, std::uint32_t mass_sharing_points,
+                                        PairForces& out, ContactEnergy& energy) {
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const JointPoint joint = end_joint_point(b, pair, p, rounding_m, pair.count);
@@ -201,14 +201,12 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
         out.torque_on_a_n_m[k] = cross(ra, on_b);
         deepest_m = std::max(deepest_m, point.overlap_m);
     }
-    ContactEnergy energy;
     energy.normal_dashpot_j = normal_dashpot_j;
     energy.shear_dashpot_j = shear_dashpot_j;
     energy.friction_j = friction_j;
     energy.bond_breakage_j = breakage_j;
     energy.elastic_j = elastic_j;
     energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
-    return energy;
 }
 
 // The interior points of a pair with sub-contacts (points > 2 in all), placed from this step's
@@ -256,8 +254,6 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
     const std::uint32_t ia = pair.a;
     const std::uint32_t ib = pair.b;
     const std::uint32_t points = sub != nullptr && pair.count == 2 ? sub_contacts : pair.count;
-    if (points == pair.count && stored.tan_dilation == 0.0) [[likely]]
-        return joint_ends_law(pair, b, stored, rounding_m, dt_s, mass_sharing_points, out);
     ContactEnergy energy;
     if (points > 2) energy = place_interior_points(b, pair, *sub, points, dt_s);
     const PairMotion motion = pair_motion(b, ia, ib);
@@ -441,8 +437,13 @@ bool every_pair_per_length(const MaterialPairs& contact) {
     ContactEnergy energy;
     if (pair.count > 0) {
         const ContactParameters& stored = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
-        energy = joint_pair_law(pair, w.bodies, stored, w.contact.rounding_m, w.contact.sub_contacts, sub, w.dt_s,
-                                mass_sharing_points, out);
+        // (No interior points: joint_pair_law's own count of points is the pair's.)
+        const bool ends_only = sub == nullptr || pair.count != 2 || w.contact.sub_contacts == 2;
+        if (ends_only && stored.tan_dilation == 0.0) [[likely]]
+            joint_ends_law(pair, w.bodies, stored, w.contact.rounding_m, w.dt_s, mass_sharing_points, out, energy);
+        else
+            energy = joint_pair_law(pair, w.bodies, stored, w.contact.rounding_m, w.contact.sub_contacts, sub, w.dt_s,
+                                    mass_sharing_points, out);
     }
     // (The rest as apply_pair_law.)
     if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]
