@@ -42,20 +42,22 @@ struct KeptGap {
     bool face_kept = false;
 };
 
-inline KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p) {
+inline KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p, bool joints_only) {
     KeptGap kept;
     if (pair.count == 0) return kept;
     const Bodies& b = w.bodies;
-    const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
-    // (Bonds and dilation exist only on per-length joints: bonded_pairs.cpp, the scenario
-    // reader; a per-point pair's points never hold either.)
-    if (params.stiffness != StiffnessBasis::per_length) return kept;
     // A bonded joint holds its points while it opens by less than its gap (bonded_pairs.hpp),
     // or by the interior points of its sub-contacts (contact/sub_contacts.hpp).
-    if (has_intact_bond(pair))
-        kept.gap_m = bonded_gap_m(b, pair, params);
-    else if (!w.sub_contacts.empty() && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
-        kept.gap_m = bonded_gap_m(b, pair, params);
+    const bool bonded =
+        has_intact_bond(pair) || (!w.sub_contacts.empty() && has_intact_bond(w.sub_contacts[p]));
+    // (Bonds and dilation exist only on per-length joints: bonded_pairs.cpp, the scenario
+    // reader; a per-point pair's points never hold either. In a world of joints only, the
+    // parameters are needed only for a bonded pair's gap.)
+    if (!joints_only || bonded) {
+        const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
+        if (params.stiffness != StiffnessBasis::per_length) return kept;
+        if (bonded) kept.gap_m = bonded_gap_m(b, pair, params);
+    }
     // A bonded joint discretised into sub-contacts stays one face while any of its points is in
     // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
     // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
@@ -69,7 +71,7 @@ inline KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p
 
 }  // namespace
 
-OpenedPoints update_pair_contact(World& w, std::size_t p) {
+OpenedPoints update_pair_contact(World& w, std::size_t p, bool joints_only) {
     const Bodies& b = w.bodies;
     PairContact& pair = w.contacts[p];
     // The pair's polygons are parts (a convex body's one part is the body itself); the motion
@@ -77,7 +79,7 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const std::uint32_t part_a = pair.part_a;
     const std::uint32_t part_b = pair.part_b;
     // A pair that keeps points apart by a gap gets no early exit on the boxes.
-    const KeptGap kept = kept_gap_m(w, pair, p);
+    const KeptGap kept = kept_gap_m(w, pair, p, joints_only);
     const double gap_m = kept.gap_m;
     const bool face_kept = kept.face_kept;
     const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
