@@ -176,7 +176,20 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
             breakage_j += j.bond_breakage_j;
             normal_m = j.bond == BondState::intact ? point.overlap_m : std::max(0.0, point.overlap_m + j.dilation_m);
         } else if (point.overlap_m < 0.0) {
-            f = open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, dt_s).force;
+            // An open point that held nothing last step either (a kept open face) holds nothing
+            // now: its shear spring, released to a zero cap, is a zero with the sign of the
+            // trial, and every work term a zero, which adds nothing to the sums (never -0: they
+            // start at +0). What open_point gives, without its arithmetic; a zero trial (no slip)
+            // or one not finite takes open_point.
+            const double trial_n = point.shear_spring_n - joint.ks_N_m * (kin.tangential_speed_m_s * dt_s);
+            if (point.shear_spring_n == 0.0 && point.normal_dashpot_n == 0.0 && point.shear_dashpot_n == 0.0 &&
+                std::abs(trial_n) > 0.0 && std::abs(trial_n) < INFINITY) {
+                f.shear_spring_n = trial_n < 0.0 ? -0.0 : 0.0;
+                f.shear_n = f.shear_spring_n;
+                f.sliding = true;
+            } else {
+                f = open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, dt_s).force;
+            }
             normal_m = std::max(0.0, point.overlap_m + point.dilation_m);
         } else {
             const double friction = point.bond == BondState::none ? p.mu : broken_mu;
