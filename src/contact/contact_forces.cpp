@@ -138,6 +138,92 @@ inline JointPoint end_joint_point(const Bodies& b, const PairContact& pair, cons
     return joint_point(p, tributary_m * pair.stiffness_scale, thickness_m);
 }
 
+// The per-length law at the points of a pair that has no interior points and does not dilate
+// (every pair of a wall without sub-contacts or dilation): joint_pair_law's results, bit for
+// bit, with 12 % fewer instructions (docs/performance.md, "The per-length wall without
+// bonds"). What it leaves out:
+// the interior points' bookkeeping; the dilation branch; the JointForce of a point that is not
+// bonded (a dry point keeps its bond, breaks nothing, and has no dilation once closed, as in
+// mohr_coulomb_joint); and the mass shares' product, end share times pair share, which for a
+// pair's own one or two points is mass_sharing_points exactly (a halving and a doubling).
+// The ledger's terms are summed in locals and written once.
+[[gnu::flatten]] inline void joint_ends_law(PairContact& pair, const Bodies& b, const ContactParameters& p,
+                                        double rounding_m, double dt_s, std::uint32_t mass_sharing_points,
+                                        PairForces& out, ContactEnergy& energy) {
+    const std::uint32_t ia = pair.a;
+    const std::uint32_t ib = pair.b;
+    const JointPoint joint = end_joint_point(b, pair, p, rounding_m, pair.count);
+    const double reduced_mass = 1.0 / (b.inv_mass_1_kg[ia] + b.inv_mass_1_kg[ib]);
+    const DashpotCoefficients dash = joint_dashpots(p, joint, reduced_mass / mass_sharing_points);
+    const double broken_mu = residual_friction(p);
+    const Vec2 n = pair.normal;
+    const Vec2 t = perp(n);
+    double normal_dashpot_j = 0.0, shear_dashpot_j = 0.0, friction_j = 0.0, breakage_j = 0.0, elastic_j = 0.0;
+    double deepest_m = 0.0;
+    for (std::uint32_t k = 0; k < pair.count; ++k) {
+        ContactPoint& point = pair.points[k];
+        const Vec2 ra = point.point_m - b.position_m[ia];
+        const Vec2 rb = point.point_m - b.position_m[ib];
+        const Vec2 relative = (b.velocity_m_s[ib] + cross(b.angular_velocity_rad_s[ib], rb)) -
+                              (b.velocity_m_s[ia] + cross(b.angular_velocity_rad_s[ia], ra));
+        const ContactKinematics kin{point.overlap_m, dot(relative, n), dot(relative, t)};
+        ContactForce f;
+        double normal_m;  // [m] what the normal spring stores energy on (joint_elastic_energy)
+        if (point.bond == BondState::intact) {
+            // (No dilation history: an intact bond does not dilate, nor does this pair.)
+            const JointForce j = mohr_coulomb_joint(p, joint, dash, kin, point.history(), point.bond, dt_s);
+            f = j.force;
+            point.bond = j.bond;
+            point.dilation_m = j.dilation_m;
+            breakage_j += j.bond_breakage_j;
+            normal_m = j.bond == BondState::intact ? point.overlap_m : std::max(0.0, point.overlap_m + j.dilation_m);
+        } else if (point.overlap_m < 0.0) {
+            // An open point that held nothing last step either (a kept open face) holds nothing
+            // now: its shear spring, released to a zero cap, is a zero with the sign of the
+            // trial, and every work term a zero, which adds nothing to the sums (never -0: they
+            // start at +0). What open_point gives, without its arithmetic; a zero trial (no slip)
+            // or one not finite takes open_point.
+            const double trial_n = point.shear_spring_n - joint.ks_N_m * (kin.tangential_speed_m_s * dt_s);
+            if (point.shear_spring_n == 0.0 && point.normal_dashpot_n == 0.0 && point.shear_dashpot_n == 0.0 &&
+                std::abs(trial_n) > 0.0 && std::abs(trial_n) < INFINITY) {
+                f.shear_spring_n = trial_n < 0.0 ? -0.0 : 0.0;
+                f.shear_n = f.shear_spring_n;
+                f.sliding = true;
+            } else {
+                f = open_point(joint, dash, kin, point.history(), point.bond, point.dilation_m, dt_s).force;
+            }
+            normal_m = std::max(0.0, point.overlap_m + point.dilation_m);
+        } else {
+            const double friction = point.bond == BondState::none ? p.mu : broken_mu;
+            f = joint_detail::dry_point(p, friction, joint, dash, kin, point.history(), dt_s);
+            point.dilation_m = 0.0;
+            normal_m = std::max(0.0, point.overlap_m);  // (overlap + 0: the same bits)
+        }
+        point.normal_force_n = f.normal_n;
+        point.shear_spring_n = f.shear_spring_n;
+        point.shear_force_n = f.shear_n;
+        point.normal_dashpot_n = f.normal_dashpot_n;
+        point.shear_dashpot_n = f.shear_dashpot_n;
+        point.sliding = f.sliding;
+        normal_dashpot_j += f.normal_dashpot_work_j;
+        shear_dashpot_j += f.shear_dashpot_work_j;
+        friction_j += f.friction_work_j;
+        const double shear_j = joint.ks_N_m > 0.0 ? 0.5 * f.shear_spring_n * f.shear_spring_n / joint.ks_N_m : 0.0;
+        elastic_j += 0.5 * joint.kn_N_m * normal_m * normal_m + shear_j;
+        const Vec2 on_b = f.normal_n * n + f.shear_n * t;
+        out.on_b_n[k] = on_b;
+        out.torque_on_b_n_m[k] = cross(rb, on_b);
+        out.torque_on_a_n_m[k] = cross(ra, on_b);
+        deepest_m = std::max(deepest_m, point.overlap_m);
+    }
+    energy.normal_dashpot_j = normal_dashpot_j;
+    energy.shear_dashpot_j = shear_dashpot_j;
+    energy.friction_j = friction_j;
+    energy.bond_breakage_j = breakage_j;
+    energy.elastic_j = elastic_j;
+    energy.deepest_overlap_ratio = deepest_m / std::min(b.least_width_m[ia], b.least_width_m[ib]);
+}
+
 // The interior points of a pair with sub-contacts (points > 2 in all), placed from this step's
 // ends; returns the work of the dashpots of those dropped. Out of line, as interior_points_law.
 [[gnu::noinline]] ContactEnergy place_interior_points(const Bodies& b, const PairContact& pair, SubContacts& sub,
@@ -359,14 +445,20 @@ bool every_pair_per_length(const MaterialPairs& contact) {
 [[gnu::flatten]] ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
                                                     const OpenedPoints& opened) {
     PairContact& pair = w.contacts[p];
-    SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
+    // (Empty first: the size is a division by the entry's size, at every pair of every step.)
+    SubContacts* sub = !w.sub_contacts.empty() && p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
     PairForces& out = w.pair_forces[p];
     out.count = pair.count;
     ContactEnergy energy;
     if (pair.count > 0) {
         const ContactParameters& stored = w.contact.at(w.bodies.material[pair.a], w.bodies.material[pair.b]);
-        energy = joint_pair_law(pair, w.bodies, stored, w.contact.rounding_m, w.contact.sub_contacts, sub, w.dt_s,
-                                mass_sharing_points, out);
+        // (No interior points: joint_pair_law's own count of points is the pair's.)
+        const bool ends_only = sub == nullptr || pair.count != 2 || w.contact.sub_contacts == 2;
+        if (ends_only && stored.tan_dilation == 0.0) [[likely]]
+            joint_ends_law(pair, w.bodies, stored, w.contact.rounding_m, w.dt_s, mass_sharing_points, out, energy);
+        else
+            energy = joint_pair_law(pair, w.bodies, stored, w.contact.rounding_m, w.contact.sub_contacts, sub, w.dt_s,
+                                    mass_sharing_points, out);
     }
     // (The rest as apply_pair_law.)
     if (sub != nullptr && sub->count > 0 && pair.count != 2) [[unlikely]]

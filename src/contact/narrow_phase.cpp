@@ -42,20 +42,25 @@ struct KeptGap {
     bool face_kept = false;
 };
 
+template <bool joints_only>
 inline KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p) {
     KeptGap kept;
     if (pair.count == 0) return kept;
     const Bodies& b = w.bodies;
-    const ContactParameters& params = w.contact.at(b.material[pair.a], b.material[pair.b]);
     // (Bonds and dilation exist only on per-length joints: bonded_pairs.cpp, the scenario
     // reader; a per-point pair's points never hold either.)
-    if (params.stiffness != StiffnessBasis::per_length) return kept;
+    const ContactParameters* params = nullptr;
+    if constexpr (!joints_only) {
+        params = &w.contact.at(b.material[pair.a], b.material[pair.b]);
+        if (params->stiffness != StiffnessBasis::per_length) return kept;
+    }
     // A bonded joint holds its points while it opens by less than its gap (bonded_pairs.hpp),
-    // or by the interior points of its sub-contacts (contact/sub_contacts.hpp).
-    if (has_intact_bond(pair))
-        kept.gap_m = bonded_gap_m(b, pair, params);
-    else if (!w.sub_contacts.empty() && has_intact_bond(w.sub_contacts[p])) [[unlikely]]
-        kept.gap_m = bonded_gap_m(b, pair, params);
+    // or by the interior points of its sub-contacts (contact/sub_contacts.hpp). (In a world of
+    // joints only, the parameters are needed only here.)
+    if (has_intact_bond(pair) || (!w.sub_contacts.empty() && has_intact_bond(w.sub_contacts[p]))) {
+        if (params == nullptr) params = &w.contact.at(b.material[pair.a], b.material[pair.b]);
+        kept.gap_m = bonded_gap_m(b, pair, *params);
+    }
     // A bonded joint discretised into sub-contacts stays one face while any of its points is in
     // contact or bonded: its ends are found up to face_gap_m apart, so that its interior points
     // keep their place, bond and history while a crack runs along it (sub_contacts.hpp).
@@ -67,9 +72,10 @@ inline KeptGap kept_gap_m(const World& w, const PairContact& pair, std::size_t p
     return kept;
 }
 
-}  // namespace
-
-OpenedPoints update_pair_contact(World& w, std::size_t p) {
+// update_pair_contact, and with joints_only, update_joint_pair_contact (narrow_phase.hpp);
+// inlined in each, so the per-point path has the code it had.
+template <bool joints_only>
+[[gnu::always_inline]] inline OpenedPoints pair_contact(World& w, std::size_t p) {
     const Bodies& b = w.bodies;
     PairContact& pair = w.contacts[p];
     // The pair's polygons are parts (a convex body's one part is the body itself); the motion
@@ -77,7 +83,7 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
     const std::uint32_t part_a = pair.part_a;
     const std::uint32_t part_b = pair.part_b;
     // A pair that keeps points apart by a gap gets no early exit on the boxes.
-    const KeptGap kept = kept_gap_m(w, pair, p);
+    const KeptGap kept = kept_gap_m<joints_only>(w, pair, p);
     const double gap_m = kept.gap_m;
     const bool face_kept = kept.face_kept;
     const double collide_gap_m = face_kept ? std::max(gap_m, face_gap_m(b, pair)) : gap_m;
@@ -128,6 +134,12 @@ OpenedPoints update_pair_contact(World& w, std::size_t p) {
         keep_face_or_trim(manifold, gap_m, w.contact.sub_contacts);
     return update_pair_geometry(pair, manifold, part_match_distance_m(b, pair));
 }
+
+}  // namespace
+
+OpenedPoints update_pair_contact(World& w, std::size_t p) { return pair_contact<false>(w, p); }
+
+OpenedPoints update_joint_pair_contact(World& w, std::size_t p) { return pair_contact<true>(w, p); }
 
 bool collide_parts(const World& w, const PairContact& pair, std::uint32_t reference, ContactManifold& manifold,
                    AxisCache* cache, double gap_m) {

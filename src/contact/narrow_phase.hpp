@@ -13,6 +13,11 @@ namespace blockdem {
 /// pairs may run in parallel. Returns last step's points that opened (for the energy ledger).
 OpenedPoints update_pair_contact(World& w, std::size_t p);
 
+/// update_pair_contact for a world whose material pairs all have per-length stiffness
+/// (every_pair_per_length): the same results, with a pair's parameters looked up only when it
+/// is bonded (the step's joints-only path: docs/performance.md, "Joints").
+OpenedPoints update_joint_pair_contact(World& w, std::size_t p);
+
 /// The contact points of pair p's two parts now (sharp or rounded, as [contact] rounding says),
 /// without matching them to last step's: what update_pair_contact computes before the matching,
 /// and what bonds are made on at the start (contact/bonded_pairs.cpp). reference: last step's

@@ -149,7 +149,7 @@ void update_contacts_and_forces(World& w) {
         // (A world of joints only takes the joint law's own path: same results, fewer instructions.)
         if (every_pair_per_length(w.contact))
             contacts = deterministic_sum(pairs, [&](std::ptrdiff_t p) {
-                const OpenedPoints opened = update_pair_contact(w, static_cast<std::size_t>(p));
+                const OpenedPoints opened = update_joint_pair_contact(w, static_cast<std::size_t>(p));
                 return apply_joint_pair_law(w, static_cast<std::size_t>(p), w.contacts[p].count, opened);
             });
         else

@@ -1,7 +1,8 @@
-// The joint-only law path (apply_joint_pair_law, which the step takes when every material pair
-// has per-length stiffness) against the general one (apply_pair_law): the same bits, pair by
-// pair, on a shaken bonded wall with sub-contacts whose bonds break (docs/performance.md, "The
-// bonded wall").
+// The joint-only path (update_joint_pair_contact and apply_joint_pair_law, which the step takes
+// when every material pair has per-length stiffness) against the general one
+// (update_pair_contact, apply_pair_law): the same bits, pair by pair, on a shaken bonded wall
+// whose bonds break, with sub-contacts (the interior points' law) and without (the lean loop of
+// a pair's own points, joint_ends_law: docs/performance.md, "The bonded wall", "Joints").
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -36,20 +37,24 @@ bool same_energy(const ContactEnergy& x, const ContactEnergy& y) {
            x.deepest_pair == y.deepest_pair;
 }
 
-TEST(JointPairLaw, JointPathGivesTheGeneralPathsBits) {
-    // A small S3 wall bonded with weak joints (cohesion 2 kPa, tension 1 kPa: the 0.3 g shaking
-    // breaks some) and four sub-contacts per edge joint.
+// What the comparison saw.
+struct Seen {
+    std::size_t pairs = 0, intact = 0, broken = 0, open = 0, interior = 0;
+};
+
+// The two paths on copies of a small S3 wall bonded with weak joints (cohesion 2 kPa, tension
+// 1 kPa: the 0.3 g shaking breaks some; residual friction below mu) every 50 steps of 1500.
+void compare_paths(std::uint32_t sub_contacts, Seen& seen) {
     Model m = scenes::bonded_wall_scene(60, 1.0);
     ContactParameters joint = m.contact.at(0, 0);
     joint.cohesion_pa = 2e3;
     joint.tensile_strength_pa = 1e3;
-    const std::uint32_t sub_contacts = 4;
+    joint.residual_mu = 0.5 * joint.mu;
     m.contact = MaterialPairs::uniform(joint);
     m.contact.sub_contacts = sub_contacts;
     World w = build_world(m);
     ASSERT_TRUE(every_pair_per_length(w.contact));
 
-    std::size_t compared_pairs = 0, broken_points = 0, intact_points = 0, interior_points = 0;
     for (int s = 0; s < 1500; ++s) {
         if (s % 50 == 0) {
             // This step's narrow phase on two copies, then each path's law on its copy.
@@ -59,7 +64,8 @@ TEST(JointPairLaw, JointPathGivesTheGeneralPathsBits) {
             prepare_pair_forces(joints);
             for (std::size_t p = 0; p < w.contacts.size(); ++p) {
                 const OpenedPoints opened_general = update_pair_contact(general, p);
-                const OpenedPoints opened_joints = update_pair_contact(joints, p);
+                const OpenedPoints opened_joints = update_joint_pair_contact(joints, p);
+                ASSERT_EQ(opened_general.count, opened_joints.count);
                 const ContactEnergy e_general =
                     apply_pair_law(general, p, general.contacts[p].count, opened_general);
                 const ContactEnergy e_joints = apply_joint_pair_law(joints, p, joints.contacts[p].count, opened_joints);
@@ -73,27 +79,46 @@ TEST(JointPairLaw, JointPathGivesTheGeneralPathsBits) {
                     ASSERT_TRUE(same_bits(general.pair_forces[p].on_b_n[k], joints.pair_forces[p].on_b_n[k]));
                     ASSERT_TRUE(same_bits(general.pair_forces[p].torque_on_a_n_m[k], joints.pair_forces[p].torque_on_a_n_m[k]));
                     ASSERT_TRUE(same_bits(general.pair_forces[p].torque_on_b_n_m[k], joints.pair_forces[p].torque_on_b_n_m[k]));
-                    broken_points += is_broken(a.points[k].bond);
-                    intact_points += a.points[k].bond == BondState::intact;
+                    seen.broken += is_broken(a.points[k].bond);
+                    seen.intact += a.points[k].bond == BondState::intact;
+                    seen.open += a.points[k].overlap_m < 0.0 && a.points[k].bond != BondState::intact;
                 }
                 if (p < general.sub_contacts.size()) {
                     ASSERT_EQ(general.sub_contacts[p].count, joints.sub_contacts[p].count);
                     for (std::uint32_t k = 0; k < general.sub_contacts[p].count; ++k)
                         ASSERT_TRUE(same_point(general.sub_contacts[p].points[k], joints.sub_contacts[p].points[k]));
-                    interior_points += general.sub_contacts[p].count;
+                    seen.interior += general.sub_contacts[p].count;
                 }
-                compared_pairs += a.count > 0;
+                seen.pairs += a.count > 0;
             }
         }
         step(w);
     }
+    std::printf("sub_contacts %u: compared pairs %zu: points intact %zu, broken %zu, open %zu, interior %zu\n",
+                sub_contacts, seen.pairs, seen.intact, seen.broken, seen.open, seen.interior);
+}
+
+TEST(JointPairLaw, JointPathGivesTheGeneralPathsBits) {
+    // With four sub-contacts per edge joint: the interior points' path.
+    Seen seen;
+    compare_paths(4, seen);
     // The comparison saw every kind of point: intact, broken, and interior ones.
-    EXPECT_GT(compared_pairs, 1000u);
-    EXPECT_GT(intact_points, 0u);
-    EXPECT_GT(broken_points, 0u);
-    EXPECT_GT(interior_points, 0u);
-    std::printf("compared pairs %zu: points intact %zu, broken %zu, interior %zu\n", compared_pairs, intact_points,
-                broken_points, interior_points);
+    EXPECT_GT(seen.pairs, 1000u);
+    EXPECT_GT(seen.intact, 0u);
+    EXPECT_GT(seen.broken, 0u);
+    EXPECT_GT(seen.interior, 0u);
+}
+
+TEST(JointPairLaw, JointPathWithoutSubContactsGivesTheGeneralPathsBits) {
+    // Without sub-contacts every pair takes the lean loop of its own points: intact, broken
+    // (with the residual friction) and open ones.
+    Seen seen;
+    compare_paths(2, seen);
+    EXPECT_GT(seen.pairs, 1000u);
+    EXPECT_GT(seen.intact, 0u);
+    EXPECT_GT(seen.broken, 0u);
+    EXPECT_GT(seen.open, 0u);
+    EXPECT_EQ(seen.interior, 0u);
 }
 
 }  // namespace
