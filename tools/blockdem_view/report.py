@@ -161,11 +161,13 @@ ENERGY_ROWS = [("kinetic", "kinetic (now)"), ("gravitational_change", "gravitati
                ("initial_stored", "stored at t = 0"), ("residual", "residual")]
 
 
-def energy_section(run):
+def energy_section(run, terms=ENERGY_ROWS):
+    """The ledger's terms at the end (terms: (summary key, label) pairs; the 3-D ledger has its own)."""
     e = run.summary.get("energy_j", {})
-    rows = "".join(f"<tr><td>{label}</td>{_num(e.get(key), 'J')}</tr>" for key, label in ENERGY_ROWS if key in e)
+    rows = "".join(f"<tr><td>{label}</td>{_num(e.get(key), 'J')}</tr>" for key, label in terms if key in e)
     error = e.get("balance_error_relative")
-    note = f"<p>Balance error: {error:.3g} of the largest term.</p>" if error is not None else ""
+    note = (f"<p id='balance-error'>Balance error at the end: {error:.3g} of the largest term.</p>"
+            if error is not None else "")
     return f"<h2 id='energy'>Energy balance at the end</h2><table>{rows}</table>{note}"
 
 

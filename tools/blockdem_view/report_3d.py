@@ -10,7 +10,7 @@ import math
 import numpy as np
 
 from .figures_3d import MAX_CURVES, make_run_figures_3d
-from .report import HERE, _json_script, _num, _script, dygraphs_assets, warnings_section
+from .report import HERE, _json_script, _script, dygraphs_assets, energy_section, warnings_section
 from .report_data import MAX_PLOT_ROWS, _round, _stride
 from .run_folder_3d import azimuth_deg
 
@@ -105,14 +105,6 @@ ENERGY_ROWS_3D = [("kinetic", "kinetic (now)"), ("gravitational_change", "gravit
                   ("table_work", "work done by the table"), ("residual", "residual")]
 
 
-def energy_section(run):
-    e = run.summary.get("energy_j", {})
-    rows = "".join(f"<tr><td>{label}</td>{_num(e.get(key), 'J')}</tr>" for key, label in ENERGY_ROWS_3D if key in e)
-    error = e.get("balance_error_relative")
-    note = f"<p id='balance-error'>Balance error at the end: {error:.3g} of the largest term.</p>" if error is not None else ""
-    return f"<h2 id='energy'>Energy balance at the end</h2><table>{rows}</table>{note}"
-
-
 def _plot(t, series, labels, ylabel, title):
     step = _stride(len(t), MAX_PLOT_ROWS)
     rows = np.column_stack([t[::step]] + [s[::step] for s in series])
@@ -200,7 +192,7 @@ def build_report_3d(run, written):
 <h2 id='plots'>Time histories</h2>
 <p class='note'>Drag to zoom, double-click to reset, use the range selector under each plot for long records.</p>
 <div id='plot-area'></div>
-{energy_section(run)}
+{energy_section(run, ENERGY_ROWS_3D)}
 <h2 id='scenario'>Scenario as run</h2>
 <pre>{html.escape(run.scenario_text)}</pre>
 {files_section(run)}
