@@ -190,6 +190,8 @@ void Monitor3dStatePart::save_state(StateGroup& g) const {
     g.write("peak_tilt_time_s", column<double>(r, [](const R& x) { return x.peak_tilt_time_s; }));
     g.write("peak_tilt_axis", flat(column<Vec3>(r, [](const R& x) { return x.peak_tilt_axis; })), 3);
     g.write("peak_slip_m", column<double>(r, [](const R& x) { return x.peak_slip_m; }));
+    g.write("beyond_limit", column<double>(r, [](const R& x) { return x.beyond_limit ? 1.0 : 0.0; }));
+    g.write("last_crossing_s", column<double>(r, [](const R& x) { return x.last_crossing_s; }));
 }
 
 void Monitor3dStatePart::restore_state(const StateGroup& g) {
@@ -200,8 +202,10 @@ void Monitor3dStatePart::restore_state(const StateGroup& g) {
     const std::vector<double> q = g.doubles("start_orientation", 4 * count, 4);
     const std::vector<double> overturning = g.doubles("overturning_angle_rad", count), tilt = g.doubles("peak_tilt_rad", count),
                               tilt_time = g.doubles("peak_tilt_time_s", count), slip = g.doubles("peak_slip_m", count);
+    const std::vector<double> beyond = g.doubles("beyond_limit", count), crossing = g.doubles("last_crossing_s", count);
     for (std::size_t i = 0; i < n; ++i)
-        r[i] = {start[i], {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]}, overturning[i], tilt[i], tilt_time[i], axis[i], slip[i]};
+        r[i] = {start[i], {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]}, overturning[i], tilt[i], tilt_time[i], axis[i], slip[i],
+                beyond[i] != 0.0, crossing[i]};
     monitor_.restore(std::move(r));
 }
 

@@ -52,6 +52,9 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
                           {"peak_tilt_axis", vec(r.peak_tilt_axis)},
                           {"overturning_angle_rad", r.overturning_angle_rad},
                           {"overturned", monitor.overturned(w, i)},
+                          {"overturning_time_s", monitor.overturned(w, i) && r.last_crossing_s >= 0.0
+                                                     ? nlohmann::json(r.last_crossing_s)
+                                                     : nlohmann::json(nullptr)},
                           {"slip_m", {slip.x, slip.y}},
                           {"peak_slip_m", r.peak_slip_m}});
     }

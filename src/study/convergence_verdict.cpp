@@ -312,8 +312,8 @@ double relative_change(double a, double b, double floor) {
 namespace {
 
 // A 3-D body (run/run_scenario_3d.cpp's summary): the tilt is the rocking whatever its axis, the
-// slip a horizontal vector, compared by its length (a direction has no floor to judge it by). No
-// overturning time and no outcome word: those quantities are left out, as for an older 2-D file.
+// slip a horizontal vector, compared by its length (a direction has no floor to judge it by), the
+// overturning time as in 2-D. No outcome word: it is left out, as for an older 2-D file.
 BodyOutcome body_outcome_3d(const nlohmann::json& j, const std::string& where) {
     BodyOutcome b;
     b.name = j.value("name", std::string());
@@ -324,6 +324,8 @@ BodyOutcome body_outcome_3d(const nlohmann::json& j, const std::string& where) {
         throw std::runtime_error(fmt::format("{}: no slip vector 'slip_m' [x, y]", where));
     b.final_slip_m = std::hypot(j["slip_m"][0].get<double>(), j["slip_m"][1].get<double>());
     b.overturned = j.value("overturned", false);
+    if (j.contains("overturning_time_s") && j["overturning_time_s"].is_number())
+        b.overturning_time_s = j["overturning_time_s"].get<double>();
     return b;
 }
 
@@ -333,7 +335,7 @@ nlohmann::json quantities_3d_json() {
     return {{"peak_rotation_rad", "summary.json peak_tilt_rad: the peak tilt about any horizontal axis"},
             {"peak_slip_m", "summary.json peak_slip_m: the peak length of the horizontal slip vector relative to the table"},
             {"final_slip_m", "the length of summary.json slip_m [x, y] at the end"},
-            {"overturning_time_s", "not in a 3-D summary: not judged"},
+            {"overturning_time_s", "summary.json overturning_time_s: the last time the tilt went past the toppling limit and stayed"},
             {"overturned", "summary.json overturned"}};
 }
 

@@ -93,6 +93,10 @@ void ResponseMonitor3d::update(const World3d& w) {
             if (length(axis) > 0.0) r.peak_tilt_axis = normalized(axis);
         }
         r.peak_slip_m = std::max(r.peak_slip_m, length(slip_m(w, r, i)));
+        // As in 2-D, a body overturned at the last time it went past its limit and stayed.
+        const bool beyond = tilt > r.overturning_angle_rad;
+        if (beyond && !r.beyond_limit) r.last_crossing_s = w.time_s;
+        r.beyond_limit = beyond;
     }
 }
 

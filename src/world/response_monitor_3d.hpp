@@ -25,6 +25,8 @@ struct BodyResponse3d {
     double peak_tilt_time_s = 0.0;       ///< [s]
     Vec3 peak_tilt_axis;                 ///< unit, horizontal: the axis it tilted about at the peak
     double peak_slip_m = 0.0;            ///< [m] largest |horizontal slip| so far
+    bool beyond_limit = false;           ///< its tilt is past overturning_angle_rad now
+    double last_crossing_s = -1.0;       ///< [s] last outward crossing of that limit, -1 if never
 };
 
 /// The turn of body i since t = 0 (world frame: q(t) q(0)*).

@@ -155,6 +155,16 @@ assert b["overturned"] is True, b
 assert abs(b["overturning_angle_rad"] - math.atan(0.2)) < 1e-12, b["overturning_angle_rad"]
 assert b["peak_tilt_rad"] > 1.4 and abs(abs(b["peak_tilt_axis"][0]) - 1.0) < 1e-6, b
 assert abs(b["slip_m"][0]) < 1e-9 and abs(b["slip_m"][1]) > 0.1, b["slip_m"]
+# The overturning time (as in 2-D: the last outward crossing of the limit) lies between the last
+# history row still inside the limit and the first one past it, and every later row stays past.
+import csv, pathlib
+rows = list(csv.DictReader(open(pathlib.Path(sys.argv[1]).parent / "history.csv")))
+t_over, limit = b["overturning_time_s"], b["overturning_angle_rad"]
+tilts = [(float(r["t_s"]), float(r[b["name"] + ".tilt_rad"])) for r in rows]
+inside = [t for t, tilt in tilts if tilt <= limit]
+assert inside and inside[-1] <= t_over, (inside[-1:], t_over)
+after = [tilt for t, tilt in tilts if t > t_over]
+assert after and min(after) > limit and t_over - inside[-1] < 0.05, (t_over, inside[-1])
 PY
 
 refused() {  # refused NAME EXPECTED... (the scenario in $tmp/bad.toml)
