@@ -22,15 +22,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "io/input_error.hpp"
 #include "io/scenario_3d.hpp"
 #include "python/bindings.hpp"
 #include "python/run_arrays.hpp"
 #include "python/scenario_source.hpp"
+#include "python/stepping.hpp"
 #include "run/scenario_run.hpp"
 #include "world/external_loads.hpp"
 
@@ -86,37 +84,19 @@ public:
 
     std::int64_t step(std::int64_t steps) {
         if (steps < 0) throw py::value_error(fmt::format("step(n) needs n >= 0, got {}", steps));
-        // One stepping thread at a time (the GIL is released while it steps).
-        if (stepping_.exchange(true)) throw std::logic_error("the simulation is being stepped in another thread");
-        struct Done {
-            std::atomic<bool>& flag;
-            ~Done() { flag = false; }
-        } done{stepping_};
+        const SteppingGuard guard(stepping_);  // (python/stepping.hpp)
         if (!failure_.empty())
             throw std::logic_error(fmt::format("the simulation stopped on an error at t = {:.6g} s and cannot go on: {}",
                                                world().time_s, failure_));
         if (run_->finished()) throw std::logic_error("the simulation is finished (finish() was called): it cannot go on");
-        // In chunks, between which Ctrl-C (KeyboardInterrupt) is seen; the run does not depend on
-        // how it is cut (world/simulation.hpp, RunLoop), so an interrupted run can go on.
-        std::int64_t taken = 0;
-        do {
-            const std::int64_t chunk = std::min(steps - taken, steps_between_signal_checks);
-            std::int64_t got = 0;
+        return step_in_chunks(steps, threads_, [&](std::int64_t chunk) {
             try {
-                py::gil_scoped_release release;
-#ifdef _OPENMP
-                omp_set_num_threads(threads_);  // (per calling thread: the one that steps)
-#endif
-                got = run_->step(chunk);
+                return run_->step(chunk);
             } catch (const std::exception& e) {
-                failure_ = e.what();
+                failure_ = e.what();  // (kept: a failed run cannot be stepped again)
                 throw;
             }
-            taken += got;
-            if (got < chunk) break;  // the end of the run
-            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        } while (taken < steps);
-        return taken;
+        });
     }
 
     // Steps to `until` (default: the end), calling callback(sim) every `every` seconds of
@@ -224,7 +204,6 @@ private:
         return request;
     }
 
-    static constexpr std::int64_t steps_between_signal_checks = 256;
     std::unique_ptr<ScenarioRun> run_;
     int threads_ = 1;
     std::string failure_;   ///< what stopped the run; empty while it may go on

@@ -18,13 +18,11 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include "python/bindings.hpp"
 #include "python/run_arrays.hpp"
 #include "python/scenario_source.hpp"
+#include "python/stepping.hpp"
 #include "run/scenario_run_3d.hpp"
 
 namespace py = pybind11;
@@ -32,9 +30,6 @@ namespace fs = std::filesystem;
 
 namespace blockdem::python {
 namespace {
-
-// Steps between two looks at Python's signals (Ctrl-C): short against a second of stepping.
-constexpr std::int64_t steps_between_signal_checks_3d = 256;
 
 class Simulation3d {
 public:
@@ -64,27 +59,8 @@ public:
 
     std::int64_t step(std::int64_t steps) {
         if (steps < 0) throw py::value_error(fmt::format("step(n) needs n >= 0, got {}", steps));
-        if (stepping_.exchange(true)) throw std::logic_error("the simulation is being stepped in another thread");
-        struct Done {
-            std::atomic<bool>& flag;
-            ~Done() { flag = false; }
-        } done{stepping_};
-        std::int64_t taken = 0;
-        do {
-            const std::int64_t chunk = std::min(steps - taken, steps_between_signal_checks_3d);
-            std::int64_t got = 0;
-            {
-                py::gil_scoped_release release;
-#ifdef _OPENMP
-                omp_set_num_threads(threads_);
-#endif
-                got = run_->step(chunk);
-            }
-            taken += got;
-            if (got < chunk) break;  // the end of the run
-            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-        } while (taken < steps);
-        return taken;
+        const SteppingGuard guard(stepping_);
+        return step_in_chunks(steps, threads_, [&](std::int64_t chunk) { return run_->step(chunk); });
     }
 
     py::object finish() { return json_to_python(run().finish()); }
