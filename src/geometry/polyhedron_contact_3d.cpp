@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/box_face_clip_3d.hpp"
+
 namespace blockdem {
 namespace {
 
@@ -187,7 +189,10 @@ bool edge_contact(const PosedPolyhedron& a, const PosedPolyhedron& b, const Edge
     return true;
 }
 
-// Face contact: the incident face clipped by the side planes of the reference face (see the header).
+
+// Face contact: the incident face clipped by the reference face's sides (in the reference face's
+// frame when that face is a box's rectangle, geometry/box_face_clip_3d.hpp), each clipped corner
+// below the reference plane a point.
 void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc, bool ref_is_a,
                   ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
     const Vec3 n = ref.face_normals[ref_face];
@@ -197,6 +202,26 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
         const double c = dot(inc.face_normals[f], n);
         if (c < most_opposed) { most_opposed = c; inc_face = f; }
     }
+    if (!box_face_clip_applies(ref, inc, inc_face) || !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon))
+        clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
+    const auto& polygon = scratch.polygon;
+    const auto& ref_corners = ref.shape->faces[ref_face];
+    const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
+    for (const ClipCorner3d& c : polygon) {
+        const double depth_m = plane_m - dot(n, c.point_m);
+        if (depth_m <= 0.0) continue;
+        ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, ref_is_a ? n : -n, depth_m, c.feature_reference,
+                            c.feature_incident};
+        if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
+        out.push_back(g);
+    }
+}
+
+}  // namespace
+
+void clip_by_face_sides(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                        std::uint32_t inc_face, ContactScratch3d& scratch) {
+    const Vec3 n = ref.face_normals[ref_face];
     auto& polygon = scratch.polygon;
     auto& clipped = scratch.clipped;
     polygon.clear();
@@ -252,18 +277,7 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
         }
         std::swap(polygon, clipped);
     }
-    const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
-    for (const ClipCorner3d& c : polygon) {
-        const double depth_m = plane_m - dot(n, c.point_m);
-        if (depth_m <= 0.0) continue;
-        ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, ref_is_a ? n : -n, depth_m, c.feature_reference,
-                            c.feature_incident};
-        if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
-        out.push_back(g);
-    }
 }
-
-}  // namespace
 
 std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedron& b, ContactScratch3d& scratch,
                                   std::vector<ContactGeometry3d>& out) {

@@ -76,6 +76,13 @@ struct ContactScratch3d {
     std::vector<double> heights_m2;  ///< [m^2] the corners' heights over a side plane, times the side's length
 };
 
+/// The general face clip: inc's face inc_face clipped by the side planes of ref's face ref_face
+/// (Sutherland-Hodgman, one side at a time in the face's corner order; a corner within 1e-9 of a
+/// side's length outside it counts as inside). scratch.polygon gets the clipped corners in order
+/// round the polygon. The narrow phase takes it unless geometry/box_face_clip_3d.hpp applies.
+void clip_by_face_sides(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                        std::uint32_t inc_face, ContactScratch3d& scratch);
+
 /// Appends the contact points of a and b to out, sorted by (feature_a, feature_b); returns how
 /// many (0 when they do not overlap).
 std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedron& b, ContactScratch3d& scratch,
