@@ -38,4 +38,10 @@ struct ContactPoint3d {
 /// history of the point of previous (sorted by key) with the same key, by one merge pass.
 void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current);
 
+/// The same for a run of count points of current (sorted by key), found in previous by galloping
+/// from hint (where the run is expected in previous: its index in current) and then merged: runs of
+/// one table can be carried in parallel, with the whole table's result.
+void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
+                   std::size_t hint);
+
 }  // namespace blockdem

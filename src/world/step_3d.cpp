@@ -112,31 +112,40 @@ void find_contacts(World3d& w) {
         polyhedron_contact_3d(posed(w, s.pairs[k].first), posed(w, s.pairs[k].second), s.clipping[thread_index()],
                               points);
     });
+    // The table's layout first: each pair's run of points (a prefix sum over the pairs, the only
+    // serial part), then the runs filled with last step's history pair by pair in parallel.
     std::swap(s.previous, w.contacts);
-    w.contacts.clear();
+    s.contact_pairs.clear();
+    std::uint32_t table_size = 0;
     for (std::size_t k = 0; k < s.pairs.size(); ++k) {
-        const auto [a, b] = s.pairs[k];
-        const auto& points = s.pair_points[k];
-        if (points.empty()) continue;
+        const auto count = static_cast<std::uint32_t>(s.pair_points[k].size());
+        if (count == 0) continue;
+        ContactPairSums3d pair;
+        pair.candidate = static_cast<std::uint32_t>(k);
+        pair.first_point = table_size;
+        pair.points = count;
+        s.contact_pairs.push_back(pair);
+        table_size += count;
+    }
+    w.contacts.resize(table_size);
+    parallel_for(static_cast<std::ptrdiff_t>(s.contact_pairs.size()), [&](std::ptrdiff_t i) {
+        const ContactPairSums3d& pair = s.contact_pairs[i];
+        const auto [a, b] = s.pairs[pair.candidate];
+        const auto& points = s.pair_points[pair.candidate];
         const double share_kg = reduced_mass(w, a, b) / static_cast<double>(points.size());
-        for (const ContactGeometry3d& g : points) {
+        ContactPoint3d* run = &w.contacts[pair.first_point];
+        for (std::uint32_t k = 0; k < pair.points; ++k) {
+            const ContactGeometry3d& g = points[k];
             ContactPoint3d p;
             p.key = {a, b, g.feature_a, g.feature_b};
             p.point_m = g.point_m;
             p.normal = g.normal;
             p.overlap_m = g.overlap_m;
             p.dashpot_mass_kg = share_kg;
-            w.contacts.push_back(p);
+            run[k] = p;
         }
-    }
-    carry_history(s.previous, w.contacts);
-}
-
-// The velocity [m/s] of body b's material point at point_m, over the interval that ends at t.
-Vec3 point_velocity(const World3d& w, std::uint32_t i, Vec3 point_m) {
-    const RigidBody3d& b = w.bodies[i];
-    if (w.kinds[i] != BodyKind3d::dynamic) return b.velocity_m_s;
-    return b.velocity_m_s + cross(w.scratch.angular_velocity_world_rad_s[i], point_m - b.position_m);
+        carry_history(s.previous, run, pair.points, pair.first_point);
+    });
 }
 
 // The energy terms of the law, totalled in deterministic chunks (world/parallel.hpp, rule 3).
@@ -156,49 +165,92 @@ struct LawTotals {
     }
 };
 
-// The law at one point: its force into its own slot, its energy terms returned.
-LawTotals contact_law(World3d& w, ContactPoint3d& c, Vec3 table_step_m) {
+// What a pair's points share, taken once a pair: the dashpots (the pair's reduced mass over its
+// points) and the two bodies' motion. The relative velocity of b's material point at p to a's,
+//   v_b + w_b x (p - x_b) - v_a - w_a x (p - x_a) = base + (w_b - w_a) x (p - x_a),
+//   base = v_b - v_a + w_b x (x_a - x_b),
+// is then one cross product a point instead of two (the same to round-off; measured from a's
+// centroid, not the origin, so that no large coordinates cancel). A body that is not dynamic
+// moves without turning.
+struct PairMotion {
+    DashpotCoefficients dashpots;
+    Vec3 base_velocity_m_s;  ///< [m/s]
+    Vec3 turn_rate_rad_s;    ///< [rad/s] w_b - w_a
+    Vec3 centroid_a_m;       ///< [m]
+};
+
+PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b, double dashpot_mass_kg) {
+    const Vec3 omega_a =
+        w.kinds[a] == BodyKind3d::dynamic ? w.scratch.angular_velocity_world_rad_s[a] : Vec3{};
+    const Vec3 omega_b =
+        w.kinds[b] == BodyKind3d::dynamic ? w.scratch.angular_velocity_world_rad_s[b] : Vec3{};
+    const RigidBody3d& ba = w.bodies[a];
+    const RigidBody3d& bb = w.bodies[b];
+    return {dashpot_coefficients(w.contact, dashpot_mass_kg),
+            bb.velocity_m_s - ba.velocity_m_s + cross(omega_b, ba.position_m - bb.position_m), omega_b - omega_a,
+            ba.position_m};
+}
+
+// The law at one point: its force into its own slot, its energy terms added to t.
+void contact_law(const World3d& w, const PairMotion& m, ContactPoint3d& c, LawTotals& t) {
     const ContactParameters& p = w.contact;
-    const std::uint32_t a = c.key.body_a;
-    const std::uint32_t b = c.key.body_b;
-    const Vec3 relative = point_velocity(w, b, c.point_m) - point_velocity(w, a, c.point_m);
+    const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, c.point_m - m.centroid_a_m);
     const double normal_speed = dot(relative, c.normal);
     const Vec3 tangential = relative - normal_speed * c.normal;
-    const DashpotCoefficients k = dashpot_coefficients(p, c.dashpot_mass_kg);
-    const ContactForce f =
-        linear_spring_dashpot(p, k, {c.overlap_m, normal_speed, 0.0}, {0.0, c.normal_dashpot_n, 0.0}, w.dt_s);
-    const ShearForce3d s = coulomb_slider_3d(p.ks_N_m, k.cs_N_s_m, p.mu * std::max(0.0, f.normal_n), tangential,
-                                             carry_to_normal(c.shear, c.normal), w.dt_s);
+    const ContactForce f = linear_spring_dashpot(p, m.dashpots, {c.overlap_m, normal_speed, 0.0},
+                                                 {0.0, c.normal_dashpot_n, 0.0}, w.dt_s);
+    const ShearForce3d s = coulomb_slider_3d(p.ks_N_m, m.dashpots.cs_N_s_m, p.mu * std::max(0.0, f.normal_n),
+                                             tangential, carry_to_normal(c.shear, c.normal), w.dt_s);
     c.normal_dashpot_n = f.normal_dashpot_n;
     c.shear = {s.spring_n, s.dashpot_n};
     c.sliding = s.sliding;
     c.force_n = f.normal_n * c.normal + s.total_n;
+    t.elastic_j += contact_elastic_energy(p, c.overlap_m, 0.0) +
+                   (p.ks_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / p.ks_N_m : 0.0);
+    t.normal_dashpot_j += f.normal_dashpot_work_j;
+    t.shear_dashpot_j += s.shear_dashpot_work_j;
+    t.friction_j += s.friction_work_j;
+}
+
+// The law at a pair's points, their forces summed into the pair's slot (the force on b and its
+// moment about a's centroid), the pair's energy terms returned.
+LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
+    ContactPoint3d* points = &w.contacts[pair.first_point];
+    const std::uint32_t a = points[0].key.body_a;
+    const std::uint32_t b = points[0].key.body_b;
+    const PairMotion m = pair_motion(w, a, b, points[0].dashpot_mass_kg);
     LawTotals t;
+    Vec3 force_n, torque_n_m;
+    for (std::uint32_t k = 0; k < pair.points; ++k) {
+        ContactPoint3d& c = points[k];
+        contact_law(w, m, c, t);
+        force_n += c.force_n;
+        torque_n_m += cross(c.point_m - m.centroid_a_m, c.force_n);
+    }
+    pair.force_n = force_n;
+    pair.torque_about_a_n_m = torque_n_m;
     // The table's work: a driven body's force on the other, times the centred displacement.
-    if (w.kinds[a] == BodyKind3d::driven) t.table_work_j += dot(c.force_n, table_step_m);
-    if (w.kinds[b] == BodyKind3d::driven) t.table_work_j -= dot(c.force_n, table_step_m);
-    t.elastic_j = contact_elastic_energy(p, c.overlap_m, 0.0) +
-                  (p.ks_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / p.ks_N_m : 0.0);
-    t.normal_dashpot_j = f.normal_dashpot_work_j;
-    t.shear_dashpot_j = s.shear_dashpot_work_j;
-    t.friction_j = s.friction_work_j;
+    if (w.kinds[a] == BodyKind3d::driven) t.table_work_j += dot(force_n, table_step_m);
+    if (w.kinds[b] == BodyKind3d::driven) t.table_work_j -= dot(force_n, table_step_m);
     return t;
 }
 
-// Step 5: the law at every point (in parallel), its forces summed onto the bodies in the
-// table's order (serially), so that each body's sum has the same terms in the same order
-// whatever the thread count.
+// Step 5: the law at every pair in contact (in parallel), each pair's sums then added onto its two
+// bodies in the table's order (serially), so that each body's sum has the same terms in the same
+// order whatever the thread count. About b's centroid the pair's moment is the one about a's
+// plus (x_a - x_b) x F.
 void apply_contact_law(World3d& w, Vec3 table_step_m) {
-    const auto points = static_cast<std::ptrdiff_t>(w.contacts.size());
-    const LawTotals t =
-        deterministic_sum(points, [&](std::ptrdiff_t i) { return contact_law(w, w.contacts[i], table_step_m); });
-    for (const ContactPoint3d& c : w.contacts) {
-        RigidBody3d& ba = w.bodies[c.key.body_a];
-        RigidBody3d& bb = w.bodies[c.key.body_b];
-        bb.force_n += c.force_n;
-        bb.torque_n_m += cross(c.point_m - bb.position_m, c.force_n);
-        ba.force_n -= c.force_n;
-        ba.torque_n_m -= cross(c.point_m - ba.position_m, c.force_n);
+    auto& pairs = w.scratch.contact_pairs;
+    const LawTotals t = deterministic_sum(static_cast<std::ptrdiff_t>(pairs.size()),
+                                          [&](std::ptrdiff_t i) { return pair_law(w, pairs[i], table_step_m); });
+    for (const ContactPairSums3d& pair : pairs) {
+        const ContactKey3d& key = w.contacts[pair.first_point].key;
+        RigidBody3d& ba = w.bodies[key.body_a];
+        RigidBody3d& bb = w.bodies[key.body_b];
+        bb.force_n += pair.force_n;
+        bb.torque_n_m += pair.torque_about_a_n_m + cross(ba.position_m - bb.position_m, pair.force_n);
+        ba.force_n -= pair.force_n;
+        ba.torque_n_m -= pair.torque_about_a_n_m;
     }
     EnergyLedger& ledger = w.ledger;
     ledger.elastic_j = t.elastic_j;

@@ -33,6 +33,16 @@ inline Vec3 table_displacement(const TableMotion3d& m, double t_s) {
     return {sample(m.x, t_s).displacement_m, sample(m.y, t_s).displacement_m, sample(m.z, t_s).displacement_m};
 }
 
+/// A pair of bodies in contact this step: its run of points in the contact table, and the sums
+/// of their forces that the bodies take (world/step_3d.cpp, the law per pair).
+struct ContactPairSums3d {
+    std::uint32_t candidate = 0;    ///< index in WorldScratch3d::pairs
+    std::uint32_t first_point = 0;  ///< index in World3d::contacts
+    std::uint32_t points = 0;
+    Vec3 force_n;                   ///< [N] the sum of the points' forces on b (minus it on a)
+    Vec3 torque_about_a_n_m;        ///< [N m] their moment about a's centroid
+};
+
 /// Arrays rebuilt every step, kept so that a step allocates nothing in steady state.
 struct WorldScratch3d {
     std::vector<std::uint32_t> vertex_start;  ///< per body, its first entry in world_vertices_m (and one past the last)
@@ -47,6 +57,7 @@ struct WorldScratch3d {
     std::vector<BodyPair> pairs;
     std::vector<std::vector<ContactGeometry3d>> pair_points;  ///< per candidate pair, its points (kept: no allocation)
     std::vector<ContactPoint3d> previous;
+    std::vector<ContactPairSums3d> contact_pairs;             ///< this step's pairs in contact, in table order
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
     GridBroadPhase3d broad_phase;
 };

@@ -1,0 +1,72 @@
+// The 3-D contact table's history carry (contact/contact_table_3d.hpp): carried run by run, each
+// run found in last step's table from a hint (as the step does it, in parallel), it gives each
+// point the history of the point with its key, and a new point none, as one merge of the whole
+// table does; whatever the hint.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "contact/contact_table_3d.hpp"
+
+namespace blockdem {
+namespace {
+
+// A table of pairs of bodies with a few points each, sorted by key, the history a tag of the key.
+std::vector<ContactPoint3d> random_table(std::mt19937& random, int bodies, int pairs) {
+    std::uniform_int_distribution<int> body(0, bodies - 1), features(0, 5);
+    std::vector<ContactPoint3d> table;
+    for (int k = 0; k < pairs; ++k) {
+        const auto a = static_cast<std::uint32_t>(body(random));
+        const auto b = static_cast<std::uint32_t>(body(random));
+        if (a == b) continue;
+        for (int f = features(random); f >= 0; --f) {
+            ContactPoint3d p;
+            p.key = {std::min(a, b), std::max(a, b), static_cast<std::uint32_t>(features(random)),
+                     static_cast<std::uint32_t>(features(random))};
+            table.push_back(p);
+        }
+    }
+    std::sort(table.begin(), table.end(), [](const auto& x, const auto& y) { return x.key < y.key; });
+    table.erase(std::unique(table.begin(), table.end(), [](const auto& x, const auto& y) { return x.key == y.key; }),
+                table.end());
+    return table;
+}
+
+double tag(const ContactKey3d& k) { return 1e6 * k.body_a + 1e3 * k.body_b + 10.0 * k.feature_a + k.feature_b + 1.0; }
+
+TEST(ContactTable3d, RunsCarriedFromAnyHintGiveTheWholeTablesMerge) {
+    std::mt19937 random(5);
+    int kept = 0, born = 0;
+    for (int trial = 0; trial < 50; ++trial) {
+        std::vector<ContactPoint3d> previous = random_table(random, 30, 200);
+        for (ContactPoint3d& p : previous) p.normal_dashpot_n = tag(p.key);
+        const std::vector<ContactPoint3d> fresh = random_table(random, 30, 200);
+        std::vector<ContactPoint3d> whole = fresh;
+        carry_history(previous, whole);
+        // Runs of one pair of bodies each, with hints near, far below, far above and past the end.
+        std::vector<ContactPoint3d> runs = fresh;
+        for (std::size_t first = 0; first < runs.size();) {
+            std::size_t end = first + 1;
+            while (end < runs.size() && runs[end].key.body_a == runs[first].key.body_a &&
+                   runs[end].key.body_b == runs[first].key.body_b)
+                ++end;
+            const std::size_t hints[] = {first, 0, previous.size(), previous.size() + 7, first / 3, first * 2};
+            carry_history(previous, &runs[first], end - first, hints[(first + trial) % 6]);
+            first = end;
+        }
+        ASSERT_EQ(whole.size(), runs.size());
+        for (std::size_t i = 0; i < whole.size(); ++i) {
+            EXPECT_EQ(whole[i].normal_dashpot_n, runs[i].normal_dashpot_n) << "point " << i;
+            const bool was_there = std::any_of(previous.begin(), previous.end(),
+                                               [&](const ContactPoint3d& p) { return p.key == whole[i].key; });
+            EXPECT_EQ(whole[i].normal_dashpot_n, was_there ? tag(whole[i].key) : 0.0);
+            (was_there ? kept : born) += 1;
+        }
+    }
+    EXPECT_GT(kept, 500);
+    EXPECT_GT(born, 500);
+}
+
+}  // namespace
+}  // namespace blockdem
