@@ -20,7 +20,9 @@
 // engines' box and hull colliders (Gregorius, "The separating axis test between convex
 // polyhedra", GDC 2013), written here for the DEM's per-point history. Two boxes (both with a
 // box frame) take the same axes in the same order, each projected from the centres and half
-// lengths instead of the vertices: the same overlaps to round-off, for a fraction of the cost.
+// lengths instead of the vertices: the same overlaps to round-off, for a fraction of the cost; a
+// box's reference face clips in its own frame (geometry/box_face_clip_3d.hpp), with the same
+// corners, order and keys as the general clip.
 #include <cstdint>
 #include <vector>
 
