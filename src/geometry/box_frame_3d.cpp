@@ -29,6 +29,9 @@ BoxFrame3d box_frame(const Polyhedron& p, const PolyhedronEdges& e) {
         box.face_direction[f] = static_cast<std::uint8_t>(along);
         box.face_sign[f] = dot(n, d[along]) > 0.0 ? 1.0 : -1.0;
     }
+    box.normals_are_directions = true;
+    for (std::size_t f = 0; f < 6; ++f)
+        if (!(p.face_normals[f] == box.face_sign[f] * d[box.face_direction[f]])) box.normals_are_directions = false;
     box.half_lengths_m = {half[0], half[1], half[2]};
     box.is_box = true;
     return box;

@@ -19,6 +19,10 @@ struct BoxFrame3d {
     Vec3 half_lengths_m;                  ///< [m] along the edge directions 0, 1, 2 (PolyhedronEdges::directions)
     std::array<std::uint8_t, 6> face_direction{};  ///< per face, the direction its normal lies along
     std::array<double, 6> face_sign{};             ///< per face, +1 when its normal is that direction, -1 against
+    /// Every face normal is exactly (to the bit) face_sign times its direction, so that a pose may
+    /// take the turned normals from the turned directions: turning -d gives exactly minus turning d
+    /// (round-to-nearest is symmetric), so the result is the same bits for 6 fewer turns a box.
+    bool normals_are_directions = false;
 };
 
 /// The box frame of p when p is a box about its centroid (the body frame's origin): 8 vertices, 6

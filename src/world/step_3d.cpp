@@ -73,10 +73,17 @@ void pose_body(World3d& w, std::size_t i) {
         box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y), std::min(box.lo.z, v.z)};
         box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y), std::max(box.hi.z, v.z)};
     }
-    for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k)
-        s.world_normals[s.face_start[i] + k] = rotate(b.orientation, b.shape.face_normals[k]);
+    Vec3* directions = &s.world_directions[s.direction_start[i]];
     for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
-        s.world_directions[s.direction_start[i] + k] = rotate(b.orientation, w.edges[i].directions[k]);
+        directions[k] = rotate(b.orientation, w.edges[i].directions[k]);
+    const BoxFrame3d& frame = w.box_frames[i];
+    Vec3* normals = &s.world_normals[s.face_start[i]];
+    if (frame.is_box && frame.normals_are_directions) {
+        for (std::size_t k = 0; k < 6; ++k) normals[k] = frame.face_sign[k] * directions[frame.face_direction[k]];
+    } else {
+        for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k)
+            normals[k] = rotate(b.orientation, b.shape.face_normals[k]);
+    }
     // The drift turned the body about this axis, so its world direction is the same at both ends.
     s.angular_velocity_world_rad_s[i] = rotate(b.orientation, b.angular_velocity_body_rad_s);
     s.boxes[i] = box;

@@ -48,6 +48,38 @@ TEST(BoxFrame3d, RecognisesBoxesAndOnlyBoxes) {
     EXPECT_FALSE(frame_of(prism_vertices({{1, 0}, {0, 1}, {-1, 0}, {0, -1.2}, {0.5, -0.9}}, 1.0)).is_box);
 }
 
+TEST(BoxFrame3d, TurnedNormalsAreTheTurnedDirectionsToTheBit) {
+    // The pose takes a box's turned face normals from its turned directions when the body-frame
+    // normals are exactly +/- the directions (world/step_3d.cpp): the same bits as turning them.
+    std::mt19937 random(3);
+    std::uniform_real_distribution<double> u(-2.0, 2.0);
+    const Polyhedron brick = convex_polyhedron(box_vertices({0.2, 0.1, 0.1}, {}));
+    const PolyhedronEdges edges = polyhedron_edges(brick);
+    const BoxFrame3d frame = box_frame(brick, edges);
+    ASSERT_TRUE(frame.is_box);
+    ASSERT_TRUE(frame.normals_are_directions);
+    for (int trial = 0; trial < 1000; ++trial) {
+        const Quaternion q = from_rotation_vector({u(random), u(random), u(random)});
+        for (std::size_t f = 0; f < 6; ++f) {
+            const Vec3 turned = rotate(q, brick.face_normals[f]);
+            const Vec3 from_direction = frame.face_sign[f] * rotate(q, edges.directions[frame.face_direction[f]]);
+            ASSERT_TRUE(turned == from_direction) << "trial " << trial << " face " << f;
+        }
+    }
+    // A box turned in its own body frame has normals that are its directions only to round-off:
+    // the flag is then false and the pose turns the normals.
+    const Polyhedron turned_box =
+        convex_polyhedron(box_vertices({0.2, 0.1, 0.05}, {}, from_rotation_vector({0.3, -0.2, 0.7})));
+    const PolyhedronEdges turned_edges = polyhedron_edges(turned_box);
+    const BoxFrame3d turned_frame = box_frame(turned_box, turned_edges);
+    ASSERT_TRUE(turned_frame.is_box);
+    bool exact = true;
+    for (std::size_t f = 0; f < 6; ++f)
+        exact = exact && turned_box.face_normals[f] ==
+                             turned_frame.face_sign[f] * turned_edges.directions[turned_frame.face_direction[f]];
+    EXPECT_EQ(turned_frame.normals_are_directions, exact);
+}
+
 TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
     std::mt19937 random(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
