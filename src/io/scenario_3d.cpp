@@ -8,6 +8,7 @@
 
 #include "geometry/polygon.hpp"
 #include "io/assembly_3d_keys.hpp"
+#include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/scenario.hpp"
@@ -393,6 +394,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
                                   "bodies' VTK frames (docs/3d.md)");
         s.output = read_output_settings(*output);
     }
+    if (auto outcomes = top.optional_table("outcomes")) s.outcomes = read_outcome_thresholds(*outcomes);
     top.allow({"title", "description"});
     top.reject_unknown_keys();
     try {

@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "io/output_keys.hpp"
+#include "world/outcome.hpp"
 #include "world/world_3d.hpp"
 
 namespace blockdem {
@@ -29,6 +30,7 @@ struct LoadedScenario3d {
     double max_overlap_ratio = 0.25;  ///< [-] stop when an overlap exceeds it of the thinner body's least width
     OutputSettings output;            ///< [output] vtk, vtk_interval
     std::vector<std::string> assembly_notes;  ///< what each generated assembly built (rock mass, packing)
+    OutcomeThresholds outcomes;       ///< [outcomes], as in 2-D (world/outcome.hpp)
 };
 
 /// Loads, overrides, validates and builds. A model error (a non-convex or degenerate polyhedron,
