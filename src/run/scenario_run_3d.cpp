@@ -143,6 +143,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
             {"dt_above_live_limit_from_s",
              watch.first_exceeded_s >= 0.0 ? nlohmann::json(watch.first_exceeded_s) : nlohmann::json(nullptr)}}}}}};
     if (const std::string warning = live_time_step_warning_3d(w); !warning.empty()) summary["warnings"].push_back(warning);
+    summary["settling"] = settling_summary(s.settled);
     summary["collapse"] = collapse_3d(w, records, outcomes, monitor.thresholds());
     summary["outcome_thresholds"] = thresholds_3d(monitor.thresholds());
     if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;
@@ -220,6 +221,7 @@ struct ScenarioRun3d::Parts {
     std::optional<Vtk3dRecorder> vtk;
     std::optional<Monitor3dStatePart> monitor_state;
     std::optional<Vtk3dStatePart> vtk_state;
+    std::optional<Settling3dStatePart> settling_state;
     SavePoints points;
     StateFileInfo state_info;
     std::vector<std::string> state_files;
@@ -243,7 +245,8 @@ struct ScenarioRun3d::Parts {
                 throw InputError({request.restart.string(), "", 0, 0},
                                  fmt::format("a 3-D state: scenario {} is not 3-D", scenario.string()));
         }
-        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides);
+        // (A restart takes the settled state from its file: settling again would be wasted time.)
+        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides, !restart);
         World3d& w = loaded.world;
         monitor.emplace(w, loaded.outcomes);  // (at t = 0: a restart puts back its start poses and peaks below)
         least_widths = least_widths_m(w);
@@ -264,6 +267,8 @@ struct ScenarioRun3d::Parts {
                                          w.time_s, w.duration_s));
         Monitor3dStatePart part(*monitor);
         restart->restore(part);
+        Settling3dStatePart settled(loaded.settled);
+        if (restart->has_group(settled.state_group())) restart->restore(settled);
         if (without_duration(restart->info().scenario_toml) != without_duration(state_info.scenario_toml) && request.on_warning)
             request.on_warning(fmt::format("scenario {} is not the one state {} was saved with: the run goes on from the "
                                            "state under the changed scenario",
@@ -326,6 +331,8 @@ struct ScenarioRun3d::Parts {
         const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
         std::vector<const StatePart*> parts = {&*monitor_state};
         if (vtk_state) parts.push_back(&*vtk_state);
+        settling_state.emplace(loaded.settled);
+        if (loaded.settled) parts.push_back(&*settling_state);
         write_state_file(file, 3, w.time_s, w.steps, state_info, [&](StateGroup& root) { write_world_3d(root, w); }, parts);
         state_files.push_back(file.string());
         if (request.on_state_saved) request.on_state_saved(file);
