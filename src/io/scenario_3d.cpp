@@ -34,6 +34,7 @@ SimulationSettings read_settings_3d(TableReader t) {
     read_run_keys(t, s);
     s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -z and must be >= 0");
+    t.allow({"initial_state"});  // a state file: read by load_scenario_3d (io, not physics)
     t.reject_unknown_keys();
     return s;
 }
@@ -399,6 +400,15 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     }
     if (auto outcomes = top.optional_table("outcomes")) s.outcomes = read_outcome_thresholds(*outcomes);
     if (auto settling = top.optional_table("settling")) s.settling = read_settling(*settling);
+    TableReader simulation = top.table("simulation");
+    if (auto state = simulation.optional_string("initial_state")) {
+        if (state->empty()) simulation.fail("initial_state", "is empty: give a state file (.h5)");
+        if (s.settling)
+            simulation.fail("initial_state", "starts from a state that is already settled: remove [settling] (or "
+                                              "initial_state)");
+        s.initial_state = std::filesystem::path(*state).is_absolute() ? std::filesystem::path(*state)
+                                                                      : file.parent_path() / *state;
+    }
     top.allow({"title", "description"});
     top.reject_unknown_keys();
     try {

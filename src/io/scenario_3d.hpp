@@ -35,6 +35,7 @@ struct LoadedScenario3d {
     OutcomeThresholds outcomes;       ///< [outcomes], as in 2-D (world/outcome.hpp)
     std::optional<SettlingSettings> settling;  ///< [settling], as in 2-D (world/settling_3d.hpp)
     std::optional<SettlingRecord> settled;     ///< what settling did, when it ran (or a restart's state kept)
+    std::filesystem::path initial_state;       ///< [simulation] initial_state (empty: none), as in 2-D
 };
 
 /// Loads, overrides, validates and builds. A model error (a non-convex or degenerate polyhedron,

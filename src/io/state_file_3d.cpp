@@ -160,10 +160,33 @@ void write_world_3d(StateGroup& root, const World3d& w) {
     write_stability(root.create_group("stability3d"), w.stability);
 }
 
+namespace {
+
+void check_dimension(const StateFile& file, const std::filesystem::path& scenario) {
+    if (file.dimension() != 3)
+        throw InputError({file.path().string(), "", 0, 0},
+                         fmt::format("a {}-D state: scenario {} is 3-D", file.dimension(), scenario.string()));
+}
+
+}  // namespace
+
+void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
+    check_dimension(file, scenario);
+    read_bodies(file, scenario, w);
+    w.contacts = read_contacts(file.root().open_group("contacts3d"), w.bodies.size());
+    // As settling ends (world/settling_3d.cpp): the velocities at the state's time become the
+    // initial ones, and the first step is the half step from an initial state.
+    for (std::size_t i = 0; i < w.bodies.size(); ++i)
+        if (w.kinds[i] == BodyKind3d::dynamic)
+            set_initial_velocity(w.bodies[i], w.bodies[i].velocity_at_t_m_s, w.bodies[i].angular_velocity_at_t_rad_s);
+    w.time_s = 0.0;
+    w.steps = 0;
+    w.ledger = EnergyLedger{};
+}
+
 void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
     const InputLocation where{file.path().string(), "", 0, 0};
-    if (file.dimension() != 3)
-        throw InputError(where, fmt::format("a {}-D state: scenario {} is 3-D", file.dimension(), scenario.string()));
+    check_dimension(file, scenario);
     const StateGroup& root = file.root();
     read_bodies(file, scenario, w);  // (first: a state of another scenario is told as such)
     const double dt_s = root.number("dt_s");

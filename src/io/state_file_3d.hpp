@@ -34,6 +34,13 @@ void write_world_3d(StateGroup& root, const World3d& w);
 /// and the scenario when the state is not a 3-D one, or its bodies, dt or time do not fit w.
 void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario);
 
+/// Starts a new run from a saved state (a settled assembly: [simulation] initial_state, as in
+/// 2-D): the bodies' poses, their velocities at the state's time and the contacts with their
+/// history come from the file; the clock restarts at t = 0 with those velocities as the initial
+/// ones, and the ledger starts again. The time step may differ from the state's. Refused as
+/// restore_world_3d refuses a state of another scenario.
+void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario);
+
 /// /monitor3d: each body's start pose, overturning angle and peaks (summary.json).
 class Monitor3dStatePart : public StatePart {
 public:

@@ -154,7 +154,8 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
 // The scenario as run, its file names made absolute so that the copy in the output folder still
 // finds the records it names.
 std::string scenario_as_run_3d(toml::table root, const fs::path& scenario) {
-    for (const char* key : {"table_motion.record.file", "table_motion.x.file", "table_motion.y.file", "table_motion.z.file"}) {
+    for (const char* key : {"table_motion.record.file", "table_motion.x.file", "table_motion.y.file", "table_motion.z.file",
+                            "simulation.initial_state"}) {
         toml::node* file = root.at_path(key).node();
         if (!file || !file->is_string()) continue;
         const fs::path path = *file->value<std::string>();
@@ -254,6 +255,7 @@ struct ScenarioRun3d::Parts {
         state_info.scenario = restart ? restart->info().scenario : scenario.string();
         state_info.scenario_toml = scenario_as_run_3d(loaded.root, scenario);
         if (restart) start_from_restart();
+        else if (!loaded.initial_state.empty()) start_from_initial_state();
         if (!out_dir.empty()) open_outputs();
     }
 
@@ -273,6 +275,16 @@ struct ScenarioRun3d::Parts {
             request.on_warning(fmt::format("scenario {} is not the one state {} was saved with: the run goes on from the "
                                            "state under the changed scenario",
                                            scenario.string(), request.restart.string()));
+    }
+
+    void start_from_initial_state() {
+        try {
+            const StateFile initial(loaded.initial_state);
+            start_from_state_3d(initial, loaded.world, scenario);
+        } catch (const InputError& e) {
+            throw InputError(e.where(), fmt::format("{} (simulation.initial_state in {})", e.problem(), scenario.string()));
+        }
+        monitor.emplace(loaded.world, loaded.outcomes);  // its t = 0 is the state's poses
     }
 
     // Nothing is written before every check has passed.
@@ -350,6 +362,7 @@ struct ScenarioRun3d::Parts {
                 run.restarted_from = request.restart;
             }
             run.state_files = state_files;
+            if (!restart && !loaded.initial_state.empty()) run.initial_state = loaded.initial_state;
             write_summary(out_dir / "run_info.json", run_info_json(status, run));
         }
         summary["run_folder"] = out_dir.string();

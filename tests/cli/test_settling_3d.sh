@@ -5,7 +5,9 @@
 # 2 m g / (4 kn), the top by m g / (4 kn) (the closed form of springs in series; asserted to 1 %
 # of the smallest closure); summary.json reports the settling; a run saved at T/2 and restarted
 # is the same bytes as the straight run (the restart does not settle again, the state keeps the
-# record); a settling that cannot finish in max_time stops the run with exit 3 naming the body;
+# record); settled once and saved at t = 0 (--save-state 0), the stack shaken from that state
+# ([simulation] initial_state, settle once, shake many times) is the same bytes as the run that
+# settled itself; a missing initial state is refused naming the file; a settling that cannot finish in max_time stops the run with exit 3 naming the body;
 # an unknown [settling] key is refused with exit 2 naming it.
 # Usage: test_settling_3d.sh BLOCKDEM
 set -u
@@ -82,6 +84,21 @@ PY
 for f in history.csv energy.csv summary.json; do
     cmp -s "$tmp/whole/$f" "$tmp/second/$f" || fail "$f differs between the straight run and the restarted one"
 done
+
+# Settle once (a run of one step, saved at t = 0), then shake from the state.
+sed 's/^duration = 0.1/duration = 0.001/' "$tmp/stack.toml" > "$tmp/settle.toml"
+"$bin" run "$tmp/settle.toml" --out "$tmp/settle" -q --save-state 0 >"$tmp/log" 2>&1 || fail "settle once: $(cat "$tmp/log")"
+sed -e 's/^\[settling\]$//' -e 's#^\[simulation\]$#[simulation]\ninitial_state = "settle/state/t_0.000000s.h5"#' "$tmp/stack.toml" > "$tmp/shake.toml"
+"$bin" run "$tmp/shake.toml" --out "$tmp/shake" -q --threads 1 >"$tmp/log" 2>&1 || fail "shake from the state: $(cat "$tmp/log")"
+for f in history.csv energy.csv; do
+    cmp -s "$tmp/whole/$f" "$tmp/shake/$f" || fail "$f from the initial state differs from the run that settled itself"
+done
+grep -q '"initial_state"' "$tmp/shake/run_info.json" || fail "run_info.json does not name the initial state"
+sed -e 's/^\[settling\]$//' -e 's#^\[simulation\]$#[simulation]\ninitial_state = "nowhere.h5"#' "$tmp/stack.toml" > "$tmp/missing.toml"
+"$bin" run "$tmp/missing.toml" --out "$tmp/missing" -q >"$tmp/log" 2>&1
+rc=$?
+[[ $rc -eq 2 ]] && grep -q "nowhere.h5" "$tmp/log" && grep -q "simulation.initial_state" "$tmp/log" \
+    || fail "a missing initial state: exit $rc, $(cat "$tmp/log")"
 
 "$bin" run "$tmp/stack.toml" --out "$tmp/short" -q --set settling.max_time=0.002 >"$tmp/log" 2>&1
 rc=$?
