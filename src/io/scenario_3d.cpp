@@ -390,9 +390,9 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     s.world.duration_s = settings.duration_s;
     s.world.output_interval_s = settings.output_interval_s;
     if (auto output = top.optional_table("output")) {
-        // (Read by the 2-D reader, so that the words are the same; two of its keys have nothing
-        // behind them in 3-D yet, and are refused rather than ignored.)
-        for (const char* key : {"report", "vtk_contacts"})
+        // (Read by the 2-D reader, so that the words are the same; `report` has nothing behind
+        // it in 3-D yet (`blockdem report DIR` makes the 3-D report), and is refused rather than ignored.)
+        for (const char* key : {"report"})
             if (output->has(key))
                 output->fail(key, "is 2-D only so far: a 3-D run writes history.csv, energy.csv, summary.json and the "
                                   "bodies' VTK frames (docs/3d.md)");

@@ -194,8 +194,8 @@ private:
 
 class Vtk3dRecorder : public Recorder3d {
 public:
-    Vtk3dRecorder(const fs::path& dir, double interval_s, const ResponseMonitor3d& monitor)
-        : writer(dir, interval_s), monitor_(monitor) {}
+    Vtk3dRecorder(const fs::path& dir, const OutputSettings& output, const ResponseMonitor3d& monitor)
+        : writer(dir, output.vtk_interval_s, output.vtk_contacts), monitor_(monitor) {}
     void record(const World3d& w) override { writer.record(w, monitor_); }
     void finish(const World3d&) override { writer.finish(); }
     Vtk3dWriter writer;
@@ -305,11 +305,13 @@ struct ScenarioRun3d::Parts {
         energy.emplace(out_dir / "energy.csv", mode);
         monitor_state.emplace(*monitor);
         if (vtk_on) {
-            vtk.emplace(out_dir / "vtk", loaded.output.vtk_interval_s, *monitor);
+            vtk.emplace(out_dir / "vtk", loaded.output, *monitor);
             vtk_state.emplace(vtk->writer, w);
             if (restart && restart->has_group(vtk_state->state_group())) restart->restore(*vtk_state);
             if (restart && !in_place)
-                copy_vtk_frames(run_folder / "vtk", out_dir / "vtk", static_cast<std::int64_t>(vtk->writer.frames_written()), {"bodies"});
+                copy_vtk_frames(run_folder / "vtk", out_dir / "vtk", static_cast<std::int64_t>(vtk->writer.frames_written()),
+                                loaded.output.vtk_contacts ? std::vector<std::string>{"bodies", "contacts"}
+                                                           : std::vector<std::string>{"bodies"});
         }
         state_info.run_folder = fs::absolute(out_dir).lexically_normal().string();
     }
