@@ -389,15 +389,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     s.world.gravity_m_s2 = settings.gravity_m_s2;
     s.world.duration_s = settings.duration_s;
     s.world.output_interval_s = settings.output_interval_s;
-    if (auto output = top.optional_table("output")) {
-        // (Read by the 2-D reader, so that the words are the same; `report` has nothing behind
-        // it in 3-D yet (`blockdem report DIR` makes the 3-D report), and is refused rather than ignored.)
-        for (const char* key : {"report"})
-            if (output->has(key))
-                output->fail(key, "is 2-D only so far: a 3-D run writes history.csv, energy.csv, summary.json and the "
-                                  "bodies' VTK frames (docs/3d.md)");
-        s.output = read_output_settings(*output);
-    }
+    if (auto output = top.optional_table("output")) s.output = read_output_settings(*output);
     if (auto outcomes = top.optional_table("outcomes")) s.outcomes = read_outcome_thresholds(*outcomes);
     if (auto settling = top.optional_table("settling")) s.settling = read_settling(*settling);
     TableReader simulation = top.table("simulation");

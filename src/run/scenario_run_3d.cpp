@@ -355,6 +355,13 @@ struct ScenarioRun3d::Parts {
     nlohmann::json finish(const std::string& status, const std::string& error) {
         nlohmann::json summary = summary_of(loaded, state_info.scenario, loaded.world, *monitor, status, error);
         if (vtk) summary["vtk_frames"] = vtk->writer.frames_written();
+        // What was written (as 2-D's summary says; `report` asks the tool for report.html).
+        summary["outputs"] = {{"history", "history.csv"},
+                              {"energy", "energy.csv"},
+                              {"vtk", vtk ? nlohmann::json("vtk/bodies.pvd") : nlohmann::json(nullptr)},
+                              {"vtk_contacts", vtk && loaded.output.vtk_contacts ? nlohmann::json("vtk/contacts.pvd")
+                                                                                : nlohmann::json(nullptr)},
+                              {"report", loaded.output.report}};
         if (!out_dir.empty()) {
             write_summary(out_dir / "summary.json", summary);
             RunInvocation run;

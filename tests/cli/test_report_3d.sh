@@ -37,6 +37,12 @@ grep -q "What this report cannot show" "$bare/report.html" || fail "the page doe
 grep -q "id='outcome-table'" "$bare/report.html" || fail "no outcome table without frames"
 [ -e "$bare/figures/snapshots.png" ] && fail "pictures without frames"
 
+# [output] report = true: `blockdem run` makes the report at the end of a 3-D run too.
+"$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/with_report" --set simulation.duration=0.05 \
+    --set output.report=true -q > "$tmp/with_report.log" 2>&1 || fail "a 3-D run with [output] report: $(tail -3 "$tmp/with_report.log")"
+grep -q "report: .*/report.html" "$tmp/with_report.log" && [ -s "$tmp/with_report/report.html" ] \
+    || fail "[output] report = true made no report.html: $(tail -3 "$tmp/with_report.log")"
+
 # A 2-D figure tool on a 3-D folder says where its figures are, with exit status 2.
 /usr/bin/python3 "$src/tools/blockdem_figures.py" run "$out" > "$tmp/figures.log" 2>&1
 status=$?
