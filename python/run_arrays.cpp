@@ -72,6 +72,31 @@ py::array rows_array(const std::vector<double>& values, std::size_t rows, std::s
     return array;
 }
 
+// The energy columns of energy.csv, one array each (both dimensions).
+py::dict energy_rows(const std::vector<EnergyLedger>& rows_of) {
+    const std::size_t rows = rows_of.size();
+    py::dict energy;
+    auto column = [&](const char* name, auto term) {
+        py::array_t<double> values(static_cast<py::ssize_t>(rows));
+        for (std::size_t r = 0; r < rows; ++r) values.mutable_at(r) = term(rows_of[r]);
+        energy[name] = values;
+    };
+    column("kinetic_J", [](const EnergyLedger& e) { return e.kinetic_j; });
+    column("gravitational_change_J", [](const EnergyLedger& e) { return e.gravitational_j - e.initial_gravitational_j; });
+    column("elastic_J", [](const EnergyLedger& e) { return e.elastic_j; });
+    column("normal_dashpot_J", [](const EnergyLedger& e) { return e.normal_dashpot_j; });
+    column("shear_dashpot_J", [](const EnergyLedger& e) { return e.shear_dashpot_j; });
+    column("friction_J", [](const EnergyLedger& e) { return e.friction_j; });
+    column("removed_J", [](const EnergyLedger& e) { return e.removed_j; });
+    column("table_work_J", [](const EnergyLedger& e) { return e.table_work_j; });
+    column("tilt_work_J", [](const EnergyLedger& e) { return e.tilt_work_j; });
+    column("bond_breakage_J", [](const EnergyLedger& e) { return e.bond_breakage_j; });
+    column("external_work_J", [](const EnergyLedger& e) { return e.external_work_j; });
+    column("residual_J", [](const EnergyLedger& e) { return e.residual_j(); });
+    column("balance_error", [](const EnergyLedger& e) { return e.balance_error(); });
+    return energy;
+}
+
 }  // namespace
 
 py::array vec2_view(const std::vector<Vec2>& values, const py::object& owner) {
@@ -182,27 +207,28 @@ py::dict history_dict(const ScenarioRun& run) {
     d["ax"] = rows_array(trace->ax_m_s2, rows, n);
     d["ay"] = rows_array(trace->ay_m_s2, rows, n);
     d["arot"] = rows_array(trace->angular_acceleration_rad_s2, rows, n);
-    // The energy columns of energy.csv, one array each.
-    py::dict energy;
-    auto column = [&](const char* name, auto term) {
-        py::array_t<double> values(static_cast<py::ssize_t>(rows));
-        for (std::size_t r = 0; r < rows; ++r) values.mutable_at(r) = term(trace->energy[r]);
-        energy[name] = values;
-    };
-    column("kinetic_J", [](const EnergyLedger& e) { return e.kinetic_j; });
-    column("gravitational_change_J", [](const EnergyLedger& e) { return e.gravitational_j - e.initial_gravitational_j; });
-    column("elastic_J", [](const EnergyLedger& e) { return e.elastic_j; });
-    column("normal_dashpot_J", [](const EnergyLedger& e) { return e.normal_dashpot_j; });
-    column("shear_dashpot_J", [](const EnergyLedger& e) { return e.shear_dashpot_j; });
-    column("friction_J", [](const EnergyLedger& e) { return e.friction_j; });
-    column("removed_J", [](const EnergyLedger& e) { return e.removed_j; });
-    column("table_work_J", [](const EnergyLedger& e) { return e.table_work_j; });
-    column("tilt_work_J", [](const EnergyLedger& e) { return e.tilt_work_j; });
-    column("bond_breakage_J", [](const EnergyLedger& e) { return e.bond_breakage_j; });
-    column("external_work_J", [](const EnergyLedger& e) { return e.external_work_j; });
-    column("residual_J", [](const EnergyLedger& e) { return e.residual_j(); });
-    column("balance_error", [](const EnergyLedger& e) { return e.balance_error(); });
-    d["energy"] = energy;
+    d["energy"] = energy_rows(trace->energy);
+    return d;
+}
+
+py::dict history_dict_3d(const ScenarioRun3d& run) {
+    const RunTrace3d* trace = run.trace();
+    if (!trace) throw py::value_error("this Simulation3d keeps no history: create it with history=True");
+    const std::size_t rows = trace->rows();
+    const std::size_t n = trace->bodies.size();
+    py::dict d;
+    py::list names;
+    for (std::uint32_t i : trace->bodies) names.append(run.world().bodies[i].name);
+    d["bodies"] = names;
+    d["body_ids"] = py::array_t<std::uint32_t>(trace->bodies.size(), trace->bodies.data());
+    d["t"] = py::array_t<double>(rows, trace->time_s.data());
+    const std::pair<const char*, const std::vector<double>*> columns[] = {
+        {"x", &trace->x_m},         {"y", &trace->y_m},         {"z", &trace->z_m},         {"qw", &trace->qw},
+        {"qx", &trace->qx},         {"qy", &trace->qy},         {"qz", &trace->qz},         {"tilt", &trace->tilt_rad},
+        {"vx", &trace->vx_m_s},     {"vy", &trace->vy_m_s},     {"vz", &trace->vz_m_s},     {"wx", &trace->wx_rad_s},
+        {"wy", &trace->wy_rad_s},   {"wz", &trace->wz_rad_s}};
+    for (const auto& [name, values] : columns) d[name] = rows_array(*values, rows, n);
+    d["energy"] = energy_rows(trace->energy);
     return d;
 }
 

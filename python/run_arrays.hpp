@@ -9,6 +9,7 @@
 
 #include "geometry/vec2.hpp"
 #include "run/scenario_run.hpp"
+#include "run/scenario_run_3d.hpp"
 #include "world/energy_ledger.hpp"
 #include "world/world.hpp"
 #include "world/world_3d.hpp"
@@ -29,6 +30,10 @@ pybind11::array contacts_array_3d(const World3d& w);
 pybind11::dict energy_dict(const EnergyLedger& e);
 /// The rows of the run's RunTrace as arrays; raises when the run keeps none.
 pybind11::dict history_dict(const ScenarioRun& run);
+/// A 3-D run's rows kept in memory (run/run_trace_3d.hpp) as numpy arrays (rows x recorded
+/// bodies): x, y, z [m], qw, qx, qy, qz, tilt [rad], vx, vy, vz [m/s], wx, wy, wz [rad/s], and
+/// energy (energy.csv's columns).
+pybind11::dict history_dict_3d(const ScenarioRun3d& run);
 /// A JSON value (the summary) as Python dicts, lists and numbers.
 pybind11::object json_to_python(const nlohmann::json& value);
 

@@ -220,6 +220,7 @@ struct ScenarioRun3d::Parts {
     std::optional<History3dRecorder> history;
     std::optional<Energy3dRecorder> energy;
     std::optional<Vtk3dRecorder> vtk;
+    std::optional<RunTrace3d> trace;
     std::optional<Monitor3dStatePart> monitor_state;
     std::optional<Vtk3dStatePart> vtk_state;
     std::optional<Settling3dStatePart> settling_state;
@@ -231,7 +232,8 @@ struct ScenarioRun3d::Parts {
 
     double wall_s() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); }
 
-    Parts(std::optional<toml::table> root, const RunRequest& r) : request(r), scenario(r.scenario), out_dir(r.out_dir) {
+    Parts(std::optional<toml::table> root, const RunRequest& r, bool keep_trace)
+        : request(r), scenario(r.scenario), out_dir(r.out_dir) {
         if (!request.restart.empty()) {
             restart.emplace(request.restart);
             run_folder = state_run_folder(request.restart, restart->info());
@@ -257,6 +259,7 @@ struct ScenarioRun3d::Parts {
         if (restart) start_from_restart();
         else if (!loaded.initial_state.empty()) start_from_initial_state();
         if (!out_dir.empty()) open_outputs();
+        if (keep_trace) trace.emplace(loaded.world, *monitor);
     }
 
     void start_from_restart() {
@@ -320,6 +323,7 @@ struct ScenarioRun3d::Parts {
         RunOptions3d options;
         if (history) options.recorders = {&*history, &*energy};
         if (vtk) options.recorders.push_back(&*vtk);
+        if (trace) options.recorders.push_back(&*trace);
         // The guards and the monitor read the state at t; the watch keeps its findings in the
         // world, so that a state file carries them (the loop hands the world as const).
         options.on_step = [this](const World3d&) {
@@ -382,8 +386,8 @@ struct ScenarioRun3d::Parts {
 };
 
 
-ScenarioRun3d::ScenarioRun3d(const RunRequest& request, std::optional<toml::table> root)
-    : parts_(std::make_unique<Parts>(std::move(root), request)) {
+ScenarioRun3d::ScenarioRun3d(const RunRequest& request, std::optional<toml::table> root, bool keep_trace)
+    : parts_(std::make_unique<Parts>(std::move(root), request, keep_trace)) {
     loop_.emplace(parts_->loaded.world, parts_->run_options());
 }
 
@@ -429,6 +433,7 @@ nlohmann::json ScenarioRun3d::summary(const std::string& status) const {
 const World3d& ScenarioRun3d::world() const { return parts_->loaded.world; }
 const LoadedScenario3d& ScenarioRun3d::scenario() const { return parts_->loaded; }
 const ResponseMonitor3d& ScenarioRun3d::monitor() const { return *parts_->monitor; }
+const RunTrace3d* ScenarioRun3d::trace() const { return parts_->trace ? &*parts_->trace : nullptr; }
 bool ScenarioRun3d::ended() const { return loop_->ended(); }
 bool ScenarioRun3d::failed() const { return loop_->failed(); }
 
