@@ -17,13 +17,7 @@ double size_m(const RigidBody3d& b) {
     return l;
 }
 
-// The least settled dynamic body now: the largest kinetic energy / (m g L).
-struct LeastSettled {
-    double ratio = 0.0;
-    std::size_t body = 0;
-    double kinetic_j = 0.0;
-};
-
+// The least settled dynamic body now (world/settling.hpp).
 LeastSettled least_settled(const World3d& w) {
     LeastSettled worst;
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
@@ -81,29 +75,16 @@ SettlingReport settle_3d(World3d& w, const SettlingSettings& settings) {
         start_m.push_back(b.position_m);
         start_q.push_back(b.orientation);
     }
-    // Clamped as a double before the cast (window = 1e300 s).
-    const auto steps_per_window = static_cast<std::int64_t>(std::clamp(std::round(settings.window_s / w.dt_s), 1.0, 1e18));
+    SettlingWindow window(settings, w.dt_s);
     SettlingReport report;
-    LeastSettled window_worst;
     std::size_t reported = w.bodies.size();
     for (std::int64_t n = 1;; ++n) {
         step_begin(w);
-        const LeastSettled now = least_settled(w);
-        if (now.ratio >= window_worst.ratio) window_worst = now;
+        window.note(least_settled(w));
         step_end(w);
-        if (n % steps_per_window == 0) {
-            report.kinetic_ratio = window_worst.ratio;
-            report.body_kinetic_j = window_worst.kinetic_j;
-            reported = window_worst.body;
-            report.settled = window_worst.ratio < settings.kinetic_ratio;
-            window_worst = LeastSettled{};
-        }
+        window.close_if_due(n, report, reported);
         if (report.settled || w.time_s >= settings.max_time_s) {
-            if (!report.settled && n < steps_per_window) {  // cut short before a whole window: the worst so far
-                report.kinetic_ratio = window_worst.ratio;
-                report.body_kinetic_j = window_worst.kinetic_j;
-                reported = window_worst.body;
-            }
+            window.report_partial(n, report, reported);
             report.steps = n;
             report.time_s = w.time_s;
             break;
