@@ -17,6 +17,16 @@ out=$tmp/topple
 "$bin" report "$out" > "$tmp/report.log" 2>&1 || fail "report: $(tail -3 "$tmp/report.log")"
 /usr/bin/python3 "$src/tests/cli/check_report_3d.py" "$out" "$src/tools" || fail "the report against the run's files"
 grep -q "What this report cannot show" "$out/report.html" && fail "a complete 3-D run has nothing to declare"
+# The animation (figures/animation.mp4 through ffmpeg; GIF without it): one frame per 1/25 s of
+# the run, on the page.
+movie=$(ls "$out/figures/"animation.* 2>/dev/null | head -1)
+[ -s "$movie" ] || fail "no animation file in $out/figures"
+grep -q "id='figure-animation'" "$out/report.html" || fail "the page does not show the animation"
+if [[ "$movie" == *.mp4 ]]; then
+    frames=$(ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$movie")
+    expected=$(/usr/bin/python3 -c "import json; print(int(json.load(open('$out/summary.json'))['time_s'] * 25 + 1e-9) + 1)")
+    [ "$frames" = "$expected" ] || fail "the animation has $frames frames, not $expected (25 per simulated second)"
+fi
 # The page's script draws every zoomable plot (headless Chromium, where Debian's is installed).
 if [ -x /usr/bin/chromium ] && [ -f /usr/share/javascript/dygraphs/dygraph.min.js ]; then
   plots=$(/usr/bin/python3 -c 'import json, re, sys

@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 
+from .animation_3d import write_animation_3d
 from .figures_3d import MAX_CURVES, make_run_figures_3d
 from .report import HERE, _json_script, _script, dygraphs_assets, energy_section, warnings_section
 from .report_data import MAX_PLOT_ROWS, _round, _stride
@@ -159,6 +160,13 @@ FIGURE_CAPTIONS = {
 
 def figures_section(run, written):
     parts = ["<h2 id='figures'>Figures</h2>"]
+    movie = written.get("animation")
+    if movie:
+        rel = html.escape(str(movie.relative_to(run.path)))
+        tag = (f"<video id='animation' controls loop src='{rel}' width='640'></video>" if movie.suffix == ".mp4"
+               else f"<img id='animation' alt='animation' src='{rel}' width='640'>")
+        parts.append(f"<figure id='figure-animation'>{tag}<figcaption>The run in the axonometric view, the bodies "
+                     f"posed from history.csv (<a href='{rel}'>{movie.suffix[1:].upper()}</a>).</figcaption></figure>")
     for stem in ("snapshots", "response", "table_motion", "energy"):
         paths = written.get(stem) or []
         png = next((p for p in paths if p.suffix == ".png"), None)
@@ -212,9 +220,11 @@ def build_report_3d(run, written):
 """
 
 
-def write_report_3d(run, formats=("png", "svg")):
-    """Makes the figures, then writes run.path/report.html; returns its path."""
+def write_report_3d(run, formats=("png", "svg"), animation=True):
+    """Makes the figures (and the animation file), then writes run.path/report.html; returns its path."""
     written = make_run_figures_3d(run, formats)
+    if animation:
+        written["animation"] = write_animation_3d(run, run.path / "figures")
     path = run.path / "report.html"
     path.write_text(build_report_3d(run, written), encoding="utf-8")
     return path
