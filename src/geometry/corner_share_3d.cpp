@@ -1,5 +1,6 @@
 #include "geometry/corner_share_3d.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -15,13 +16,15 @@ double turn_rad(Vec3 a, Vec3 b) { return std::atan2(length(cross(a, b)), dot(a, 
 void corner_shares_3d(const Vec3* corners_m, std::size_t count, double* shares) {
     if (count == 0) return;
     const auto side = [&](std::size_t i) { return corners_m[i + 1 == count ? 0 : i + 1] - corners_m[i]; };
-    double perimeter_m = 0.0;
-    for (std::size_t i = 0; i < count; ++i) perimeter_m += length(side(i));
-    // A side this short has a direction made of round-off: its ends count as one corner.
-    const double short_m = 1e-9 * perimeter_m;
+    // A side shorter than 1e-9 of the longest has a direction made of round-off: its ends count
+    // as one corner. (Squared lengths: no root taken for the test.)
+    double longest_m2 = 0.0;
+    for (std::size_t i = 0; i < count; ++i) longest_m2 = std::max(longest_m2, dot(side(i), side(i)));
+    const double short_m2 = 1e-18 * longest_m2;
+    const auto is_long = [&](std::size_t i) { return dot(side(i), side(i)) > short_m2; };
     std::size_t first_long = count;
     for (std::size_t i = 0; i < count && first_long == count; ++i)
-        if (length(side(i)) > short_m) first_long = i;
+        if (is_long(i)) first_long = i;
     if (first_long == count) {  // all corners at one place: the whole turn, shared
         for (std::size_t i = 0; i < count; ++i) shares[i] = 4.0 / static_cast<double>(count);
         return;
@@ -35,7 +38,7 @@ void corner_shares_3d(const Vec3* corners_m, std::size_t count, double* shares) 
     while (done < count) {
         std::size_t members = 1;
         std::size_t last = corner;
-        while (members < count && !(length(side(last)) > short_m)) {
+        while (members < count && !is_long(last)) {
             last = last + 1 == count ? 0 : last + 1;
             ++members;
         }

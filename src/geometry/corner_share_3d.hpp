@@ -16,8 +16,8 @@
 // exterior angles sum to 2 pi, so the weights of a polygon always sum to 4: a rectangle's corners
 // weigh 1 each (box on box as before: "kn is per corner of a square patch"), a corner on a
 // near-straight side (the flicker's cut) weighs ~0, and a corner cut in two by a side plane
-// splits its weight between the two cuts continuously. Corners that coincide (an edge between
-// them shorter than 1e-9 of the perimeter, whose direction is round-off) share their group's
+// splits its weight between the two cuts continuously. Corners that coincide (a side between
+// them shorter than 1e-9 of the longest, whose direction is round-off) share their group's
 // turn equally. A polygon of fewer than 3 distinct corners follows the same rule: a segment's
 // two ends turn by pi (weight 2 each), a point is the whole turn (4, shared by the corners there).
 // The shares depend only on where the corners are, not on which features made them, so a

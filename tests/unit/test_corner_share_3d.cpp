@@ -76,7 +76,7 @@ TEST(CornerShare3d, CoincidentCornersShareTheirTurnAndDegenerateShapesKeepTheSum
     EXPECT_NEAR(s[1], 0.5, 1e-12);
     EXPECT_NEAR(s[2], 0.5, 1e-12);
     EXPECT_NEAR(sum(s), 4.0, 1e-12);
-    // Nearly coincident (1e-12 m apart, below 1e-9 of the perimeter): the same.
+    // Nearly coincident (1e-12 m apart, below 1e-9 of the longest side): the same.
     const std::vector<Vec3> near{{0, 0, 0}, {1, 0, 0}, {1, 1e-12, 0}, {1, 1, 0}, {0, 1, 0}};
     EXPECT_NEAR(shares_of(near)[1], 0.5, 1e-12);
     // A segment's two ends turn by pi; one point is the whole turn.
