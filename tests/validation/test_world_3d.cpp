@@ -307,6 +307,14 @@ TEST(World3d, StableTimeStepBoundsTheCubesRowsAndTheWallsInstability) {
     ASSERT_EQ(w.contacts.size(), 4u);
     const double lambda = 4.0 * 1e6 * (std::sqrt(6.0) / 2.0) * (1.0 + std::sqrt(6.0)) / 100.0;
     EXPECT_NEAR(live_time_step_3d(w).dt_s, 2.0 / std::sqrt(lambda), 1e-12);
+    // Each point's springs are kn times its stiffness share (geometry/corner_share_3d.hpp): with
+    // every share halved the rows halve and the kn-only bound grows by sqrt 2; a share of 2 (the
+    // sharpest corner) shortens it by sqrt 2.
+    for (double share : {0.5, 2.0}) {
+        World3d shared = w;
+        for (ContactPoint3d& c : shared.contacts) c.stiffness_share = share;
+        EXPECT_NEAR(live_time_step_3d(shared).dt_s, 2.0 / std::sqrt(share * lambda), 1e-12);
+    }
 
     // The settled 288-box wall: measured unstable at 5e-5 s, stable at 2.5e-5 s (docs/3d.md). The
     // bound must lie below the unstable step, and a run at 0.9 of it closes its ledger.
