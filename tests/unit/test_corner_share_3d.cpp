@@ -8,6 +8,7 @@
 #include <numbers>
 #include <vector>
 
+#include "contact/contact_table_3d.hpp"
 #include "geometry/corner_share_3d.hpp"
 #include "geometry/polyhedron_contact_3d.hpp"
 
@@ -129,6 +130,29 @@ TEST(CornerShare3d, FlushBricksCutAlongTheirSidesGiveNearlyWeightlessCuts) {
     }
     EXPECT_EQ(cuts, 2);
     EXPECT_NEAR(total, 4.0, 1e-12);
+}
+
+TEST(CornerShare3d, AKeptPointsShearSpringKeepsItsDisplacementWhenItsShareChanges) {
+    // The spring carried is the displacement times w ks: a share going from 1 to 0.25 carries a
+    // quarter of the force; from 0 (no stiffness, nothing stored) it starts at zero; the dashpot's
+    // last force (the trapezoid's end, not a state of the spring) is carried as it was.
+    ContactPoint3d before;
+    before.key = {0, 1, 5, 7};
+    before.stiffness_share = 1.0;
+    before.shear = {{2.0, -1.0, 0.0}, {0.5, 0.0, 0.0}};
+    std::vector<ContactPoint3d> previous{before};
+    std::vector<ContactPoint3d> current(1);
+    current[0].key = before.key;
+    current[0].stiffness_share = 0.25;
+    carry_history(previous, current);
+    EXPECT_EQ(current[0].shear.spring_n, (Vec3{0.5, -0.25, 0.0}));
+    EXPECT_EQ(current[0].shear.dashpot_n, (Vec3{0.5, 0.0, 0.0}));
+    previous[0].stiffness_share = 0.0;
+    current[0] = {};
+    current[0].key = before.key;
+    current[0].stiffness_share = 1.0;
+    carry_history(previous, current);
+    EXPECT_EQ(current[0].shear.spring_n, (Vec3{}));
 }
 
 }  // namespace
