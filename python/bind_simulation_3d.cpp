@@ -140,6 +140,9 @@ void bind_simulation_3d(py::module_& m) {
             "masses",
             [](Simulation3d& s) { return s.rows(1, [&](std::size_t i) { return std::vector<double>{s.world().bodies[i].mass_kg}; }); },
             "[kg] N x 1")
+        .def("contacts", [](Simulation3d& s) { return contacts_array_3d(s.world()); },
+             "The contact points at t as a structured array (a copy): body_a, body_b, x, y, z [m], nx, ny, nz "
+             "(from a to b), fx, fy, fz [N] (on b), normal_force, shear_force [N], overlap [m], sliding.")
         .def("energy", [](Simulation3d& s) { return energy_dict(s.run().world().ledger); },
              "The energy balance at t [J] and its relative error.")
         .def("summary", [](Simulation3d& s) { return json_to_python(s.run().summary("running")); },

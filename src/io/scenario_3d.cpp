@@ -8,12 +8,16 @@
 
 #include "geometry/polygon.hpp"
 #include "io/assembly_3d_keys.hpp"
+#include "io/assembly_keys.hpp"
+#include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/scenario.hpp"
 #include "io/scenario_keys.hpp"
 #include "io/vec3_keys.hpp"
 #include "scenes/brick_wall_3d.hpp"
+#include "world/settling_3d.hpp"
+#include "world/simulation_error.hpp"
 #include "world/world.hpp"
 #include "world/world_3d_start.hpp"
 
@@ -363,12 +367,12 @@ int scenario_dimension(const toml::table& root, const std::string& file) {
     return static_cast<int>(*value);
 }
 
-LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    return load_scenario_3d(load_toml_file(file), file, overrides);
+LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle) {
+    return load_scenario_3d(load_toml_file(file), file, overrides, settle);
 }
 
 LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path& file,
-                                  const std::vector<std::string>& overrides) {
+                                  const std::vector<std::string>& overrides, bool settle) {
     LoadedScenario3d s;
     s.file = file;
     s.root = std::move(root);
@@ -393,6 +397,8 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
                                   "bodies' VTK frames (docs/3d.md)");
         s.output = read_output_settings(*output);
     }
+    if (auto outcomes = top.optional_table("outcomes")) s.outcomes = read_outcome_thresholds(*outcomes);
+    if (auto settling = top.optional_table("settling")) s.settling = read_settling(*settling);
     top.allow({"title", "description"});
     top.reject_unknown_keys();
     try {
@@ -401,6 +407,12 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     } catch (const ModelError& e) {
         throw model_error(file, settings.dt_s && std::string(e.what()).starts_with("time step") ? "simulation.dt" : "",
                           e.what());
+    }
+    if (settle && s.settling) {
+        const SettlingReport report = settle_3d(s.world, *s.settling);
+        // A run that started and could not settle failed (exit 3), it is not bad input.
+        if (!report.settled) throw SimulationError(settling_failure(report, *s.settling));
+        s.settled = settling_record(report, *s.settling);
     }
     return s;
 }

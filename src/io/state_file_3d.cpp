@@ -183,6 +183,43 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
     w.steps = file.step_index();
 }
 
+namespace {
+
+// The monitor's numbers per body, one dataset each (the names are BodyResponse3d's fields).
+struct Number3dField {
+    const char* name;
+    double BodyResponse3d::*field;
+};
+constexpr Number3dField number_3d_fields[] = {
+    {"overturning_angle_rad", &BodyResponse3d::overturning_angle_rad},
+    {"peak_tilt_rad", &BodyResponse3d::peak_tilt_rad},
+    {"peak_tilt_time_s", &BodyResponse3d::peak_tilt_time_s},
+    {"peak_slip_m", &BodyResponse3d::peak_slip_m},
+    {"last_crossing_s", &BodyResponse3d::last_crossing_s},
+    {"height_m", &BodyResponse3d::height_m},
+    {"base_width_m", &BodyResponse3d::base_width_m},
+    {"bounding_radius_m", &BodyResponse3d::bounding_radius_m},
+    {"peak_base_slip_m", &BodyResponse3d::peak_base_slip_m},
+    {"peak_elastic_shear_m", &BodyResponse3d::peak_elastic_shear_m},
+    {"rocking_onset_s", &BodyResponse3d::rocking_onset_s},
+    {"slip_onset_s", &BodyResponse3d::slip_onset_s},
+    {"support_lost_time_s", &BodyResponse3d::support_lost_time_s},
+    {"drop_time_s", &BodyResponse3d::drop_time_s},
+};
+
+struct Flag3dField {
+    const char* name;
+    bool BodyResponse3d::*field;
+};
+constexpr Flag3dField flag_3d_fields[] = {
+    {"beyond_limit", &BodyResponse3d::beyond_limit},
+    {"touches_a_supporter", &BodyResponse3d::touches_a_supporter},
+    {"at_rest", &BodyResponse3d::at_rest},
+    {"slid_on_support", &BodyResponse3d::slid_on_support},
+};
+
+}  // namespace
+
 void Monitor3dStatePart::save_state(StateGroup& g) const {
     const std::vector<BodyResponse3d>& r = monitor_.bodies();
     using R = BodyResponse3d;
@@ -190,13 +227,18 @@ void Monitor3dStatePart::save_state(StateGroup& g) const {
     std::vector<double> q;
     for (const R& x : r) q.insert(q.end(), {x.start_orientation.w, x.start_orientation.x, x.start_orientation.y, x.start_orientation.z});
     g.write("start_orientation", q, 4);
-    g.write("overturning_angle_rad", column<double>(r, [](const R& x) { return x.overturning_angle_rad; }));
-    g.write("peak_tilt_rad", column<double>(r, [](const R& x) { return x.peak_tilt_rad; }));
-    g.write("peak_tilt_time_s", column<double>(r, [](const R& x) { return x.peak_tilt_time_s; }));
     g.write("peak_tilt_axis", flat(column<Vec3>(r, [](const R& x) { return x.peak_tilt_axis; })), 3);
-    g.write("peak_slip_m", column<double>(r, [](const R& x) { return x.peak_slip_m; }));
-    g.write("beyond_limit", column<double>(r, [](const R& x) { return x.beyond_limit ? 1.0 : 0.0; }));
-    g.write("last_crossing_s", column<double>(r, [](const R& x) { return x.last_crossing_s; }));
+    for (const Number3dField& f : number_3d_fields) g.write(f.name, column<double>(r, [&](const R& x) { return x.*f.field; }));
+    for (const Flag3dField& f : flag_3d_fields)
+        g.write(f.name, column<std::uint8_t>(r, [&](const R& x) { return std::uint8_t(x.*f.field ? 1 : 0); }));
+    // (The resting face is found again from the scenario at t = 0.) Each body's supporters: supporters[supporters_start[i] .. supporters_start[i + 1]).
+    std::vector<std::uint32_t> start{0}, supporters;
+    for (const R& x : r) {
+        supporters.insert(supporters.end(), x.supporters.begin(), x.supporters.end());
+        start.push_back(static_cast<std::uint32_t>(supporters.size()));
+    }
+    g.write("supporters_start", start);
+    g.write("supporters", supporters);
 }
 
 void Monitor3dStatePart::restore_state(const StateGroup& g) {
@@ -205,12 +247,30 @@ void Monitor3dStatePart::restore_state(const StateGroup& g) {
     const auto count = static_cast<std::int64_t>(n);
     const std::vector<Vec3> start = vec3s(g, "start_position_m", n), axis = vec3s(g, "peak_tilt_axis", n);
     const std::vector<double> q = g.doubles("start_orientation", 4 * count, 4);
-    const std::vector<double> overturning = g.doubles("overturning_angle_rad", count), tilt = g.doubles("peak_tilt_rad", count),
-                              tilt_time = g.doubles("peak_tilt_time_s", count), slip = g.doubles("peak_slip_m", count);
-    const std::vector<double> beyond = g.doubles("beyond_limit", count), crossing = g.doubles("last_crossing_s", count);
-    for (std::size_t i = 0; i < n; ++i)
-        r[i] = {start[i], {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]}, overturning[i], tilt[i], tilt_time[i], axis[i], slip[i],
-                beyond[i] != 0.0, crossing[i]};
+    for (std::size_t i = 0; i < n; ++i) {
+        r[i].start_position_m = start[i];
+        r[i].start_orientation = {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]};
+        r[i].peak_tilt_axis = axis[i];
+    }
+    for (const Number3dField& f : number_3d_fields) {
+        const std::vector<double> values = g.doubles(f.name, count);
+        for (std::size_t i = 0; i < n; ++i) r[i].*f.field = values[i];
+    }
+    for (const Flag3dField& f : flag_3d_fields) {
+        const std::vector<std::uint8_t> values = g.flags(f.name, count);
+        for (std::size_t i = 0; i < n; ++i) r[i].*f.field = values[i] != 0;
+    }
+    const std::vector<std::uint32_t> first = g.indices("supporters_start", count + 1);
+    const std::vector<std::uint32_t> supporters = g.indices("supporters", first.back());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (first[i] > first[i + 1])
+            throw InputError({g.file(), "", 0, 0}, "not a readable blockdem state file: /monitor3d/supporters_start is not "
+                                                   "increasing");
+        r[i].supporters.assign(supporters.begin() + first[i], supporters.begin() + first[i + 1]);
+        for (std::uint32_t s : r[i].supporters)
+            if (s >= n)
+                throw InputError({g.file(), "", 0, 0}, "not a readable blockdem state file: /monitor3d/supporters names no body");
+    }
     monitor_.restore(std::move(r));
 }
 

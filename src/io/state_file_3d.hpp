@@ -17,6 +17,7 @@
 // The run's parts beside the world (the response monitor, the VTK frame list) are StateParts
 // below, as in 2-D (io/run_state_parts.hpp).
 #include <filesystem>
+#include <optional>
 
 #include "io/state_file.hpp"
 #include "io/vtk_3d_writer.hpp"
@@ -43,6 +44,19 @@ public:
 
 private:
     ResponseMonitor3d& monitor_;
+};
+
+/// /settling: what settling did before t = 0 (io/state_file.hpp's record), so that a restarted
+/// run's summary reports it.
+class Settling3dStatePart : public StatePart {
+public:
+    explicit Settling3dStatePart(std::optional<SettlingRecord>& record) : record_(record) {}
+    std::string state_group() const override { return "settling"; }
+    void save_state(StateGroup& group) const override { write_settling(group, *record_); }
+    void restore_state(const StateGroup& group) override { record_ = read_settling(group); }
+
+private:
+    std::optional<SettlingRecord>& record_;
 };
 
 /// /vtk3d: the frames written so far. On restore the frames at times before the state's are kept

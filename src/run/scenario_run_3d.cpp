@@ -35,8 +35,56 @@ const char* kind_name(BodyKind3d k) {
 
 nlohmann::json vec(Vec3 v) { return {v.x, v.y, v.z}; }
 
+nlohmann::json time_or_null(double t_s) { return t_s >= 0.0 ? nlohmann::json(t_s) : nlohmann::json(nullptr); }
+
+// The outcome (world/outcome.hpp) of a dynamic body and what decided it, as in 2-D.
+void add_outcome_3d(nlohmann::json& j, const World3d& w, std::size_t i, const BodyResponse3d& r, const BodyRecord& record,
+                    const ClassifiedOutcome& o) {
+    j["outcome"] = to_string(o.outcome);
+    j["outcome_time_s"] = time_or_null(o.time_s);
+    j["failed"] = is_failure(o.outcome);
+    j["peak_base_slip_m"] = r.peak_base_slip_m;
+    nlohmann::json supporters = nlohmann::json::array();
+    for (std::uint32_t s : record.supporters) supporters.push_back(w.bodies[s].name);
+    j["supporters"] = supporters;
+    j["touches_a_supporter"] = record.touches_a_supporter;
+    j["support_lost_time_s"] = time_or_null(record.support_lost_time_s);
+    j["final_drop_m"] = record.drop_m;
+    if (o.outcome == Outcome::fell) j["fell"] = {{"came_to_rest", o.at_rest}, {"position_m", vec(position_now_m(w, i))}};
+}
+
+// Every dynamic body's collapse (3-D bodies carry no assembly name yet: one group, "all").
+nlohmann::json collapse_3d(const World3d& w, const std::vector<BodyRecord>& records, const std::vector<ClassifiedOutcome>& outcomes,
+                           const OutcomeThresholds& t) {
+    std::vector<std::uint32_t> all;
+    for (std::uint32_t i = 0; i < w.bodies.size(); ++i)
+        if (w.kinds[i] == BodyKind3d::dynamic) all.push_back(i);
+    const CollapseSummary c = summarize_collapse("all", all, records, outcomes, t);
+    return nlohmann::json::array(
+        {{{"group", c.group},
+          {"blocks", c.blocks},
+          {"fell", c.fell},
+          {"overturned", c.overturned},
+          {"displaced_mass_fraction", c.displaced_mass_fraction},
+          {"first_to_go", c.first_to_go >= 0 ? nlohmann::json(w.bodies[static_cast<std::size_t>(c.first_to_go)].name) : nlohmann::json(nullptr)},
+          {"first_to_go_time_s", time_or_null(c.first_to_go_time_s)}}});
+}
+
+nlohmann::json thresholds_3d(const OutcomeThresholds& t) {
+    return {{"rocking_ratio", t.rocking_ratio},     {"slip_ratio", t.slip_ratio},
+            {"fall_drop_ratio", t.fall_drop_ratio}, {"displaced_ratio", t.displaced_ratio},
+            {"rest_speed_m_s", t.rest_speed_m_s},   {"support_window_s", t.support_window_s},
+            {"elastic_slip_factor", elastic_slip_factor},
+            {"slid_rule", "slid: a contact point on a supporter slid, and the resting face's lowest corner moved over the "
+                          "supporter by more than max(slip_ratio x the face's least width, elastic_slip_factor x the largest "
+                          "elastic shear stretch there); rocked: peak tilt relative to the first supporter >= rocking_ratio x "
+                          "overturning_angle_rad"}};
+}
+
 nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario, const World3d& w,
                           const ResponseMonitor3d& monitor, const std::string& status, const std::string& error) {
+    const std::vector<BodyRecord> records = monitor.records(w);
+    const std::vector<ClassifiedOutcome> outcomes = classify_outcomes(records, monitor.thresholds());
     nlohmann::json bodies = nlohmann::json::array();
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
         const RigidBody3d& b = w.bodies[i];
@@ -57,6 +105,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
                                                      : nlohmann::json(nullptr)},
                           {"slip_m", {slip.x, slip.y}},
                           {"peak_slip_m", r.peak_slip_m}});
+        if (w.kinds[i] == BodyKind3d::dynamic) add_outcome_3d(bodies.back(), w, i, r, records[i], outcomes[i]);
     }
     const EnergyLedger& e = w.ledger;
     const StabilityWatch3d& watch = w.stability;
@@ -94,6 +143,9 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
             {"dt_above_live_limit_from_s",
              watch.first_exceeded_s >= 0.0 ? nlohmann::json(watch.first_exceeded_s) : nlohmann::json(nullptr)}}}}}};
     if (const std::string warning = live_time_step_warning_3d(w); !warning.empty()) summary["warnings"].push_back(warning);
+    summary["settling"] = settling_summary(s.settled);
+    summary["collapse"] = collapse_3d(w, records, outcomes, monitor.thresholds());
+    summary["outcome_thresholds"] = thresholds_3d(monitor.thresholds());
     if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;
     if (!error.empty()) summary["error"] = error;
     return summary;
@@ -169,6 +221,7 @@ struct ScenarioRun3d::Parts {
     std::optional<Vtk3dRecorder> vtk;
     std::optional<Monitor3dStatePart> monitor_state;
     std::optional<Vtk3dStatePart> vtk_state;
+    std::optional<Settling3dStatePart> settling_state;
     SavePoints points;
     StateFileInfo state_info;
     std::vector<std::string> state_files;
@@ -192,9 +245,10 @@ struct ScenarioRun3d::Parts {
                 throw InputError({request.restart.string(), "", 0, 0},
                                  fmt::format("a 3-D state: scenario {} is not 3-D", scenario.string()));
         }
-        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides);
+        // (A restart takes the settled state from its file: settling again would be wasted time.)
+        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides, !restart);
         World3d& w = loaded.world;
-        monitor.emplace(w);  // (at t = 0: a restart puts back its start poses and peaks below)
+        monitor.emplace(w, loaded.outcomes);  // (at t = 0: a restart puts back its start poses and peaks below)
         least_widths = least_widths_m(w);
         points = save_points(w, request);
         state_info.scenario = restart ? restart->info().scenario : scenario.string();
@@ -213,6 +267,8 @@ struct ScenarioRun3d::Parts {
                                          w.time_s, w.duration_s));
         Monitor3dStatePart part(*monitor);
         restart->restore(part);
+        Settling3dStatePart settled(loaded.settled);
+        if (restart->has_group(settled.state_group())) restart->restore(settled);
         if (without_duration(restart->info().scenario_toml) != without_duration(state_info.scenario_toml) && request.on_warning)
             request.on_warning(fmt::format("scenario {} is not the one state {} was saved with: the run goes on from the "
                                            "state under the changed scenario",
@@ -275,6 +331,8 @@ struct ScenarioRun3d::Parts {
         const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
         std::vector<const StatePart*> parts = {&*monitor_state};
         if (vtk_state) parts.push_back(&*vtk_state);
+        settling_state.emplace(loaded.settled);
+        if (loaded.settled) parts.push_back(&*settling_state);
         write_state_file(file, 3, w.time_s, w.steps, state_info, [&](StateGroup& root) { write_world_3d(root, w); }, parts);
         state_files.push_back(file.string());
         if (request.on_state_saved) request.on_state_saved(file);
