@@ -55,6 +55,7 @@ void write_contacts(StateGroup g, const std::vector<ContactPoint3d>& c) {
     g.write("point_m", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.point_m; })), 3);
     g.write("normal", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.normal; })), 3);
     g.write("overlap_m", column<double>(c, [](const ContactPoint3d& p) { return p.overlap_m; }));
+    g.write("stiffness_share", column<double>(c, [](const ContactPoint3d& p) { return p.stiffness_share; }));
     g.write("dashpot_mass_kg", column<double>(c, [](const ContactPoint3d& p) { return p.dashpot_mass_kg; }));
     g.write("normal_dashpot_n", column<double>(c, [](const ContactPoint3d& p) { return p.normal_dashpot_n; }));
     g.write("shear_spring_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.spring_n; })), 3);
@@ -120,6 +121,9 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
     const std::vector<double> overlap = g.doubles("overlap_m", count), mass = g.doubles("dashpot_mass_kg", count),
                               normal_dashpot = g.doubles("normal_dashpot_n", count);
     const std::vector<std::uint8_t> sliding = g.flags("sliding", count);
+    // A state written before the shares (every point a full kn) reads as shares of 1.
+    const std::vector<double> share =
+        g.has("stiffness_share") ? g.doubles("stiffness_share", count) : std::vector<double>(n, 1.0);
     std::vector<ContactPoint3d> out(n);
     for (std::size_t i = 0; i < n; ++i) {
         ContactPoint3d& c = out[i];
@@ -131,6 +135,7 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
         c.point_m = point[i];
         c.normal = normal[i];
         c.overlap_m = overlap[i];
+        c.stiffness_share = share[i];
         c.dashpot_mass_kg = mass[i];
         c.normal_dashpot_n = normal_dashpot[i];
         c.shear = {spring[i], dashpot[i]};

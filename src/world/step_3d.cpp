@@ -118,14 +118,21 @@ void find_contacts(World3d& w) {
         const auto [a, b] = s.pairs[k];
         const auto& points = s.pair_points[k];
         if (points.empty()) continue;
-        const double share_kg = reduced_mass(w, a, b) / static_cast<double>(points.size());
+        // The dashpots take the pair's reduced mass in proportion to the points' stiffness shares
+        // (the 2-D per-length rule), so that every point has the requested damping ratio and a box
+        // landing flat keeps its restitution.
+        double shares = 0.0;
+        for (const ContactGeometry3d& g : points) shares += g.stiffness_share;
+        const double mass_kg = reduced_mass(w, a, b);
         for (const ContactGeometry3d& g : points) {
             ContactPoint3d p;
             p.key = {a, b, g.feature_a, g.feature_b};
             p.point_m = g.point_m;
             p.normal = g.normal;
             p.overlap_m = g.overlap_m;
-            p.dashpot_mass_kg = share_kg;
+            p.stiffness_share = g.stiffness_share;
+            p.dashpot_mass_kg = shares > 0.0 ? mass_kg * g.stiffness_share / shares
+                                             : mass_kg / static_cast<double>(points.size());
             w.contacts.push_back(p);
         }
     }
@@ -158,7 +165,7 @@ struct LawTotals {
 
 // The law at one point: its force into its own slot, its energy terms returned.
 LawTotals contact_law(World3d& w, ContactPoint3d& c, Vec3 table_step_m) {
-    const ContactParameters& p = w.contact;
+    const ContactParameters p = point_parameters(w.contact, c.stiffness_share);
     const std::uint32_t a = c.key.body_a;
     const std::uint32_t b = c.key.body_b;
     const Vec3 relative = point_velocity(w, b, c.point_m) - point_velocity(w, a, c.point_m);

@@ -16,7 +16,7 @@ expect_in() { grep -qF -- "$2" <<<"$1" || fail "expected '$2' in: $1"; }
 json() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
 column=$src/examples/3d/drum_column.toml
 
-# 1. The column rocking (peak tilt about 0.12 rad at 0.34 s): converged, dt halved exactly.
+# 1. The column rocking (peak tilt about 0.13 rad at 0.35 s): converged, dt halved exactly.
 study=$tmp/rocking
 out=$("$bin" converge "$column" --out "$study" -q --set simulation.duration=0.4 --set table_motion.x.amplitude=1.0 2>&1); rc=$?
 [ $rc -eq 0 ] || fail "converge exited $rc: $out"
