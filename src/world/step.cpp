@@ -8,6 +8,7 @@
 #include "contact/contact_forces.hpp"
 #include "contact/narrow_phase.hpp"
 #include "geometry/polygon.hpp"
+#include "geometry/rounded_contact.hpp"
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
 #include "world/parallel.hpp"
@@ -30,22 +31,38 @@ Aabb place_corners(Bodies& b, std::uint32_t first, std::uint32_t count, Vec2 x, 
     return box;
 }
 
+// With rounding r: the core offsets of corners first to first + count (a part), from their
+// normals just placed (rounded_contact.hpp). Once per body and step, not four times per pair.
+void place_corner_offsets(Bodies& b, std::uint32_t first, std::uint32_t count, double r) {
+    Vec2 before = b.world_normals[first + count - 1];
+    for (std::uint32_t k = first; k < first + count; ++k) {
+        const Vec2 after = b.world_normals[k];
+        b.world_corner_offsets_m[k] = rounded_corner_offset(before, after, r);
+        before = after;
+    }
+}
+
 }  // namespace
 
 void update_body_geometry(World& w) {
     Bodies& b = w.bodies;
     const auto n = static_cast<std::ptrdiff_t>(b.size());
+    const double rounding_m = w.contact.rounding_m;
+    if (rounding_m > 0.0) b.world_corner_offsets_m.resize(b.world_normals.size());
     // Normals are turned with the body rather than recomputed from the corners: no square root.
     parallel_for(n, [&](std::ptrdiff_t i) {
         const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
         const Vec2 x = b.position_m[i];
         const std::uint32_t first_part = b.part_begin[i];
         const std::uint32_t parts = b.part_count[i];
-        for (std::uint32_t j = first_part; j < first_part + parts; ++j)
+        for (std::uint32_t j = first_part; j < first_part + parts; ++j) {
             b.part_box_m[j] = place_corners(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r);
+            if (rounding_m > 0.0) place_corner_offsets(b, b.part_vertex_begin[j], b.part_vertex_count[j], rounding_m);
+        }
         // A concave body's outline is not one of its parts: placed too, for the outputs.
         if (parts > 1) place_corners(b, b.vertex_begin[i], b.vertex_count[i], x, r);
     });
+    b.corner_offsets_rounding_m = rounding_m;
 }
 
 bool broad_phase_is_stale(const World& w) {
