@@ -33,14 +33,14 @@ namespace {
 
 class Simulation3d {
 public:
-    Simulation3d(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force)
+    Simulation3d(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force, bool history)
         : threads_(threads) {
         if (threads < 1) throw py::value_error(fmt::format("threads must be 1 or more, got {}", threads));
         RunRequest request;
         request.scenario = scenario.file;
         if (out_dir) request.out_dir = *out_dir;
         request.force = force;
-        run_ = std::make_unique<ScenarioRun3d>(request, scenario.parse());
+        run_ = std::make_unique<ScenarioRun3d>(request, scenario.parse(), history);
         writes_files_ = out_dir.has_value();
         step(0);  // the state at t = 0 complete before anything reads it
     }
@@ -98,9 +98,10 @@ std::vector<double> xyz(Vec3 v) { return {v.x, v.y, v.z}; }
 void bind_simulation_3d(py::module_& m) {
     py::class_<Simulation3d>(m, "Simulation3d",
                              "A run of a 3-D scenario (dimension = 3), stepped from Python (docs/python.md, docs/3d.md).")
-        .def(py::init<const ScenarioSource&, int, std::optional<fs::path>, bool>(), py::arg("scenario"),
-             py::arg("threads") = 2, py::arg("out_dir") = py::none(), py::arg("force") = false,
-             "Builds the world. out_dir: write the CLI's files there (history.csv, energy.csv, summary.json, VTK).")
+        .def(py::init<const ScenarioSource&, int, std::optional<fs::path>, bool, bool>(), py::arg("scenario"),
+             py::arg("threads") = 2, py::arg("out_dir") = py::none(), py::arg("force") = false, py::arg("history") = true,
+             "Builds the world (settling it if the scenario asks). out_dir: write the CLI's files there (history.csv, "
+             "energy.csv, summary.json, VTK); history: keep the output rows in memory (history()).")
         .def("step", &Simulation3d::step, py::arg("n") = 1, "Takes n steps (fewer at the end); returns the steps taken.")
         .def("finish", &Simulation3d::finish, "Finishes the outputs (summary.json with out_dir); returns the summary.")
         .def_property_readonly("t", [](const Simulation3d& s) { return s.world().time_s; }, "[s] time of the state")
@@ -140,6 +141,11 @@ void bind_simulation_3d(py::module_& m) {
             "masses",
             [](Simulation3d& s) { return s.rows(1, [&](std::size_t i) { return std::vector<double>{s.world().bodies[i].mass_kg}; }); },
             "[kg] N x 1")
+        .def("contacts", [](Simulation3d& s) { return contacts_array_3d(s.world()); },
+             "The contact points at t as a structured array (a copy): body_a, body_b, x, y, z [m], nx, ny, nz "
+             "(from a to b), fx, fy, fz [N] (on b), normal_force, shear_force [N], overlap [m], sliding.")
+        .def("history", [](Simulation3d& s) { return history_dict_3d(s.run()); },
+             "The output rows so far as numpy arrays (rows x recorded bodies), without CSV.")
         .def("energy", [](Simulation3d& s) { return energy_dict(s.run().world().ledger); },
              "The energy balance at t [J] and its relative error.")
         .def("summary", [](Simulation3d& s) { return json_to_python(s.run().summary("running")); },

@@ -28,12 +28,12 @@ def main(argv=None):
     formats = ["png"] + [f for f in args.formats.split(",") if f and f != "png"]
     try:
         folder = study_base_folder(args.folder)
-        # A 3-D run (docs/3d.md): its own page, figures drawn from the VTK frames, no animation file.
+        # A 3-D run (docs/3d.md): its own page, figures and animation drawn from the VTK frames.
         run = RunFolder3d(folder) if run_dimension(folder) == 3 else RunFolder(folder)
         for note in run.limitations():
             print(f"blockdem report: note: {note}", file=sys.stderr)
         if isinstance(run, RunFolder3d):
-            path = write_report_3d(run, formats)
+            path = write_report_3d(run, formats, not args.no_animation)
         else:
             path = write_report(run, args.blockdem, formats, not args.no_animation)
     except RunFolderError as e:

@@ -54,30 +54,37 @@ void print_contact(const ContactParameters& p) {
                restitution_of(p.h_n, p.termination), p.h_s, to_string(p.termination));
 }
 
-// The dashpots as the 3-D step applies them (C = 2 h sqrt(M k), M the pair's reduced mass shared
-// by its points: world/step_3d.cpp) for the pairs touching at the start: the points the stable
-// bound is computed from. The first `shown` pairs, then a count; then the dynamic bodies that
-// touch nothing.
+// The dashpots as the 3-D step applies them (world/step_3d.cpp) for the pairs touching at the
+// start: the points the stable bound is computed from. A point's springs are kn and ks times its
+// stiffness share w (geometry/corner_share_3d.hpp) and its dashpots take the pair's reduced mass M
+// in proportion to w, so C_i = w_i 2 h sqrt(M k / W) with W the pair's sum of shares, and the
+// pair's dashpots add up to 2 h sqrt(M k W). The first `shown` pairs, then a count; then the
+// dynamic bodies that touch nothing.
 void print_start_contacts(const World3d& w, std::size_t shown = 20) {
     const std::vector<ContactPoint3d> points = start_contacts_3d(w);
-    std::map<std::pair<std::uint32_t, std::uint32_t>, std::size_t> points_of_pair;  // sorted: deterministic
-    std::map<std::pair<std::uint32_t, std::uint32_t>, double> share_of_pair;
+    struct PairSums {
+        std::size_t points = 0;
+        double mass_kg = 0.0;  ///< [kg] the pair's reduced mass (the points' masses summed)
+        double shares = 0.0;   ///< [-] W
+    };
+    std::map<std::pair<std::uint32_t, std::uint32_t>, PairSums> pairs_touching;  // sorted: deterministic
     std::vector<bool> touches(w.bodies.size(), false);
     for (const ContactPoint3d& c : points) {
-        ++points_of_pair[{c.key.body_a, c.key.body_b}];
-        share_of_pair[{c.key.body_a, c.key.body_b}] = c.dashpot_mass_kg;
+        PairSums& p = pairs_touching[{c.key.body_a, c.key.body_b}];
+        ++p.points;
+        p.mass_kg += c.dashpot_mass_kg;
+        p.shares += c.stiffness_share;
         touches[c.key.body_a] = touches[c.key.body_b] = true;
     }
-    fmt::print("dashpots of the pairs touching at the start (C = 2 h sqrt(M k), M = the pair's reduced mass / its "
-               "points):\n");
+    fmt::print("dashpots of the pairs touching at the start (C = 2 h sqrt(M k W) in all, M = the pair's reduced mass, "
+               "W its points' stiffness shares summed, each point its share of C):\n");
     std::size_t pairs = 0;
-    for (const auto& [pair, count] : points_of_pair) {
+    for (const auto& [pair, sums] : pairs_touching) {
         if (++pairs > shown) continue;
-        const double share_kg = share_of_pair[pair];
-        const DashpotCoefficients c = dashpot_coefficients(w.contact, share_kg);
-        fmt::print("  {} / {}: {} point{}, M = {:.4g} kg; C_n = {:.4g}, C_s = {:.4g} N s/m per point\n",
-                   w.bodies[pair.first].name, w.bodies[pair.second].name, count, count == 1 ? "" : "s",
-                   share_kg * static_cast<double>(count), c.cn_N_s_m, c.cs_N_s_m);
+        const DashpotCoefficients c = dashpot_coefficients(w.contact, sums.mass_kg * sums.shares);
+        fmt::print("  {} / {}: {} point{}, M = {:.4g} kg; C_n = {:.4g}, C_s = {:.4g} N s/m in all, W = {:.4g}\n",
+                   w.bodies[pair.first].name, w.bodies[pair.second].name, sums.points, sums.points == 1 ? "" : "s",
+                   sums.mass_kg, c.cn_N_s_m, c.cs_N_s_m, sums.shares);
     }
     if (pairs == 0) fmt::print("  none\n");
     if (pairs > shown) fmt::print("  ... and {} more pairs\n", pairs - shown);
@@ -103,11 +110,12 @@ std::size_t resting_corners(const RigidBody3d& b) {
 }
 
 // Per dynamic body: the tilt it overturns at (over the face it rests on, as summary.json judges
-// it: world/response_monitor_3d.hpp) and the overlap its own weight makes shared by the n corners
-// of that face, m g / (n kn), against its height. The first `shown` bodies, then the extremes.
+// it: world/response_monitor_3d.hpp) and the overlap its own weight makes on that face, m g / (4 kn)
+// (a face lying on another carries 4 kn in all, whatever its corners: geometry/corner_share_3d.hpp),
+// against its height. The first `shown` bodies, then the extremes.
 void print_derived(const World3d& w, std::size_t shown = 20) {
-    fmt::print("per dynamic body: overturning tilt over its resting face; static overlap m g / (n kn), n the corners of "
-               "that face (its own weight: a body carrying others sinks more):\n");
+    fmt::print("per dynamic body: overturning tilt over its resting face; static overlap m g / (4 kn), the face's corners "
+               "sharing 4 kn (its own weight: a body carrying others sinks more):\n");
     const ResponseMonitor3d monitor(w);
     std::size_t count = 0, least_angle_body = 0, largest_fraction_body = 0;
     double least_angle = INFINITY, largest_fraction = 0.0;
@@ -121,7 +129,7 @@ void print_derived(const World3d& w, std::size_t shown = 20) {
         }
         const double angle = monitor.bodies()[i].overturning_angle_rad;
         const std::size_t n = resting_corners(b);
-        const double overlap_m = b.mass_kg * w.gravity_m_s2 / (static_cast<double>(n) * w.contact.kn_N_m);
+        const double overlap_m = b.mass_kg * w.gravity_m_s2 / (4.0 * w.contact.kn_N_m);
         const double fraction = overlap_m / (high - low);
         if (angle < least_angle) {
             least_angle = angle;

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "apps/blockdem/commands.hpp"
 #include "apps/blockdem/stop_signal.hpp"
@@ -30,9 +32,11 @@ std::string outcome_words(const nlohmann::json& body) {
     const double t = body["outcome_time_s"].is_number() ? body["outcome_time_s"].get<double>() : -1.0;
     if (outcome == "fell") {
         const auto& fell = body["fell"];
-        return fmt::format("FELL from its supporters at t = {:.3f} s, {} ({:.3f}, {:.3f}) m", t,
+        std::vector<std::string> at;  // (x, y) in 2-D, (x, y, z) in 3-D
+        for (const auto& x : fell["position_m"]) at.push_back(fmt::format("{:.3f}", x.get<double>()));
+        return fmt::format("FELL from its supporters at t = {:.3f} s, {} ({}) m", t,
                            fell["came_to_rest"].get<bool>() ? "came to rest at" : "still moving at the end, at",
-                           fell["position_m"][0].get<double>(), fell["position_m"][1].get<double>());
+                           fmt::join(at, ", "));
     }
     if (outcome == "left_model") {
         const auto& left = body["left_model"];
@@ -55,18 +59,21 @@ void print_outcome_3d(const nlohmann::json& summary, const std::string& out_dir)
     if (bodies.size() <= 12) {
         for (const auto& body : bodies)
             fmt::print("{}: {}; peak tilt {:.4g} rad at t = {:.3f} s, slip ({:.4g}, {:.4g}) m\n", body["name"].get<std::string>(),
-                       body["overturned"].get<bool>() ? "OVERTURNED" : "stands", body["peak_tilt_rad"].get<double>(),
+                       outcome_words(body), body["peak_tilt_rad"].get<double>(),
                        body["peak_tilt_time_s"].get<double>(), body["slip_m"][0].get<double>(),
                        body["slip_m"][1].get<double>());
     } else {
-        std::size_t overturned = 0, tilted = 0, slid = 0;
+        std::size_t tilted = 0, slid = 0;
+        std::map<std::string, std::size_t> words;
         for (std::size_t i = 0; i < bodies.size(); ++i) {
-            overturned += bodies[i]["overturned"].get<bool>() ? 1 : 0;
+            ++words[bodies[i]["outcome"].get<std::string>()];
             if (bodies[i]["peak_tilt_rad"].get<double>() > bodies[tilted]["peak_tilt_rad"].get<double>()) tilted = i;
             if (slip(bodies[i]) > slip(bodies[slid])) slid = i;
         }
-        fmt::print("{} bodies, {} overturned; largest peak tilt {:.4g} rad ({}), largest slip {:.4g} m ({})\n",
-                   bodies.size(), overturned, bodies[tilted]["peak_tilt_rad"].get<double>(),
+        std::vector<std::string> counts;
+        for (const auto& [word, count] : words) counts.push_back(fmt::format("{} {}", count, word));
+        fmt::print("{} bodies: {}; largest peak tilt {:.4g} rad ({}), largest slip {:.4g} m ({})\n",
+                   bodies.size(), fmt::join(counts, ", "), bodies[tilted]["peak_tilt_rad"].get<double>(),
                    bodies[tilted]["name"].get<std::string>(), slip(bodies[slid]), bodies[slid]["name"].get<std::string>());
     }
     fmt::print("energy balance error {:.3g} of the largest term; results in {}/ (history.csv, energy.csv, summary.json, "

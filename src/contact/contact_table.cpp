@@ -25,14 +25,6 @@ void merge_candidate_pairs(std::vector<PairContact>& table, const std::vector<Bo
 
 namespace {
 
-// The same corners as last step, in the same order: the usual step of a lasting contact.
-bool same_features(const PairContact& pair, const ContactManifold& manifold) {
-    if (manifold.count != pair.count) return false;
-    for (std::uint32_t i = 0; i < manifold.count; ++i)
-        if (manifold.points[i].feature != pair.points[i].feature) return false;
-    return true;
-}
-
 // A broken bond stays broken where it was (issue 13: a cracked joint that closes again keeps
 // only its residual friction): the corner of a broken point that opens is remembered by its
 // pair, and a point that closes at that corner again starts broken.
@@ -57,20 +49,9 @@ BondState remembered_bond(const PairContact& pair, std::uint32_t feature) {
 }  // namespace
 
 OpenedPoints update_pair_geometry(PairContact& pair, const ContactManifold& manifold, double match_distance_m) {
-    if (same_features(pair, manifold)) {
-        // Every point keeps its own history (what the general matching below gives here).
-        const double rescale = manifold.count > 0 && manifold.stiffness_scale != pair.stiffness_scale &&
-                                       pair.stiffness_scale > 0.0
-                                   ? manifold.stiffness_scale / pair.stiffness_scale
-                                   : 1.0;
-        for (std::uint32_t i = 0; i < manifold.count; ++i) {
-            pair.points[i].point_m = manifold.points[i].point_m;
-            pair.points[i].overlap_m = manifold.points[i].overlap_m;
-            if (rescale != 1.0) pair.points[i].shear_spring_n *= rescale;
-        }
-        pair.stiffness_scale = manifold.count > 0 ? manifold.stiffness_scale : 1.0;
-        pair.normal = manifold.normal;
-        pair.reference = manifold.count > 0 ? manifold.reference : no_reference;
+    // The same corners as last step, in the same order (the usual step of a lasting contact):
+    // every point keeps its own history (what the general matching below gives here).
+    if (update_same_points(pair, manifold)) {
         OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
         return none;
     }

@@ -41,6 +41,9 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
         if (j < previous.size() && previous[j].key == p.key) {
             p.normal_dashpot_n = previous[j].normal_dashpot_n;
             p.shear = previous[j].shear;
+            const double before = previous[j].stiffness_share;
+            if (p.stiffness_share != before)
+                p.shear.spring_n = before > 0.0 ? (p.stiffness_share / before) * p.shear.spring_n : Vec3{};
         }
     }
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry/vec3.hpp"
+#include "laws/contact_parameters.hpp"
 #include "laws/coulomb_slider_3d.hpp"
 
 namespace blockdem {
@@ -26,7 +27,8 @@ struct ContactPoint3d {
     Vec3 point_m;                   ///< [m]
     Vec3 normal;                    ///< unit, from a to b
     double overlap_m = 0.0;         ///< [m] > 0
-    double dashpot_mass_kg = 0.0;   ///< [kg] the pair's reduced mass over its points
+    double stiffness_share = 1.0;   ///< [-] its share w of kn and ks (geometry/corner_share_3d.hpp)
+    double dashpot_mass_kg = 0.0;   ///< [kg] the pair's reduced mass shared by the points' w
     // History carried to the next step.
     double normal_dashpot_n = 0.0;  ///< [N] last step's normal dashpot force on b
     ShearHistory3d shear;           ///< [N] shear spring and dashpot force on b, in the tangent plane
@@ -34,8 +36,19 @@ struct ContactPoint3d {
     Vec3 force_n;                   ///< [N] this step's force on b (minus it on a), world frame
 };
 
+/// The law's parameters at a point: kn and ks times its stiffness share (the dashpots follow
+/// through dashpot_coefficients, C = 2 h sqrt(M w k)).
+inline ContactParameters point_parameters(const ContactParameters& p, double stiffness_share) {
+    ContactParameters q = p;
+    q.kn_N_m *= stiffness_share;
+    q.ks_N_m *= stiffness_share;
+    return q;
+}
+
 /// Gives each point of current (sorted by key, fresh from the narrow phase, history zero) the
-/// history of the point of previous (sorted by key) with the same key, by one merge pass.
+/// history of the point of previous (sorted by key) with the same key, by one merge pass. The
+/// shear spring is the point's tangential displacement times its stiffness w ks: when w changes
+/// it is scaled by w_now / w_before, so that the displacement is what is carried.
 void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current);
 
 /// The same for a run of count points of current (sorted by key), found in previous by galloping

@@ -19,6 +19,13 @@ PolygonView part_view(const Bodies& b, std::uint32_t part) {
             b.part_vertex_count[part]};
 }
 
+// A part's polygon with its corners' core offsets for rounding r, when the body geometry made
+// them for r (world/step.cpp); as it is otherwise (the narrow phase then makes them).
+PolygonView with_corner_offsets(const Bodies& b, double rounding_m, PolygonView polygon, std::uint32_t part) {
+    if (b.corner_offsets_rounding_m == rounding_m) polygon.corner_offsets_m = &b.world_corner_offsets_m[b.part_vertex_begin[part]];
+    return polygon;
+}
+
 // How far the open end of a per-length joint's two-point (edge-to-edge) contact may be apart
 // and the pair still keep it, as a point carrying nothing [m] (0 for its other pairs). Why:
 // the per-length law gives each end of an edge contact half the face and a lone corner point 0.1
@@ -125,13 +132,19 @@ template <bool joints_only>
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
     if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
-        collide_rounded(a, c, w.contact.rounding_m, pair.reference, manifold, pair.axis_cache, collide_gap_m,
+        collide_rounded(with_corner_offsets(b, w.contact.rounding_m, a, part_a),
+                        with_corner_offsets(b, w.contact.rounding_m, c, part_b), w.contact.rounding_m, pair.reference,
+                        manifold, pair.axis_cache, collide_gap_m,
                         b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[part_a]] : nullptr,
                         b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[part_b]] : nullptr);
     else
         collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, collide_gap_m);
     if (face_kept) [[unlikely]]
         keep_face_or_trim(manifold, gap_m, w.contact.sub_contacts);
+    if (update_same_points(pair, manifold)) {
+        OpenedPoints none;  // (count 0, nothing else written: contact_table.hpp)
+        return none;
+    }
     return update_pair_geometry(pair, manifold, part_match_distance_m(b, pair));
 }
 

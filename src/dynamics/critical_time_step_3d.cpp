@@ -53,8 +53,8 @@ void add_direction(const World3d& w, const ContactPoint3d& c, Vec3 d, double k, 
 
 CriticalTimeStep3d live_time_step_3d(const World3d& w) {
     std::vector<Rows> rows_k(w.bodies.size(), Rows{}), rows_c(w.bodies.size(), Rows{});
-    const ContactParameters& p = w.contact;
     for (const ContactPoint3d& c : w.contacts) {
+        const ContactParameters p = point_parameters(w.contact, c.stiffness_share);
         const DashpotCoefficients k = dashpot_coefficients(p, c.dashpot_mass_kg);
         // Two tangents: any unit vector off the normal, and the third of the frame.
         const Vec3 n = c.normal;

@@ -22,8 +22,9 @@ struct CriticalTimeStep3d {
     double h = 0.0;            ///< [-] Lambda_C / (2 omega)
 };
 
-/// The bound over w.contacts, with each point's dashpots as the law applies them (the pair's
-/// reduced mass over its points).
+/// The bound over w.contacts, with each point's springs and dashpots as the law applies them
+/// (kn and ks times the point's stiffness share, which reaches 2 at a sharp corner; the pair's
+/// reduced mass shared by the shares).
 CriticalTimeStep3d live_time_step_3d(const World3d& w);
 
 }  // namespace blockdem

@@ -31,6 +31,9 @@ struct PolygonView {
     const Vec2* vertices = nullptr;  ///< [m]
     const Vec2* normals = nullptr;   ///< outward unit normal of edge i (vertex i to i+1)
     std::uint32_t count = 0;
+    /// [m] optional, for the rounded narrow phase: corner i's rounded_corner_offset at the
+    /// caller's rounding, made from these normals (null: made from them when needed)
+    const Vec2* corner_offsets_m = nullptr;
 };
 
 /// A feature id: the polygon that owns the corner (0 = a, 1 = b) and the corner's index.

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geometry/box_face_clip_3d.hpp"
+#include "geometry/corner_share_3d.hpp"
 
 namespace blockdem {
 namespace {
@@ -206,12 +207,19 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
         clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
     const auto& polygon = scratch.polygon;
     const auto& ref_corners = ref.shape->faces[ref_face];
+    // The shares come from the whole clipped polygon, corners above the reference plane included,
+    // so that a corner crossing the plane changes no other corner's share.
+    scratch.corners_m.resize(polygon.size());
+    scratch.shares.resize(polygon.size());
+    for (std::size_t i = 0; i < polygon.size(); ++i) scratch.corners_m[i] = polygon[i].point_m;
+    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data());
     const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
-    for (const ClipCorner3d& c : polygon) {
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const ClipCorner3d& c = polygon[i];
         const double depth_m = plane_m - dot(n, c.point_m);
         if (depth_m <= 0.0) continue;
         ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, ref_is_a ? n : -n, depth_m, c.feature_reference,
-                            c.feature_incident};
+                            c.feature_incident, scratch.shares[i]};
         if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
         out.push_back(g);
     }
@@ -307,12 +315,16 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     };
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
     if (!std::is_sorted(begin, out.end(), key_less)) std::sort(begin, out.end(), key_less);
-    // A key twice (a reference corner found from both its sides): the first stands for it.
-    out.erase(std::unique(begin, out.end(),
-                          [](const ContactGeometry3d& x, const ContactGeometry3d& y) {
-                              return x.feature_a == y.feature_a && x.feature_b == y.feature_b;
-                          }),
-              out.end());
+    // A key twice (a reference corner found from both its sides, two corners at one place): the
+    // first stands for it, with both shares.
+    auto kept = begin;
+    for (auto it = begin; it != out.end(); ++it) {
+        if (it != begin && it->feature_a == kept->feature_a && it->feature_b == kept->feature_b)
+            kept->stiffness_share += it->stiffness_share;
+        else if (it != begin)
+            *++kept = *it;
+    }
+    if (begin != out.end()) out.erase(kept + 1, out.end());
     return out.size() - first;
 }
 

@@ -12,6 +12,8 @@
 //     and each clipped corner below the reference plane is a point, with the overlap its depth:
 //     a corner of the incident face (vertex-to-face), an incident edge crossing a reference edge
 //     (edge-to-edge), or a corner of the reference face inside the incident face (face-to-vertex);
+//     each point carries its corner's share of the stiffness, by the clipped polygon's turn there
+//     (geometry/corner_share_3d.hpp), so that a corner cut in two or cut off changes nothing at once;
 //   - an edge-edge axis (two edges crossing, as when two boxes meet edge on edge): one point, at
 //     the middle of the two edges' closest points, the overlap their distance along the axis.
 // Face axes are preferred unless an edge axis overlaps clearly less (by 5%), and A's face unless
@@ -59,6 +61,7 @@ struct ContactGeometry3d {
     double overlap_m = 0.0;     ///< [m] > 0
     std::uint32_t feature_a = 0;///< feature_3d of a
     std::uint32_t feature_b = 0;///< feature_3d of b
+    double stiffness_share = 1.0;  ///< [-] its share of kn and ks (geometry/corner_share_3d.hpp); 1 edge on edge
 };
 
 /// A corner of the polygon being clipped: where it is, what made it, and the line it runs along
@@ -76,6 +79,8 @@ struct ContactScratch3d {
     std::vector<ClipCorner3d> polygon;
     std::vector<ClipCorner3d> clipped;
     std::vector<double> heights_m2;  ///< [m^2] the corners' heights over a side plane, times the side's length
+    std::vector<Vec3> corners_m;     ///< [m] the clipped polygon's corners, for their shares
+    std::vector<double> shares;      ///< [-] their stiffness shares
 };
 
 /// The general face clip: inc's face inc_face clipped by the side planes of ref's face ref_face

@@ -17,15 +17,12 @@ using edge_clipping::IncidentEdge;
 using edge_clipping::next_corner;
 std::uint32_t previous_corner(std::uint32_t i, std::uint32_t count) { return i == 0 ? count - 1 : i - 1; }
 
-// How far corner i of the core lies inside corner i of the polygon: the core corner is on the
-// lines of edges i-1 and i moved inward by r, so with o = r (n_{i-1} + n_i) / (1 + n_{i-1} . n_i),
-// n . o = r for both normals, and the core corner is v_i - o.
-[[gnu::always_inline]] inline Vec2 corner_offset(Vec2 normal_before, Vec2 normal_after, double r) {
-    return (r / (1.0 + dot(normal_before, normal_after))) * (normal_before + normal_after);
-}
-
-Vec2 corner_offset(const PolygonView& p, std::uint32_t i, double r) {
-    return corner_offset(p.normals[previous_corner(i, p.count)], p.normals[i], r);
+// How far corner i of the core lies inside corner i of the polygon (rounded_corner_offset):
+// the polygon's own when it has them (the body geometry made them this step, from the same
+// normals: the same bits), else made here.
+[[gnu::always_inline]] inline Vec2 corner_offset(const PolygonView& p, std::uint32_t i, double r) {
+    if (p.corner_offsets_m != nullptr) return p.corner_offsets_m[i];
+    return rounded_corner_offset(p.normals[previous_corner(i, p.count)], p.normals[i], r);
 }
 
 // The separation of the cores along edge i's normal n, measured at corner j of the other
@@ -295,8 +292,8 @@ std::optional<std::string> rounding_problem(const std::vector<Vec2>& vertices, c
     const std::uint32_t count = static_cast<std::uint32_t>(vertices.size());
     for (std::uint32_t i = 0; i < count; ++i) {
         const std::uint32_t j = next_corner(i, count);
-        const Vec2 from = vertices[i] - corner_offset(normals[previous_corner(i, count)], normals[i], rounding_m);
-        const Vec2 to = vertices[j] - corner_offset(normals[i], normals[j], rounding_m);
+        const Vec2 from = vertices[i] - rounded_corner_offset(normals[previous_corner(i, count)], normals[i], rounding_m);
+        const Vec2 to = vertices[j] - rounded_corner_offset(normals[i], normals[j], rounding_m);
         // The core's edge must keep the drawn edge's direction (else the corners' arcs overlap).
         if (dot(to - from, vertices[j] - vertices[i]) <= 0.0)
             return fmt::format("[contact] rounding = {:g} m removes edge {} (corner {} to {}, {:g} m long) of the body: "

@@ -202,6 +202,8 @@ std::vector<BodyDef> read_assembly(TableReader t, std::uint32_t group) {
     return bodies;
 }
 
+}  // namespace
+
 SettlingSettings read_settling(TableReader t) {
     SettlingSettings s;
     s.kinetic_ratio = t.optional_positive("kinetic_ratio").value_or(s.kinetic_ratio);
@@ -211,8 +213,6 @@ SettlingSettings read_settling(TableReader t) {
     t.reject_unknown_keys();
     return s;
 }
-
-}  // namespace
 
 void read_assemblies(TableReader& top, Model& model) {
     std::set<std::string> names;

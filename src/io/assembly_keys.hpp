@@ -11,4 +11,7 @@ namespace blockdem {
 /// appended after the [[bodies]] already read). Throws InputError naming the key.
 void read_assemblies(TableReader& top, Model& model);
 
+/// [settling] (both dimensions): kinetic_ratio, window [s], max_time [s], friction.
+SettlingSettings read_settling(TableReader t);
+
 }  // namespace blockdem

@@ -8,12 +8,16 @@
 
 #include "geometry/polygon.hpp"
 #include "io/assembly_3d_keys.hpp"
+#include "io/assembly_keys.hpp"
+#include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
 #include "io/scenario.hpp"
 #include "io/scenario_keys.hpp"
 #include "io/vec3_keys.hpp"
 #include "scenes/brick_wall_3d.hpp"
+#include "world/settling_3d.hpp"
+#include "world/simulation_error.hpp"
 #include "world/world.hpp"
 #include "world/world_3d_start.hpp"
 
@@ -30,6 +34,7 @@ SimulationSettings read_settings_3d(TableReader t) {
     read_run_keys(t, s);
     s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -z and must be >= 0");
+    t.allow({"initial_state"});  // a state file: read by load_scenario_3d (io, not physics)
     t.reject_unknown_keys();
     return s;
 }
@@ -363,12 +368,12 @@ int scenario_dimension(const toml::table& root, const std::string& file) {
     return static_cast<int>(*value);
 }
 
-LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-    return load_scenario_3d(load_toml_file(file), file, overrides);
+LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle) {
+    return load_scenario_3d(load_toml_file(file), file, overrides, settle);
 }
 
 LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path& file,
-                                  const std::vector<std::string>& overrides) {
+                                  const std::vector<std::string>& overrides, bool settle) {
     LoadedScenario3d s;
     s.file = file;
     s.root = std::move(root);
@@ -384,14 +389,17 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     s.world.gravity_m_s2 = settings.gravity_m_s2;
     s.world.duration_s = settings.duration_s;
     s.world.output_interval_s = settings.output_interval_s;
-    if (auto output = top.optional_table("output")) {
-        // (Read by the 2-D reader, so that the words are the same; two of its keys have nothing
-        // behind them in 3-D yet, and are refused rather than ignored.)
-        for (const char* key : {"report", "vtk_contacts"})
-            if (output->has(key))
-                output->fail(key, "is 2-D only so far: a 3-D run writes history.csv, energy.csv, summary.json and the "
-                                  "bodies' VTK frames (docs/3d.md)");
-        s.output = read_output_settings(*output);
+    if (auto output = top.optional_table("output")) s.output = read_output_settings(*output);
+    if (auto outcomes = top.optional_table("outcomes")) s.outcomes = read_outcome_thresholds(*outcomes);
+    if (auto settling = top.optional_table("settling")) s.settling = read_settling(*settling);
+    TableReader simulation = top.table("simulation");
+    if (auto state = simulation.optional_string("initial_state")) {
+        if (state->empty()) simulation.fail("initial_state", "is empty: give a state file (.h5)");
+        if (s.settling)
+            simulation.fail("initial_state", "starts from a state that is already settled: remove [settling] (or "
+                                              "initial_state)");
+        s.initial_state = std::filesystem::path(*state).is_absolute() ? std::filesystem::path(*state)
+                                                                      : file.parent_path() / *state;
     }
     top.allow({"title", "description"});
     top.reject_unknown_keys();
@@ -401,6 +409,12 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     } catch (const ModelError& e) {
         throw model_error(file, settings.dt_s && std::string(e.what()).starts_with("time step") ? "simulation.dt" : "",
                           e.what());
+    }
+    if (settle && s.settling) {
+        const SettlingReport report = settle_3d(s.world, *s.settling);
+        // A run that started and could not settle failed (exit 3), it is not bad input.
+        if (!report.settled) throw SimulationError(settling_failure(report, *s.settling));
+        s.settled = settling_record(report, *s.settling);
     }
     return s;
 }

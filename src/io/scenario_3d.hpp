@@ -4,12 +4,15 @@
 // io/scenario_keys.hpp), and turned into a World3d whose time step is set and checked
 // (world/world_3d_start.hpp). Every problem is an InputError naming the file, key and body.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <toml++/toml.h>
 
 #include "io/output_keys.hpp"
+#include "world/outcome.hpp"
+#include "world/world.hpp"
 #include "world/world_3d.hpp"
 
 namespace blockdem {
@@ -29,13 +32,20 @@ struct LoadedScenario3d {
     double max_overlap_ratio = 0.25;  ///< [-] stop when an overlap exceeds it of the thinner body's least width
     OutputSettings output;            ///< [output] vtk, vtk_interval
     std::vector<std::string> assembly_notes;  ///< what each generated assembly built (rock mass, packing)
+    OutcomeThresholds outcomes;       ///< [outcomes], as in 2-D (world/outcome.hpp)
+    std::optional<SettlingSettings> settling;  ///< [settling], as in 2-D (world/settling_3d.hpp)
+    std::optional<SettlingRecord> settled;     ///< what settling did, when it ran (or a restart's state kept)
+    std::filesystem::path initial_state;       ///< [simulation] initial_state (empty: none), as in 2-D
 };
 
 /// Loads, overrides, validates and builds. A model error (a non-convex or degenerate polyhedron,
 /// overlap at start, dt above the stable bound) is an InputError naming the file and the body.
-LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides);
+/// With settle and a [settling] table the world is settled (world/settling_3d.hpp) before t = 0;
+/// a settling that fails is a SimulationError (the run's exit 3, as in 2-D).
+LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                                  bool settle = false);
 /// The same for a scenario already parsed; `file` names it and its folder resolves file names.
 LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path& file,
-                                  const std::vector<std::string>& overrides);
+                                  const std::vector<std::string>& overrides, bool settle = false);
 
 }  // namespace blockdem

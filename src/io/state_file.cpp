@@ -312,6 +312,31 @@ std::string StateGroup::text(const std::string& name) const {
 
 // ---- the world's groups ----------------------------------------------------------------------
 
+// What settling did before t = 0: summary.json reports it, also for a restarted run.
+void write_settling(StateGroup& g, const SettlingRecord& r) {
+    g.set("time_s", r.time_s);
+    g.set("steps", r.steps);
+    g.set("friction_held", std::int64_t{r.friction_held});
+    g.set("kinetic_ratio", r.kinetic_ratio);
+    g.set("largest_move_m", r.largest_move_m);
+    g.set("largest_move_body", r.largest_move_body);
+    g.set("largest_turn_rad", r.largest_turn_rad);
+    g.set("largest_turn_body", r.largest_turn_body);
+}
+
+SettlingRecord read_settling(const StateGroup& g) {
+    SettlingRecord r;
+    r.time_s = g.number("time_s");
+    r.steps = g.integer("steps");
+    r.friction_held = g.integer("friction_held") != 0;
+    r.kinetic_ratio = g.number("kinetic_ratio");
+    r.largest_move_m = g.number("largest_move_m");
+    r.largest_move_body = g.text("largest_move_body");
+    r.largest_turn_rad = g.number("largest_turn_rad");
+    r.largest_turn_body = g.text("largest_turn_body");
+    return r;
+}
+
 namespace {
 
 template <class T, class Field>
@@ -540,31 +565,6 @@ EnergyLedger read_energy(const StateGroup& g) {
     return e;
 }
 
-// What settling did before t = 0: summary.json reports it, also for a restarted run.
-void write_settling(StateGroup g, const SettlingRecord& r) {
-    g.set("time_s", r.time_s);
-    g.set("steps", r.steps);
-    g.set("friction_held", std::int64_t{r.friction_held});
-    g.set("kinetic_ratio", r.kinetic_ratio);
-    g.set("largest_move_m", r.largest_move_m);
-    g.set("largest_move_body", r.largest_move_body);
-    g.set("largest_turn_rad", r.largest_turn_rad);
-    g.set("largest_turn_body", r.largest_turn_body);
-}
-
-SettlingRecord read_settling(const StateGroup& g) {
-    SettlingRecord r;
-    r.time_s = g.number("time_s");
-    r.steps = g.integer("steps");
-    r.friction_held = g.integer("friction_held") != 0;
-    r.kinetic_ratio = g.number("kinetic_ratio");
-    r.largest_move_m = g.number("largest_move_m");
-    r.largest_move_body = g.text("largest_move_body");
-    r.largest_turn_rad = g.number("largest_turn_rad");
-    r.largest_turn_body = g.text("largest_turn_body");
-    return r;
-}
-
 void write_stability(StateGroup g, const StabilityWatch& s) {
     g.set("start_bound_s", s.start_bound_s);
     g.set("least_limit_s", s.least_limit_s);
@@ -633,7 +633,10 @@ void write_world(StateGroup& root, const WorldState& s) {
     if (!s.sub_contacts.empty()) write_sub_contacts(root.create_group("sub_contacts"), s.sub_contacts);
     write_energy(root.create_group("energy"), s.energy);
     write_stability(root.create_group("stability"), s.stability);
-    if (s.settling) write_settling(root.create_group("settling"), *s.settling);
+    if (s.settling) {
+        StateGroup settling = root.create_group("settling");
+        write_settling(settling, *s.settling);
+    }
 
     StateGroup d = root.create_group("domain");
     std::vector<std::uint32_t> body;

@@ -103,6 +103,9 @@ void write_state_file(const std::filesystem::path& file, int dimension, double t
 
 /// The energy ledger's group (the same in both dimensions): /energy in a 2-D file.
 void write_ledger(StateGroup group, const EnergyLedger& ledger);
+/// What settling did before t = 0 (both dimensions): summary.json reports it, also for a restarted run.
+void write_settling(StateGroup& group, const SettlingRecord& record);
+SettlingRecord read_settling(const StateGroup& group);
 EnergyLedger read_ledger(const StateGroup& group);
 
 /// An open state file. Throws InputError naming the file and the item for a missing, corrupt or

@@ -55,6 +55,7 @@ void write_contacts(StateGroup g, const std::vector<ContactPoint3d>& c) {
     g.write("point_m", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.point_m; })), 3);
     g.write("normal", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.normal; })), 3);
     g.write("overlap_m", column<double>(c, [](const ContactPoint3d& p) { return p.overlap_m; }));
+    g.write("stiffness_share", column<double>(c, [](const ContactPoint3d& p) { return p.stiffness_share; }));
     g.write("dashpot_mass_kg", column<double>(c, [](const ContactPoint3d& p) { return p.dashpot_mass_kg; }));
     g.write("normal_dashpot_n", column<double>(c, [](const ContactPoint3d& p) { return p.normal_dashpot_n; }));
     g.write("shear_spring_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.spring_n; })), 3);
@@ -120,6 +121,9 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
     const std::vector<double> overlap = g.doubles("overlap_m", count), mass = g.doubles("dashpot_mass_kg", count),
                               normal_dashpot = g.doubles("normal_dashpot_n", count);
     const std::vector<std::uint8_t> sliding = g.flags("sliding", count);
+    // A state written before the shares (every point a full kn) reads as shares of 1.
+    const std::vector<double> share =
+        g.has("stiffness_share") ? g.doubles("stiffness_share", count) : std::vector<double>(n, 1.0);
     std::vector<ContactPoint3d> out(n);
     for (std::size_t i = 0; i < n; ++i) {
         ContactPoint3d& c = out[i];
@@ -131,6 +135,7 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
         c.point_m = point[i];
         c.normal = normal[i];
         c.overlap_m = overlap[i];
+        c.stiffness_share = share[i];
         c.dashpot_mass_kg = mass[i];
         c.normal_dashpot_n = normal_dashpot[i];
         c.shear = {spring[i], dashpot[i]};
@@ -160,10 +165,33 @@ void write_world_3d(StateGroup& root, const World3d& w) {
     write_stability(root.create_group("stability3d"), w.stability);
 }
 
+namespace {
+
+void check_dimension(const StateFile& file, const std::filesystem::path& scenario) {
+    if (file.dimension() != 3)
+        throw InputError({file.path().string(), "", 0, 0},
+                         fmt::format("a {}-D state: scenario {} is 3-D", file.dimension(), scenario.string()));
+}
+
+}  // namespace
+
+void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
+    check_dimension(file, scenario);
+    read_bodies(file, scenario, w);
+    w.contacts = read_contacts(file.root().open_group("contacts3d"), w.bodies.size());
+    // As settling ends (world/settling_3d.cpp): the velocities at the state's time become the
+    // initial ones, and the first step is the half step from an initial state.
+    for (std::size_t i = 0; i < w.bodies.size(); ++i)
+        if (w.kinds[i] == BodyKind3d::dynamic)
+            set_initial_velocity(w.bodies[i], w.bodies[i].velocity_at_t_m_s, w.bodies[i].angular_velocity_at_t_rad_s);
+    w.time_s = 0.0;
+    w.steps = 0;
+    w.ledger = EnergyLedger{};
+}
+
 void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
     const InputLocation where{file.path().string(), "", 0, 0};
-    if (file.dimension() != 3)
-        throw InputError(where, fmt::format("a {}-D state: scenario {} is 3-D", file.dimension(), scenario.string()));
+    check_dimension(file, scenario);
     const StateGroup& root = file.root();
     read_bodies(file, scenario, w);  // (first: a state of another scenario is told as such)
     const double dt_s = root.number("dt_s");
@@ -178,6 +206,43 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
     w.steps = file.step_index();
 }
 
+namespace {
+
+// The monitor's numbers per body, one dataset each (the names are BodyResponse3d's fields).
+struct Number3dField {
+    const char* name;
+    double BodyResponse3d::*field;
+};
+constexpr Number3dField number_3d_fields[] = {
+    {"overturning_angle_rad", &BodyResponse3d::overturning_angle_rad},
+    {"peak_tilt_rad", &BodyResponse3d::peak_tilt_rad},
+    {"peak_tilt_time_s", &BodyResponse3d::peak_tilt_time_s},
+    {"peak_slip_m", &BodyResponse3d::peak_slip_m},
+    {"last_crossing_s", &BodyResponse3d::last_crossing_s},
+    {"height_m", &BodyResponse3d::height_m},
+    {"base_width_m", &BodyResponse3d::base_width_m},
+    {"bounding_radius_m", &BodyResponse3d::bounding_radius_m},
+    {"peak_base_slip_m", &BodyResponse3d::peak_base_slip_m},
+    {"peak_elastic_shear_m", &BodyResponse3d::peak_elastic_shear_m},
+    {"rocking_onset_s", &BodyResponse3d::rocking_onset_s},
+    {"slip_onset_s", &BodyResponse3d::slip_onset_s},
+    {"support_lost_time_s", &BodyResponse3d::support_lost_time_s},
+    {"drop_time_s", &BodyResponse3d::drop_time_s},
+};
+
+struct Flag3dField {
+    const char* name;
+    bool BodyResponse3d::*field;
+};
+constexpr Flag3dField flag_3d_fields[] = {
+    {"beyond_limit", &BodyResponse3d::beyond_limit},
+    {"touches_a_supporter", &BodyResponse3d::touches_a_supporter},
+    {"at_rest", &BodyResponse3d::at_rest},
+    {"slid_on_support", &BodyResponse3d::slid_on_support},
+};
+
+}  // namespace
+
 void Monitor3dStatePart::save_state(StateGroup& g) const {
     const std::vector<BodyResponse3d>& r = monitor_.bodies();
     using R = BodyResponse3d;
@@ -185,13 +250,18 @@ void Monitor3dStatePart::save_state(StateGroup& g) const {
     std::vector<double> q;
     for (const R& x : r) q.insert(q.end(), {x.start_orientation.w, x.start_orientation.x, x.start_orientation.y, x.start_orientation.z});
     g.write("start_orientation", q, 4);
-    g.write("overturning_angle_rad", column<double>(r, [](const R& x) { return x.overturning_angle_rad; }));
-    g.write("peak_tilt_rad", column<double>(r, [](const R& x) { return x.peak_tilt_rad; }));
-    g.write("peak_tilt_time_s", column<double>(r, [](const R& x) { return x.peak_tilt_time_s; }));
     g.write("peak_tilt_axis", flat(column<Vec3>(r, [](const R& x) { return x.peak_tilt_axis; })), 3);
-    g.write("peak_slip_m", column<double>(r, [](const R& x) { return x.peak_slip_m; }));
-    g.write("beyond_limit", column<double>(r, [](const R& x) { return x.beyond_limit ? 1.0 : 0.0; }));
-    g.write("last_crossing_s", column<double>(r, [](const R& x) { return x.last_crossing_s; }));
+    for (const Number3dField& f : number_3d_fields) g.write(f.name, column<double>(r, [&](const R& x) { return x.*f.field; }));
+    for (const Flag3dField& f : flag_3d_fields)
+        g.write(f.name, column<std::uint8_t>(r, [&](const R& x) { return std::uint8_t(x.*f.field ? 1 : 0); }));
+    // (The resting face is found again from the scenario at t = 0.) Each body's supporters: supporters[supporters_start[i] .. supporters_start[i + 1]).
+    std::vector<std::uint32_t> start{0}, supporters;
+    for (const R& x : r) {
+        supporters.insert(supporters.end(), x.supporters.begin(), x.supporters.end());
+        start.push_back(static_cast<std::uint32_t>(supporters.size()));
+    }
+    g.write("supporters_start", start);
+    g.write("supporters", supporters);
 }
 
 void Monitor3dStatePart::restore_state(const StateGroup& g) {
@@ -200,12 +270,30 @@ void Monitor3dStatePart::restore_state(const StateGroup& g) {
     const auto count = static_cast<std::int64_t>(n);
     const std::vector<Vec3> start = vec3s(g, "start_position_m", n), axis = vec3s(g, "peak_tilt_axis", n);
     const std::vector<double> q = g.doubles("start_orientation", 4 * count, 4);
-    const std::vector<double> overturning = g.doubles("overturning_angle_rad", count), tilt = g.doubles("peak_tilt_rad", count),
-                              tilt_time = g.doubles("peak_tilt_time_s", count), slip = g.doubles("peak_slip_m", count);
-    const std::vector<double> beyond = g.doubles("beyond_limit", count), crossing = g.doubles("last_crossing_s", count);
-    for (std::size_t i = 0; i < n; ++i)
-        r[i] = {start[i], {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]}, overturning[i], tilt[i], tilt_time[i], axis[i], slip[i],
-                beyond[i] != 0.0, crossing[i]};
+    for (std::size_t i = 0; i < n; ++i) {
+        r[i].start_position_m = start[i];
+        r[i].start_orientation = {q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]};
+        r[i].peak_tilt_axis = axis[i];
+    }
+    for (const Number3dField& f : number_3d_fields) {
+        const std::vector<double> values = g.doubles(f.name, count);
+        for (std::size_t i = 0; i < n; ++i) r[i].*f.field = values[i];
+    }
+    for (const Flag3dField& f : flag_3d_fields) {
+        const std::vector<std::uint8_t> values = g.flags(f.name, count);
+        for (std::size_t i = 0; i < n; ++i) r[i].*f.field = values[i] != 0;
+    }
+    const std::vector<std::uint32_t> first = g.indices("supporters_start", count + 1);
+    const std::vector<std::uint32_t> supporters = g.indices("supporters", first.back());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (first[i] > first[i + 1])
+            throw InputError({g.file(), "", 0, 0}, "not a readable blockdem state file: /monitor3d/supporters_start is not "
+                                                   "increasing");
+        r[i].supporters.assign(supporters.begin() + first[i], supporters.begin() + first[i + 1]);
+        for (std::uint32_t s : r[i].supporters)
+            if (s >= n)
+                throw InputError({g.file(), "", 0, 0}, "not a readable blockdem state file: /monitor3d/supporters names no body");
+    }
     monitor_.restore(std::move(r));
 }
 

@@ -17,6 +17,7 @@
 // The run's parts beside the world (the response monitor, the VTK frame list) are StateParts
 // below, as in 2-D (io/run_state_parts.hpp).
 #include <filesystem>
+#include <optional>
 
 #include "io/state_file.hpp"
 #include "io/vtk_3d_writer.hpp"
@@ -33,6 +34,13 @@ void write_world_3d(StateGroup& root, const World3d& w);
 /// and the scenario when the state is not a 3-D one, or its bodies, dt or time do not fit w.
 void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario);
 
+/// Starts a new run from a saved state (a settled assembly: [simulation] initial_state, as in
+/// 2-D): the bodies' poses, their velocities at the state's time and the contacts with their
+/// history come from the file; the clock restarts at t = 0 with those velocities as the initial
+/// ones, and the ledger starts again. The time step may differ from the state's. Refused as
+/// restore_world_3d refuses a state of another scenario.
+void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario);
+
 /// /monitor3d: each body's start pose, overturning angle and peaks (summary.json).
 class Monitor3dStatePart : public StatePart {
 public:
@@ -43,6 +51,19 @@ public:
 
 private:
     ResponseMonitor3d& monitor_;
+};
+
+/// /settling: what settling did before t = 0 (io/state_file.hpp's record), so that a restarted
+/// run's summary reports it.
+class Settling3dStatePart : public StatePart {
+public:
+    explicit Settling3dStatePart(std::optional<SettlingRecord>& record) : record_(record) {}
+    std::string state_group() const override { return "settling"; }
+    void save_state(StateGroup& group) const override { write_settling(group, *record_); }
+    void restore_state(const StateGroup& group) override { record_ = read_settling(group); }
+
+private:
+    std::optional<SettlingRecord>& record_;
 };
 
 /// /vtk3d: the frames written so far. On restore the frames at times before the state's are kept

@@ -97,20 +97,6 @@ nlohmann::json thresholds_summary(const OutcomeThresholds& t) {
                           "the critical angle"}};
 }
 
-// What settling did before t = 0 (null: no settling).
-nlohmann::json settling_summary(const World& w) {
-    if (!w.settling) return nullptr;
-    const SettlingRecord& s = *w.settling;
-    return {{"time_s", s.time_s},
-            {"steps", s.steps},
-            {"friction", s.friction_held ? "held" : "actual"},
-            {"kinetic_ratio", s.kinetic_ratio},
-            {"largest_displacement_m", s.largest_move_m},
-            {"largest_displacement_body", s.largest_move_body},
-            {"largest_rotation_rad", s.largest_turn_rad},
-            {"largest_rotation_body", s.largest_turn_body}};
-}
-
 // Gravity in the model's frame: its magnitude, the table's tilt at t = 0 and at the end.
 nlohmann::json gravity_summary(const World& w) {
     constexpr double deg_per_rad = 180.0 / std::numbers::pi;
@@ -209,7 +195,7 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
     s["domain"] = domain_summary(w);
     s["outcome_thresholds"] = thresholds_summary(monitor.thresholds());
     s["gravity"] = gravity_summary(w);
-    s["settling"] = settling_summary(w);
+    s["settling"] = settling_summary(w.settling);
     nlohmann::json units;
     for (const auto& [suffix, unit] : history_column_units()) units[std::string("<body>.") + suffix] = unit;
     units["t"] = "s";
@@ -219,6 +205,19 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
 
 void write_summary(const std::filesystem::path& file, const nlohmann::json& summary) {
     write_output_file(file, summary.dump(2) + '\n');
+}
+
+nlohmann::json settling_summary(const std::optional<SettlingRecord>& settled) {
+    if (!settled) return nullptr;
+    const SettlingRecord& s = *settled;
+    return {{"time_s", s.time_s},
+            {"steps", s.steps},
+            {"friction", s.friction_held ? "held" : "actual"},
+            {"kinetic_ratio", s.kinetic_ratio},
+            {"largest_displacement_m", s.largest_move_m},
+            {"largest_displacement_body", s.largest_move_body},
+            {"largest_rotation_rad", s.largest_turn_rad},
+            {"largest_rotation_body", s.largest_turn_body}};
 }
 
 }  // namespace blockdem

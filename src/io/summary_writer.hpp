@@ -6,6 +6,7 @@
 // run stops on an error (status "failed" with the message) or on a signal (status
 // "interrupted"). Written whole or not at all (io/output_file.hpp).
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -25,5 +26,7 @@ struct RunInfo {
 
 nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, const RunInfo& info);
 void write_summary(const std::filesystem::path& file, const nlohmann::json& summary);
+/// summary.json's "settling": what settling did before t = 0, or null (both dimensions).
+nlohmann::json settling_summary(const std::optional<SettlingRecord>& settled);
 
 }  // namespace blockdem

@@ -92,7 +92,9 @@ void write_text(const std::filesystem::path& file, const char* data, std::size_t
     write_output_file(file, std::string_view(data, size));
 }
 
-void write_collection(const std::filesystem::path& file, const std::string& prefix, const std::vector<double>& times_s) {
+}  // namespace
+
+void write_vtk_collection(const std::filesystem::path& file, const std::string& prefix, const std::vector<double>& times_s) {
     std::string text = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n<Collection>\n";
     for (std::size_t k = 0; k < times_s.size(); ++k)
         text += fmt::format("<DataSet timestep=\"{:.9g}\" group=\"\" part=\"0\" file=\"{}_{:06d}.vtp\"/>\n", times_s[k],
@@ -101,7 +103,6 @@ void write_collection(const std::filesystem::path& file, const std::string& pref
     write_text(file, text.data(), text.size());
 }
 
-}  // namespace
 
 std::string vtk_bodies_polydata(const World& w) {
     const Bodies& b = w.bodies;
@@ -207,8 +208,8 @@ void VtkWriter::resume(std::vector<double> times_s, double dt_s) {
 }
 
 void VtkWriter::finish(const World&) {
-    write_collection(dir_ / "bodies.pvd", "bodies", times_s_);
-    if (settings_.contacts) write_collection(dir_ / "contacts.pvd", "contacts", times_s_);
+    write_vtk_collection(dir_ / "bodies.pvd", "bodies", times_s_);
+    if (settings_.contacts) write_vtk_collection(dir_ / "contacts.pvd", "contacts", times_s_);
 }
 
 }  // namespace blockdem

@@ -43,6 +43,9 @@ private:
     std::vector<double> times_s_;   ///< [s] time of each written frame
 };
 
+/// Writes a .pvd collection listing PREFIX_NNNNNN.vtp for each time (both dimensions).
+void write_vtk_collection(const std::filesystem::path& file, const std::string& prefix, const std::vector<double>& times_s);
+
 /// The VTK XML text of one frame of bodies / of contact points (exposed for the tests).
 std::string vtk_bodies_polydata(const World& w);
 std::string vtk_contacts_polydata(const World& w);

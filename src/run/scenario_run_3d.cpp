@@ -35,8 +35,56 @@ const char* kind_name(BodyKind3d k) {
 
 nlohmann::json vec(Vec3 v) { return {v.x, v.y, v.z}; }
 
+nlohmann::json time_or_null(double t_s) { return t_s >= 0.0 ? nlohmann::json(t_s) : nlohmann::json(nullptr); }
+
+// The outcome (world/outcome.hpp) of a dynamic body and what decided it, as in 2-D.
+void add_outcome_3d(nlohmann::json& j, const World3d& w, std::size_t i, const BodyResponse3d& r, const BodyRecord& record,
+                    const ClassifiedOutcome& o) {
+    j["outcome"] = to_string(o.outcome);
+    j["outcome_time_s"] = time_or_null(o.time_s);
+    j["failed"] = is_failure(o.outcome);
+    j["peak_base_slip_m"] = r.peak_base_slip_m;
+    nlohmann::json supporters = nlohmann::json::array();
+    for (std::uint32_t s : record.supporters) supporters.push_back(w.bodies[s].name);
+    j["supporters"] = supporters;
+    j["touches_a_supporter"] = record.touches_a_supporter;
+    j["support_lost_time_s"] = time_or_null(record.support_lost_time_s);
+    j["final_drop_m"] = record.drop_m;
+    if (o.outcome == Outcome::fell) j["fell"] = {{"came_to_rest", o.at_rest}, {"position_m", vec(position_now_m(w, i))}};
+}
+
+// Every dynamic body's collapse (3-D bodies carry no assembly name yet: one group, "all").
+nlohmann::json collapse_3d(const World3d& w, const std::vector<BodyRecord>& records, const std::vector<ClassifiedOutcome>& outcomes,
+                           const OutcomeThresholds& t) {
+    std::vector<std::uint32_t> all;
+    for (std::uint32_t i = 0; i < w.bodies.size(); ++i)
+        if (w.kinds[i] == BodyKind3d::dynamic) all.push_back(i);
+    const CollapseSummary c = summarize_collapse("all", all, records, outcomes, t);
+    return nlohmann::json::array(
+        {{{"group", c.group},
+          {"blocks", c.blocks},
+          {"fell", c.fell},
+          {"overturned", c.overturned},
+          {"displaced_mass_fraction", c.displaced_mass_fraction},
+          {"first_to_go", c.first_to_go >= 0 ? nlohmann::json(w.bodies[static_cast<std::size_t>(c.first_to_go)].name) : nlohmann::json(nullptr)},
+          {"first_to_go_time_s", time_or_null(c.first_to_go_time_s)}}});
+}
+
+nlohmann::json thresholds_3d(const OutcomeThresholds& t) {
+    return {{"rocking_ratio", t.rocking_ratio},     {"slip_ratio", t.slip_ratio},
+            {"fall_drop_ratio", t.fall_drop_ratio}, {"displaced_ratio", t.displaced_ratio},
+            {"rest_speed_m_s", t.rest_speed_m_s},   {"support_window_s", t.support_window_s},
+            {"elastic_slip_factor", elastic_slip_factor},
+            {"slid_rule", "slid: a contact point on a supporter slid, and the resting face's lowest corner moved over the "
+                          "supporter by more than max(slip_ratio x the face's least width, elastic_slip_factor x the largest "
+                          "elastic shear stretch there); rocked: peak tilt relative to the first supporter >= rocking_ratio x "
+                          "overturning_angle_rad"}};
+}
+
 nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario, const World3d& w,
                           const ResponseMonitor3d& monitor, const std::string& status, const std::string& error) {
+    const std::vector<BodyRecord> records = monitor.records(w);
+    const std::vector<ClassifiedOutcome> outcomes = classify_outcomes(records, monitor.thresholds());
     nlohmann::json bodies = nlohmann::json::array();
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
         const RigidBody3d& b = w.bodies[i];
@@ -57,6 +105,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
                                                      : nlohmann::json(nullptr)},
                           {"slip_m", {slip.x, slip.y}},
                           {"peak_slip_m", r.peak_slip_m}});
+        if (w.kinds[i] == BodyKind3d::dynamic) add_outcome_3d(bodies.back(), w, i, r, records[i], outcomes[i]);
     }
     const EnergyLedger& e = w.ledger;
     const StabilityWatch3d& watch = w.stability;
@@ -94,6 +143,9 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
             {"dt_above_live_limit_from_s",
              watch.first_exceeded_s >= 0.0 ? nlohmann::json(watch.first_exceeded_s) : nlohmann::json(nullptr)}}}}}};
     if (const std::string warning = live_time_step_warning_3d(w); !warning.empty()) summary["warnings"].push_back(warning);
+    summary["settling"] = settling_summary(s.settled);
+    summary["collapse"] = collapse_3d(w, records, outcomes, monitor.thresholds());
+    summary["outcome_thresholds"] = thresholds_3d(monitor.thresholds());
     if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;
     if (!error.empty()) summary["error"] = error;
     return summary;
@@ -102,7 +154,8 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
 // The scenario as run, its file names made absolute so that the copy in the output folder still
 // finds the records it names.
 std::string scenario_as_run_3d(toml::table root, const fs::path& scenario) {
-    for (const char* key : {"table_motion.record.file", "table_motion.x.file", "table_motion.y.file", "table_motion.z.file"}) {
+    for (const char* key : {"table_motion.record.file", "table_motion.x.file", "table_motion.y.file", "table_motion.z.file",
+                            "simulation.initial_state"}) {
         toml::node* file = root.at_path(key).node();
         if (!file || !file->is_string()) continue;
         const fs::path path = *file->value<std::string>();
@@ -141,8 +194,8 @@ private:
 
 class Vtk3dRecorder : public Recorder3d {
 public:
-    Vtk3dRecorder(const fs::path& dir, double interval_s, const ResponseMonitor3d& monitor)
-        : writer(dir, interval_s), monitor_(monitor) {}
+    Vtk3dRecorder(const fs::path& dir, const OutputSettings& output, const ResponseMonitor3d& monitor)
+        : writer(dir, output.vtk_interval_s, output.vtk_contacts), monitor_(monitor) {}
     void record(const World3d& w) override { writer.record(w, monitor_); }
     void finish(const World3d&) override { writer.finish(); }
     Vtk3dWriter writer;
@@ -167,8 +220,10 @@ struct ScenarioRun3d::Parts {
     std::optional<History3dRecorder> history;
     std::optional<Energy3dRecorder> energy;
     std::optional<Vtk3dRecorder> vtk;
+    std::optional<RunTrace3d> trace;
     std::optional<Monitor3dStatePart> monitor_state;
     std::optional<Vtk3dStatePart> vtk_state;
+    std::optional<Settling3dStatePart> settling_state;
     SavePoints points;
     StateFileInfo state_info;
     std::vector<std::string> state_files;
@@ -177,7 +232,8 @@ struct ScenarioRun3d::Parts {
 
     double wall_s() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); }
 
-    Parts(std::optional<toml::table> root, const RunRequest& r) : request(r), scenario(r.scenario), out_dir(r.out_dir) {
+    Parts(std::optional<toml::table> root, const RunRequest& r, bool keep_trace)
+        : request(r), scenario(r.scenario), out_dir(r.out_dir) {
         if (!request.restart.empty()) {
             restart.emplace(request.restart);
             run_folder = state_run_folder(request.restart, restart->info());
@@ -192,15 +248,18 @@ struct ScenarioRun3d::Parts {
                 throw InputError({request.restart.string(), "", 0, 0},
                                  fmt::format("a 3-D state: scenario {} is not 3-D", scenario.string()));
         }
-        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides);
+        // (A restart takes the settled state from its file: settling again would be wasted time.)
+        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides, !restart);
         World3d& w = loaded.world;
-        monitor.emplace(w);  // (at t = 0: a restart puts back its start poses and peaks below)
+        monitor.emplace(w, loaded.outcomes);  // (at t = 0: a restart puts back its start poses and peaks below)
         least_widths = least_widths_m(w);
         points = save_points(w, request);
         state_info.scenario = restart ? restart->info().scenario : scenario.string();
         state_info.scenario_toml = scenario_as_run_3d(loaded.root, scenario);
         if (restart) start_from_restart();
+        else if (!loaded.initial_state.empty()) start_from_initial_state();
         if (!out_dir.empty()) open_outputs();
+        if (keep_trace) trace.emplace(loaded.world, *monitor);
     }
 
     void start_from_restart() {
@@ -213,10 +272,22 @@ struct ScenarioRun3d::Parts {
                                          w.time_s, w.duration_s));
         Monitor3dStatePart part(*monitor);
         restart->restore(part);
+        Settling3dStatePart settled(loaded.settled);
+        if (restart->has_group(settled.state_group())) restart->restore(settled);
         if (without_duration(restart->info().scenario_toml) != without_duration(state_info.scenario_toml) && request.on_warning)
             request.on_warning(fmt::format("scenario {} is not the one state {} was saved with: the run goes on from the "
                                            "state under the changed scenario",
                                            scenario.string(), request.restart.string()));
+    }
+
+    void start_from_initial_state() {
+        try {
+            const StateFile initial(loaded.initial_state);
+            start_from_state_3d(initial, loaded.world, scenario);
+        } catch (const InputError& e) {
+            throw InputError(e.where(), fmt::format("{} (simulation.initial_state in {})", e.problem(), scenario.string()));
+        }
+        monitor.emplace(loaded.world, loaded.outcomes);  // its t = 0 is the state's poses
     }
 
     // Nothing is written before every check has passed.
@@ -237,11 +308,13 @@ struct ScenarioRun3d::Parts {
         energy.emplace(out_dir / "energy.csv", mode);
         monitor_state.emplace(*monitor);
         if (vtk_on) {
-            vtk.emplace(out_dir / "vtk", loaded.output.vtk_interval_s, *monitor);
+            vtk.emplace(out_dir / "vtk", loaded.output, *monitor);
             vtk_state.emplace(vtk->writer, w);
             if (restart && restart->has_group(vtk_state->state_group())) restart->restore(*vtk_state);
             if (restart && !in_place)
-                copy_vtk_frames(run_folder / "vtk", out_dir / "vtk", static_cast<std::int64_t>(vtk->writer.frames_written()), {"bodies"});
+                copy_vtk_frames(run_folder / "vtk", out_dir / "vtk", static_cast<std::int64_t>(vtk->writer.frames_written()),
+                                loaded.output.vtk_contacts ? std::vector<std::string>{"bodies", "contacts"}
+                                                           : std::vector<std::string>{"bodies"});
         }
         state_info.run_folder = fs::absolute(out_dir).lexically_normal().string();
     }
@@ -250,6 +323,7 @@ struct ScenarioRun3d::Parts {
         RunOptions3d options;
         if (history) options.recorders = {&*history, &*energy};
         if (vtk) options.recorders.push_back(&*vtk);
+        if (trace) options.recorders.push_back(&*trace);
         // The guards and the monitor read the state at t; the watch keeps its findings in the
         // world, so that a state file carries them (the loop hands the world as const).
         options.on_step = [this](const World3d&) {
@@ -275,6 +349,8 @@ struct ScenarioRun3d::Parts {
         const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
         std::vector<const StatePart*> parts = {&*monitor_state};
         if (vtk_state) parts.push_back(&*vtk_state);
+        settling_state.emplace(loaded.settled);
+        if (loaded.settled) parts.push_back(&*settling_state);
         write_state_file(file, 3, w.time_s, w.steps, state_info, [&](StateGroup& root) { write_world_3d(root, w); }, parts);
         state_files.push_back(file.string());
         if (request.on_state_saved) request.on_state_saved(file);
@@ -283,6 +359,13 @@ struct ScenarioRun3d::Parts {
     nlohmann::json finish(const std::string& status, const std::string& error) {
         nlohmann::json summary = summary_of(loaded, state_info.scenario, loaded.world, *monitor, status, error);
         if (vtk) summary["vtk_frames"] = vtk->writer.frames_written();
+        // What was written (as 2-D's summary says; `report` asks the tool for report.html).
+        summary["outputs"] = {{"history", "history.csv"},
+                              {"energy", "energy.csv"},
+                              {"vtk", vtk ? nlohmann::json("vtk/bodies.pvd") : nlohmann::json(nullptr)},
+                              {"vtk_contacts", vtk && loaded.output.vtk_contacts ? nlohmann::json("vtk/contacts.pvd")
+                                                                                : nlohmann::json(nullptr)},
+                              {"report", loaded.output.report}};
         if (!out_dir.empty()) {
             write_summary(out_dir / "summary.json", summary);
             RunInvocation run;
@@ -292,6 +375,7 @@ struct ScenarioRun3d::Parts {
                 run.restarted_from = request.restart;
             }
             run.state_files = state_files;
+            if (!restart && !loaded.initial_state.empty()) run.initial_state = loaded.initial_state;
             write_summary(out_dir / "run_info.json", run_info_json(status, run));
         }
         summary["run_folder"] = out_dir.string();
@@ -302,8 +386,8 @@ struct ScenarioRun3d::Parts {
 };
 
 
-ScenarioRun3d::ScenarioRun3d(const RunRequest& request, std::optional<toml::table> root)
-    : parts_(std::make_unique<Parts>(std::move(root), request)) {
+ScenarioRun3d::ScenarioRun3d(const RunRequest& request, std::optional<toml::table> root, bool keep_trace)
+    : parts_(std::make_unique<Parts>(std::move(root), request, keep_trace)) {
     loop_.emplace(parts_->loaded.world, parts_->run_options());
 }
 
@@ -349,6 +433,7 @@ nlohmann::json ScenarioRun3d::summary(const std::string& status) const {
 const World3d& ScenarioRun3d::world() const { return parts_->loaded.world; }
 const LoadedScenario3d& ScenarioRun3d::scenario() const { return parts_->loaded; }
 const ResponseMonitor3d& ScenarioRun3d::monitor() const { return *parts_->monitor; }
+const RunTrace3d* ScenarioRun3d::trace() const { return parts_->trace ? &*parts_->trace : nullptr; }
 bool ScenarioRun3d::ended() const { return loop_->ended(); }
 bool ScenarioRun3d::failed() const { return loop_->failed(); }
 

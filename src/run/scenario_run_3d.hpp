@@ -20,6 +20,7 @@
 
 #include "io/scenario_3d.hpp"
 #include "run/run_request.hpp"
+#include "run/run_trace_3d.hpp"
 #include "world/response_monitor_3d.hpp"
 #include "world/simulation.hpp"
 
@@ -31,7 +32,9 @@ public:
     /// the run folder's scenario.toml unless request.scenario names one). Throws InputError for
     /// bad input, a state that does not fit, or an output folder that holds another run
     /// (nothing is written then).
-    explicit ScenarioRun3d(const RunRequest& request, std::optional<toml::table> root = std::nullopt);
+    /// keep_trace: keep the output rows in memory (trace()).
+    explicit ScenarioRun3d(const RunRequest& request, std::optional<toml::table> root = std::nullopt,
+                           bool keep_trace = false);
     ~ScenarioRun3d();
     ScenarioRun3d(const ScenarioRun3d&) = delete;
     ScenarioRun3d& operator=(const ScenarioRun3d&) = delete;
@@ -51,6 +54,8 @@ public:
     const World3d& world() const;
     const LoadedScenario3d& scenario() const;
     const ResponseMonitor3d& monitor() const;
+    /// The rows kept in memory, or null when the run keeps none.
+    const RunTrace3d* trace() const;
     bool ended() const;
     bool failed() const;
     bool finished() const { return finished_; }

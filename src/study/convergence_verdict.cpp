@@ -313,7 +313,8 @@ namespace {
 
 // A 3-D body (run/run_scenario_3d.cpp's summary): the tilt is the rocking whatever its axis, the
 // slip a horizontal vector, compared by its length (a direction has no floor to judge it by), the
-// overturning time as in 2-D. No outcome word: it is left out, as for an older 2-D file.
+// overturning time and the outcome word as in 2-D (a summary written before 3-D had outcomes has
+// none: it is left out, as for an older 2-D file).
 BodyOutcome body_outcome_3d(const nlohmann::json& j, const std::string& where) {
     BodyOutcome b;
     b.name = j.value("name", std::string());
@@ -326,6 +327,7 @@ BodyOutcome body_outcome_3d(const nlohmann::json& j, const std::string& where) {
     b.overturned = j.value("overturned", false);
     if (j.contains("overturning_time_s") && j["overturning_time_s"].is_number())
         b.overturning_time_s = j["overturning_time_s"].get<double>();
+    if (j.contains("outcome") && j["outcome"].is_string()) b.outcome = j["outcome"].get<std::string>();
     return b;
 }
 

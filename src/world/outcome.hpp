@@ -34,6 +34,10 @@ const char* to_string(Outcome outcome);
 /// Failure for fragility curves, mode maps and collapse counts: overturned, fell or left_model.
 bool is_failure(Outcome outcome);
 
+/// The slip threshold is at least this many times the largest elastic shear displacement seen
+/// at a body's support contacts: base slip below it can be the springs' deformation alone.
+inline constexpr double elastic_slip_factor = 2.0;
+
 /// [outcomes] in a scenario; every ratio is dimensionless and >= 0.
 struct OutcomeThresholds {
     double rocking_ratio = 0.01;      ///< [-] peak |rotation| / critical angle at which a body rocked

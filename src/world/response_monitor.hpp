@@ -37,9 +37,6 @@
 
 namespace blockdem {
 
-/// The slip threshold is at least this many times the largest elastic shear displacement seen
-/// at a body's support contacts: base slip below it can be the springs' deformation alone.
-inline constexpr double elastic_slip_factor = 2.0;
 
 struct BodyResponse {
     double alpha_ccw_rad = 0.0;          ///< [rad] critical angle tipping counter-clockwise (towards -x)

@@ -19,13 +19,6 @@ double kinetic_energy_j(const Bodies& b, std::size_t i) {
     return 0.5 * b.mass_kg[i] * dot(v, v) + 0.5 * b.inertia_kg_m2[i] * omega * omega;
 }
 
-// The least settled dynamic body now: the largest kinetic energy / (m g L).
-struct LeastSettled {
-    double ratio = 0.0;
-    std::size_t body = 0;
-    double kinetic_j = 0.0;
-};
-
 LeastSettled least_settled(const World& w) {
     const Bodies& b = w.bodies;
     LeastSettled worst;
@@ -104,15 +97,34 @@ void note_largest_motion(const Bodies& b, const std::vector<Vec2>& start_m, cons
 
 }  // namespace
 
+SettlingWindow::SettlingWindow(const SettlingSettings& settings, double dt_s)
+    : kinetic_ratio_(settings.kinetic_ratio),
+      // Clamped as a double before the cast (window = 1e300 s).
+      steps_per_window_(static_cast<std::int64_t>(std::clamp(std::round(settings.window_s / dt_s), 1.0, 1e18))) {}
+
+void SettlingWindow::close_if_due(std::int64_t n, SettlingReport& report, std::size_t& reported_body) {
+    if (n % steps_per_window_ != 0) return;
+    report.kinetic_ratio = worst_.ratio;
+    report.body_kinetic_j = worst_.kinetic_j;
+    reported_body = worst_.body;
+    report.settled = worst_.ratio < kinetic_ratio_;
+    worst_ = LeastSettled{};
+}
+
+void SettlingWindow::report_partial(std::int64_t n, SettlingReport& report, std::size_t& reported_body) const {
+    if (report.settled || n >= steps_per_window_) return;
+    report.kinetic_ratio = worst_.ratio;
+    report.body_kinetic_j = worst_.kinetic_j;
+    reported_body = worst_.body;
+}
+
 SettlingReport settle(World& w, const SettlingSettings& settings) {
     const HeldWhileSettling held = hold(w, settings);
     update_body_geometry(w);
     const std::vector<Vec2> start_m = w.bodies.position_m;
     const std::vector<double> start_rad = w.bodies.rotation_rad;
-    // Clamped as a double before the cast (window = 1e300 s).
-    const auto steps_per_window = static_cast<std::int64_t>(std::clamp(std::round(settings.window_s / w.dt_s), 1.0, 1e18));
+    SettlingWindow window(settings, w.dt_s);
     SettlingReport report;
-    LeastSettled window_worst;
     std::size_t reported_body = 0;
     const std::size_t left_before = w.domain.left.size();
     for (std::int64_t n = 1;; ++n) {
@@ -129,17 +141,11 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
             reported_body = left.body;
             break;
         }
-        const LeastSettled now = least_settled(w);
-        if (now.ratio >= window_worst.ratio) window_worst = now;
+        window.note(least_settled(w));
         step_end(w);
-        if (n % steps_per_window == 0) {
-            report.kinetic_ratio = window_worst.ratio;
-            report.body_kinetic_j = window_worst.kinetic_j;
-            reported_body = window_worst.body;
-            report.settled = window_worst.ratio < settings.kinetic_ratio;
-            window_worst = LeastSettled{};
-        }
+        window.close_if_due(n, report, reported_body);
         if (report.settled || w.time_s >= settings.max_time_s) {
+            window.report_partial(n, report, reported_body);
             report.steps = n;
             report.time_s = w.time_s;
             break;

@@ -53,6 +53,34 @@ struct SettlingReport {
     Vec2 left_position_m;            ///< [m] where
 };
 
+/// The least settled dynamic body at a step: the largest kinetic energy / (m g L).
+struct LeastSettled {
+    double ratio = 0.0;       ///< [-]
+    std::size_t body = 0;
+    double kinetic_j = 0.0;   ///< [J]
+};
+
+/// The criterion's window, in both dimensions: fed the least settled body at every step, it
+/// judges each whole window of window_s.
+class SettlingWindow {
+public:
+    SettlingWindow(const SettlingSettings& settings, double dt_s);
+    void note(const LeastSettled& now) {
+        if (now.ratio >= worst_.ratio) worst_ = now;
+    }
+    /// After step n (from 1): at a window's end, its least settled body and whether the window
+    /// met the criterion go into report and reported_body, and the next window starts.
+    void close_if_due(std::int64_t n, SettlingReport& report, std::size_t& reported_body);
+    /// Settling cut short (max_time) after n steps, before its first whole window: the least
+    /// settled body so far.
+    void report_partial(std::int64_t n, SettlingReport& report, std::size_t& reported_body) const;
+
+private:
+    double kinetic_ratio_;
+    std::int64_t steps_per_window_;
+    LeastSettled worst_;
+};
+
 /// Settles the world in place (table at rest), then restarts the clock at t = 0: time, step
 /// count and energy ledger are reset and the settled positions become the initial positions.
 SettlingReport settle(World& w, const SettlingSettings& settings);

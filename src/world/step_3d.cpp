@@ -139,7 +139,12 @@ void find_contacts(World3d& w) {
         const ContactPairSums3d& pair = s.contact_pairs[i];
         const auto [a, b] = s.pairs[pair.candidate];
         const auto& points = s.pair_points[pair.candidate];
-        const double share_kg = reduced_mass(w, a, b) / static_cast<double>(points.size());
+        // The dashpots take the pair's reduced mass in proportion to the points' stiffness shares
+        // (the 2-D per-length rule), so that every point has the requested damping ratio and a box
+        // landing flat keeps its restitution.
+        double shares = 0.0;
+        for (const ContactGeometry3d& g : points) shares += g.stiffness_share;
+        const double mass_kg = reduced_mass(w, a, b);
         ContactPoint3d* run = &w.contacts[pair.first_point];
         for (std::uint32_t k = 0; k < pair.points; ++k) {
             const ContactGeometry3d& g = points[k];
@@ -148,7 +153,9 @@ void find_contacts(World3d& w) {
             p.point_m = g.point_m;
             p.normal = g.normal;
             p.overlap_m = g.overlap_m;
-            p.dashpot_mass_kg = share_kg;
+            p.stiffness_share = g.stiffness_share;
+            p.dashpot_mass_kg = shares > 0.0 ? mass_kg * g.stiffness_share / shares
+                                             : mass_kg / static_cast<double>(points.size());
             run[k] = p;
         }
         carry_history(s.previous, run, pair.points, pair.first_point);
@@ -172,41 +179,40 @@ struct LawTotals {
     }
 };
 
-// What a pair's points share, taken once a pair: the dashpots (the pair's reduced mass over its
-// points) and the two bodies' motion. The relative velocity of b's material point at p to a's,
+// What a pair's points share, taken once a pair: the two bodies' motion (the dashpots and
+// stiffnesses are the points' own, by their stiffness shares). The relative velocity of b's material point at p to a's,
 //   v_b + w_b x (p - x_b) - v_a - w_a x (p - x_a) = base + (w_b - w_a) x (p - x_a),
 //   base = v_b - v_a + w_b x (x_a - x_b),
 // is then one cross product a point instead of two (the same to round-off; measured from a's
 // centroid, not the origin, so that no large coordinates cancel). A body that is not dynamic
 // moves without turning.
 struct PairMotion {
-    DashpotCoefficients dashpots;
     Vec3 base_velocity_m_s;  ///< [m/s]
     Vec3 turn_rate_rad_s;    ///< [rad/s] w_b - w_a
     Vec3 centroid_a_m;       ///< [m]
 };
 
-PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b, double dashpot_mass_kg) {
+PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
     const Vec3 omega_a =
         w.kinds[a] == BodyKind3d::dynamic ? w.scratch.angular_velocity_world_rad_s[a] : Vec3{};
     const Vec3 omega_b =
         w.kinds[b] == BodyKind3d::dynamic ? w.scratch.angular_velocity_world_rad_s[b] : Vec3{};
     const RigidBody3d& ba = w.bodies[a];
     const RigidBody3d& bb = w.bodies[b];
-    return {dashpot_coefficients(w.contact, dashpot_mass_kg),
-            bb.velocity_m_s - ba.velocity_m_s + cross(omega_b, ba.position_m - bb.position_m), omega_b - omega_a,
+    return {bb.velocity_m_s - ba.velocity_m_s + cross(omega_b, ba.position_m - bb.position_m), omega_b - omega_a,
             ba.position_m};
 }
 
 // The law at one point: its force into its own slot, its energy terms added to t.
 void contact_law(const World3d& w, const PairMotion& m, ContactPoint3d& c, LawTotals& t) {
-    const ContactParameters& p = w.contact;
+    const ContactParameters p = point_parameters(w.contact, c.stiffness_share);
+    const DashpotCoefficients k = dashpot_coefficients(p, c.dashpot_mass_kg);
     const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, c.point_m - m.centroid_a_m);
     const double normal_speed = dot(relative, c.normal);
     const Vec3 tangential = relative - normal_speed * c.normal;
-    const ContactForce f = linear_spring_dashpot(p, m.dashpots, {c.overlap_m, normal_speed, 0.0},
+    const ContactForce f = linear_spring_dashpot(p, k, {c.overlap_m, normal_speed, 0.0},
                                                  {0.0, c.normal_dashpot_n, 0.0}, w.dt_s);
-    const ShearForce3d s = coulomb_slider_3d(p.ks_N_m, m.dashpots.cs_N_s_m, p.mu * std::max(0.0, f.normal_n),
+    const ShearForce3d s = coulomb_slider_3d(p.ks_N_m, k.cs_N_s_m, p.mu * std::max(0.0, f.normal_n),
                                              tangential, carry_to_normal(c.shear, c.normal), w.dt_s);
     c.normal_dashpot_n = f.normal_dashpot_n;
     c.shear = {s.spring_n, s.dashpot_n};
@@ -225,7 +231,7 @@ LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
-    const PairMotion m = pair_motion(w, a, b, points[0].dashpot_mass_kg);
+    const PairMotion m = pair_motion(w, a, b);
     LawTotals t;
     Vec3 force_n, torque_n_m;
     for (std::uint32_t k = 0; k < pair.points; ++k) {

@@ -43,6 +43,11 @@ struct Bodies {
     std::vector<Vec2> world_vertices_m;         ///< [m] corners now
     std::vector<Vec2> local_normals;            ///< outward unit edge normals at rotation 0
     std::vector<Vec2> world_normals;            ///< outward unit edge normals now
+    /// [m] with rounding: per corner of a part, how far its rounded core's corner lies inside it
+    /// (rounded_corner_offset of world_normals at corner_offsets_rounding_m), made with the
+    /// normals each step so that the narrow phase reads them instead of making four per pair
+    std::vector<Vec2> world_corner_offsets_m;
+    double corner_offsets_rounding_m = 0.0;     ///< [m] the rounding they are for; 0: none valid
 
     // Parts: the convex pieces of a body (geometry/outline.hpp), what the broad and narrow phase
     // work on. A convex body is one part; part ids run in body order.

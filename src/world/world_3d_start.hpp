@@ -7,9 +7,12 @@
 // at t = 0: the narrow phase makes points only where the overlap is positive. So the bound is
 // taken from a probe: a copy of the world stepped three times under gravity with a step small
 // against every dynamic body's own period on one point (0.1 sqrt(m / kn)), after which every
-// touching pair carries its points. The springs are linear, so the bound does not depend on how
-// far they are compressed, only on which points exist; the probe's points are those of the
-// loaded model at rest. A model that starts with no body on another (a drop from a height) has
+// touching pair carries its points: the probe's bodies are grown by a touch tolerance (1e-9 of
+// their size, the start check's), so that faces placed touching overlap from its first step and
+// a tall stack's upper courses count as its lowest do. The springs are linear, so the bound does
+// not depend on how far they are compressed, only on which points exist. The probe sees every
+// touching face closed at once, so its bound is on the safe side of the loaded model's (a wall's
+// head and collar joints, some open at any moment once settled: docs/3d.md). A model that starts with no body on another (a drop from a height) has
 // no bound at the start, and the time step must then be given, as in 2-D.
 #include <optional>
 #include <vector>

@@ -96,6 +96,7 @@ void restore_bodies_and_contacts(World& w, const WorldState& s, bool dynamic_onl
             b.world_normals[k] = s.world_normals[k];
         }
     }
+    b.corner_offsets_rounding_m = 0.0;  // (made from the normals written over: the next step remakes them)
     b.position_at_rebuild_m = s.position_at_rebuild_m;
     b.rotation_at_rebuild_rad = s.rotation_at_rebuild_rad;
     w.velocities_staggered = s.velocities_staggered;

@@ -96,6 +96,7 @@ for b in summary["bodies"]:
     same(cells["slip_length_m"], math.hypot(*b["slip_m"]), f"{name} |slip|")
     same(cells["peak_slip_m"], b["peak_slip_m"], f"{name} peak slip")
     check(cells["overturned"].startswith("yes" if b["overturned"] else "no"), f"{name} overturned: {cells['overturned']!r}")
+    check(cells["outcome"].startswith(b["outcome"].replace("_", " ")), f"{name} outcome: {cells['outcome']!r}")
     ax, ay = b["peak_tilt_axis"][:2]
     same(cells["peak_tilt_axis_azimuth_deg"], math.degrees(math.atan2(ay, ax)) % 360, f"{name} axis azimuth")
     same(cells["lean_azimuth_deg"], math.degrees(math.atan2(-ax, ay)) % 360, f"{name} lean azimuth")

@@ -50,9 +50,10 @@ done
 
 # 2. The drum column by hand: a 16-sided prism of radius 0.3 m, 0.5 m high, 2700 kg/m^3 has
 # mass 2700 x 0.5 x 8 x 0.3^2 sin(2 pi / 16) = 372.0 kg; on the table (driven) its pair's M is
-# its own mass, shared by 16 points; C_n = 2 h_n sqrt(M / 16 x kn) with e = 0.3 -> h_n = 0.3579;
-# two equal drums share M = 186.0 kg; the overturning tilt atan(0.3 cos(pi / 16) / 0.25) =
-# 0.8665 rad; the static overlap 372.0 x 9.81 / (16 x 1e8) = 2.28e-6 m.
+# its own mass; its 16 corners turn by 2 pi / 16, each a share 1/4 of kn, W = 4; the pair's
+# dashpots C_n = 2 h_n sqrt(M kn W) in all with e = 0.3 -> h_n = 0.3579; two equal drums share
+# M = 186.0 kg; the overturning tilt atan(0.3 cos(pi / 16) / 0.25) = 0.8665 rad; the static
+# overlap 372.0 x 9.81 / (4 x 1e8) = 9.12e-6 m.
 out=$("$bin" check "$src/examples/3d/drum_column.toml" 2>&1)
 /usr/bin/python3 -c '
 import math, re, sys
@@ -62,8 +63,8 @@ h_n = 0.3579
 line = re.search(r"table / drum_1: 16 points, M = (\S+) kg; C_n = (\S+), C_s = (\S+) N s/m", text)
 assert line, text
 assert abs(float(line.group(1)) - m) < 5e-4 * m, (line.group(1), m)
-cn = 2 * h_n * math.sqrt(m / 16 * 1e8)
-cs = 2 * 0.3 * math.sqrt(m / 16 * 1e8)
+cn = 2 * h_n * math.sqrt(m * 1e8 * 4)
+cs = 2 * 0.3 * math.sqrt(m * 1e8 * 4)
 assert abs(float(line.group(2)) - cn) < 5e-4 * cn, (line.group(2), cn)
 assert abs(float(line.group(3)) - cs) < 5e-4 * cs, (line.group(3), cs)
 pair = re.search(r"drum_1 / drum_2: 16 points, M = (\S+) kg", text)
@@ -71,7 +72,7 @@ assert pair and abs(float(pair.group(1)) - m / 2) < 5e-4 * m, pair
 tilt = re.search(r"drum_1: overturns at a tilt of (\S+) rad", text)
 assert abs(float(tilt.group(1)) - math.atan(0.3 * math.cos(math.pi / 16) / 0.25)) < 1e-4, tilt.group(1)
 overlap = re.search(r"drum_1: .* static overlap (\S+) m on 16 corners", text)
-assert abs(float(overlap.group(1)) - m * 9.81 / (16 * 1e8)) < 5e-3 * m * 9.81 / (16 * 1e8), overlap.group(1)
+assert abs(float(overlap.group(1)) - m * 9.81 / (4 * 1e8)) < 5e-3 * m * 9.81 / (4 * 1e8), overlap.group(1)
 assert re.search(r"x: sine .* peak 3.432 m/s\^2 \(0.35 g\)", text)
 ' <<<"$out" || fail "the drum column's numbers"
 

@@ -16,7 +16,7 @@ expect_in() { grep -qF -- "$2" <<<"$1" || fail "expected '$2' in: $1"; }
 json() { /usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print($2)" "$1"; }
 column=$src/examples/3d/drum_column.toml
 
-# 1. The column rocking (peak tilt about 0.12 rad at 0.34 s): converged, dt halved exactly.
+# 1. The column rocking (peak tilt about 0.13 rad at 0.35 s): converged, dt halved exactly.
 study=$tmp/rocking
 out=$("$bin" converge "$column" --out "$study" -q --set simulation.duration=0.4 --set table_motion.x.amplitude=1.0 2>&1); rc=$?
 [ $rc -eq 0 ] || fail "converge exited $rc: $out"
@@ -39,7 +39,7 @@ assert dts[1] == dts[0] / 2 and dts[2] == dts[0] / 4, dts
 assert [b["name"] for b in d["bodies"]] == ["drum_1", "drum_2", "drum_3"], d["bodies"]
 for b in d["bodies"]:
     q = {x["quantity"]: x for x in b["dt"]}
-    assert set(q) == {"peak_rotation_rad", "peak_slip_m", "final_slip_m", "overturning_time_s", "overturned"}, set(q)
+    assert set(q) == {"peak_rotation_rad", "peak_slip_m", "final_slip_m", "overturning_time_s", "overturned", "outcome"}, set(q)
     # The tilt is judged, not hidden under its floor: it rocks.
     assert q["peak_rotation_rad"]["judged"] and min(q["peak_rotation_rad"]["values"]) > 0.05, q["peak_rotation_rad"]
     assert q["overturning_time_s"]["judged"] is False and q["overturned"]["values"] == ["no"] * 3
@@ -51,8 +51,9 @@ for label, k in (("dt", 0), ("dt_4", 2)):
     assert row["peak_rotation_rad"]["values"][k] == top["peak_tilt_rad"]
     assert row["peak_slip_m"]["values"][k] == top["peak_slip_m"]
     assert abs(row["final_slip_m"]["values"][k] - math.hypot(*top["slip_m"])) < 1e-15
+    assert row["outcome"]["values"][k] == top["outcome"], (row["outcome"], top["outcome"])
 rows = list(csv.DictReader(open(f"{study}/converge.csv")))
-assert len(rows) == 15 and all(r["body_verdict"] == "converged" for r in rows), len(rows)
+assert len(rows) == 18 and all(r["body_verdict"] == "converged" for r in rows), len(rows)
 PY
 
 # 2. A tolerance far below the changes (1e-7 with floors of 1e-9): not converged, by the same

@@ -84,13 +84,41 @@ assert mesh.GetNumberOfCells() == 60 and mesh.GetNumberOfPoints() == 104, (mesh.
 for name in ("body", "tilt_rad", "speed_m_s"):
     assert mesh.GetCellData().GetArray(name).GetNumberOfTuples() == 60, name
 PY
+# The contact frames ([output] vtk_contacts, on by default as in 2-D), read by VTK's reader: one
+# vertex a point, unit normals from a to b, the normal force the force's component along the
+# normal; listed in contacts.pvd as the bodies' frames are; none with vtk_contacts = false.
+/usr/bin/python3 - "$tmp/run/vtk" <<'PY' || fail "the 3-D contact frames"
+import sys, xml.etree.ElementTree as ET
+import vtk
+folder = sys.argv[1]
+listed = [d.get("file") for d in ET.parse(f"{folder}/contacts.pvd").getroot().findall(".//DataSet")]
+assert listed == [f"contacts_{k:06d}.vtp" for k in range(8)], listed
+reader = vtk.vtkXMLPolyDataReader()
+reader.SetFileName(f"{folder}/contacts_000007.vtp")
+reader.Update()
+mesh = reader.GetOutput()
+n = mesh.GetNumberOfPoints()
+assert n > 0 and mesh.GetNumberOfCells() == n, (n, mesh.GetNumberOfCells())
+data = mesh.GetPointData()
+for name in ("normal_force_n", "shear_force_n", "overlap_m", "sliding", "body_a", "body_b", "normal", "force_n"):
+    assert data.GetArray(name).GetNumberOfTuples() == n, name
+for k in range(n):
+    nx, ny, nz = data.GetArray("normal").GetTuple3(k)
+    assert abs(nx * nx + ny * ny + nz * nz - 1.0) < 1e-6, (nx, ny, nz)
+    fx, fy, fz = data.GetArray("force_n").GetTuple3(k)
+    assert abs(fx * nx + fy * ny + fz * nz - data.GetArray("normal_force_n").GetValue(k)) < 1e-6 * (1 + abs(fz)), k
+    assert data.GetArray("body_a").GetValue(k) < data.GetArray("body_b").GetValue(k)
+PY
+"$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/nocontacts" --set simulation.duration=0.05 --set output.vtk_contacts=false -q \
+    >/dev/null 2>&1 || fail "vtk_contacts = false refused"
+ls "$tmp/nocontacts/vtk/"contacts* >/dev/null 2>&1 && fail "vtk_contacts = false still writes contact frames"
 
 # The same bytes at 1 and 2 threads (world/parallel.hpp's rules carry through the run).
 "$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/run2" --set simulation.duration=0.3 -q -j 2 >/dev/null 2>&1 \
     || fail "the drum column at 2 threads failed"
 "$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/run1" --set simulation.duration=0.3 -q -j 1 >/dev/null 2>&1 \
     || fail "the drum column at 1 thread failed"
-for f in history.csv energy.csv vtk/bodies_000007.vtp; do
+for f in history.csv energy.csv vtk/bodies_000007.vtp vtk/contacts_000007.vtp; do
     cmp -s "$tmp/run1/$f" "$tmp/run2/$f" || fail "$f differs between 1 and 2 threads"
 done
 

@@ -104,3 +104,45 @@ def test_bad_arguments_are_refused():
     sim = blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=1)
     with pytest.raises(ValueError, match="n >= 0"):
         sim.step(-1)
+
+
+def test_a_settled_pier_starts_loaded_and_its_contacts_carry_its_weight():
+    # [settling] in 3-D (world/settling_3d.hpp): the pier laid exactly touching the slab settles
+    # before t = 0, so at t = 0 it sits m g / (4 kn) into the slab (each of its four corners
+    # carries a quarter of its weight) and starts from rest; contacts() then shows four points
+    # whose normal forces sum to its weight. Closed forms: statics; tolerances 1e-3 of the
+    # closure and of m g. (Without the cube, which would land on the pier while settling.)
+    text = DROP.split('[[bodies]]\nname = "cube"')[0].replace("[[bodies]]", "[settling]\n[[bodies]]", 1)
+    sim = blockdem.Simulation3d(blockdem.Scenario.from_toml(text), threads=1)
+    assert sim.t == 0.0 and sim.summary()["settling"]["steps"] > 0
+    m_g = 0.4 * 0.4 * 0.8 * 2000.0 * 9.81
+    closure = m_g / (4 * 1e7)
+    assert sim.positions[1, 2] == pytest.approx(0.4 - closure, abs=1e-3 * closure)
+    c = sim.contacts()
+    on_slab = c[(c["body_a"] == 0) & (c["body_b"] == 1)]
+    assert len(on_slab) == 4 and np.all(on_slab["nz"] > 0.999999)
+    assert on_slab["normal_force"].sum() == pytest.approx(m_g, rel=1e-3)
+    assert np.all(on_slab["overlap"] == pytest.approx(closure, rel=1e-3))
+    assert set(c.dtype.names) >= {"x", "y", "z", "nx", "ny", "nz", "fx", "fy", "fz", "shear_force", "sliding"}
+
+
+def test_history_holds_the_rows_history_csv_writes(tmp_path):
+    # history() (run/run_trace_3d.hpp) keeps the rows of history.csv and energy.csv in memory at
+    # full precision: the same times, bodies (all but the fixed slab) and values as the files
+    # (written to 9 significant digits: compared to 1e-8 relative).
+    sim = blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=1, out_dir=tmp_path / "run")
+    sim.step(5000)
+    sim.finish()
+    h = sim.history()
+    assert h["bodies"] == ["pier", "cube"] and list(h["body_ids"]) == [1, 2]
+    rows = list(csv.DictReader(open(tmp_path / "run" / "history.csv")))
+    assert len(h["t"]) == len(rows) == 11 and h["x"].shape == (11, 2)
+    for r, row in enumerate(rows):
+        assert h["t"][r] == pytest.approx(float(row["t_s"]), abs=1e-12)
+        for k, name in enumerate(h["bodies"]):
+            for key, column in (("z", "z_m"), ("qw", "qw"), ("tilt", "tilt_rad"), ("vz", "vz_m_s")):
+                assert h[key][r, k] == pytest.approx(float(row[f"{name}.{column}"]), rel=1e-8, abs=1e-12), (r, name, key)
+    energy = list(csv.DictReader(open(tmp_path / "run" / "energy.csv")))
+    np.testing.assert_allclose(h["energy"]["kinetic_J"], [float(e["kinetic_J"]) for e in energy], rtol=1e-8, atol=1e-12)
+    with pytest.raises(ValueError, match="keeps no history"):
+        blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), history=False).history()

@@ -216,6 +216,75 @@ TEST(RoundedContact, AxisCacheGivesTheFullTestsResultBitForBit) {
     EXPECT_GT(cached_steps, 20000);  // the cache did serve most steps
 }
 
+TEST(RoundedContact, CornerOffsetsGivenWithThePolygonGiveTheSameBits) {
+    // The narrow phase hands collide_rounded the corners' core offsets that the body geometry made
+    // once a step (world/step.cpp, PolygonView::corner_offsets_m): the contact, the cache and the
+    // reference must be those made without them, bit for bit, in face contacts (resting, tilted,
+    // opening within a gap), corner contacts and pairs apart; and the offsets given are read.
+    auto offsets_of = [](const Poly& p, double rounding_m) {
+        std::vector<Vec2> o;
+        const std::size_t n = p.n.size();
+        for (std::size_t i = 0; i < n; ++i) o.push_back(rounded_corner_offset(p.n[(i + n - 1) % n], p.n[i], rounding_m));
+        return o;
+    };
+    const Poly table = box(4.0, 0.2, {0.0, -0.1});
+    int touching = 0, apart = 0;
+    for (int k = 0; k < 400; ++k) {
+        const double angle = 0.8 * std::sin(0.05 * k);
+        // Its drawn lowest corner from 4 mm into the table to 0.8 mm above it (the arc of a
+        // tilted corner lies up to r (sqrt 2 - 1) = 4 mm above the drawn corner).
+        const double lowest_m = 0.25 * std::abs(std::sin(angle)) + 0.1 * std::cos(angle);
+        const Poly block = box(0.5, 0.2, {0.002 * k - 0.4, lowest_m - 0.004 + 0.0008 * (k % 7)}, angle);
+        const std::vector<Vec2> oa = offsets_of(table, r), ob = offsets_of(block, r);
+        PolygonView va = table.view(), vb = block.view();
+        va.corner_offsets_m = oa.data();
+        vb.corner_offsets_m = ob.data();
+        for (const double gap_m : {0.0, 0.003}) {
+            ContactManifold made, given;
+            AxisCache cache_made, cache_given;
+            const bool touch_made = collide_rounded(table.view(), block.view(), r, no_reference, made, cache_made, gap_m);
+            const bool touch_given = collide_rounded(va, vb, r, no_reference, given, cache_given, gap_m);
+            ASSERT_EQ(touch_made, touch_given) << k;
+            (touch_made ? touching : apart) += 1;
+            ASSERT_EQ(made.count, given.count) << k;
+            EXPECT_EQ(made.normal, given.normal) << k;
+            EXPECT_EQ(made.reference, given.reference) << k;
+            EXPECT_EQ(made.stiffness_scale, given.stiffness_scale) << k;
+            for (std::uint32_t i = 0; i < made.count; ++i) {
+                EXPECT_EQ(made.points[i].overlap_m, given.points[i].overlap_m) << k;
+                EXPECT_EQ(made.points[i].point_m, given.points[i].point_m) << k;
+                EXPECT_EQ(made.points[i].feature, given.points[i].feature) << k;
+            }
+            EXPECT_EQ(cache_made.separating, cache_given.separating) << k;
+            EXPECT_EQ(cache_made.incident, cache_given.incident) << k;
+            EXPECT_EQ(cache_made.others_max_separation_m, cache_given.others_max_separation_m) << k;
+            // The cached path (last step's reference kept) reads the given offsets too.
+            if (touch_made) {
+                ContactManifold again_made, again_given;
+                collide_rounded(table.view(), block.view(), r, made.reference, again_made, cache_made, gap_m);
+                collide_rounded(va, vb, r, given.reference, again_given, cache_given, gap_m);
+                ASSERT_EQ(again_made.count, again_given.count) << k;
+                for (std::uint32_t i = 0; i < again_made.count; ++i)
+                    EXPECT_EQ(again_made.points[i].overlap_m, again_given.points[i].overlap_m) << k;
+            }
+        }
+    }
+    EXPECT_GT(touching, 300);  // the poses cover both
+    EXPECT_GT(apart, 50);
+    // Offsets given are what the contact is made of: those of a rounding half as large, with r
+    // unchanged, move a resting face contact's overlap.
+    const Poly block = box(0.5, 0.2, {0.3, 0.1 - 1e-4});
+    const std::vector<Vec2> oa = offsets_of(table, 0.5 * r), ob = offsets_of(block, 0.5 * r);
+    PolygonView va = table.view(), vb = block.view();
+    va.corner_offsets_m = oa.data();
+    vb.corner_offsets_m = ob.data();
+    ContactManifold made, given;
+    AxisCache cache_made, cache_given;
+    ASSERT_TRUE(collide_rounded(table.view(), block.view(), r, no_reference, made, cache_made));
+    collide_rounded(va, vb, r, no_reference, given, cache_given);
+    EXPECT_TRUE(given.count == 0 || given.points[0].overlap_m != made.points[0].overlap_m);
+}
+
 TEST(RoundedContact, RefusesARoundingTooLargeForTheBody) {
     const Poly brick = box(0.4, 0.1, {0.0, 0.0});
     EXPECT_FALSE(rounding_problem(brick.v, brick.n, 0.1, 0.0).has_value());

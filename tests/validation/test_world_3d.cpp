@@ -127,12 +127,14 @@ TEST(World3d, ThreeDrumColumnStandsAtRestWithTheLedgerClosed) {
     EXPECT_LT(drift_m, 1e-12);
     EXPECT_LT(turn_rad, 1e-12);
     EXPECT_LT(speed_m_s, 1e-5);
-    // The top drum sinks by the three interfaces' static overlaps, 3, 2 and 1 drums' weight on 32 points.
+    // The top drum sinks by the three interfaces' static overlaps, 3, 2 and 1 drums' weight on 32
+    // points, each with kn times its corner's share: a 32-gon's corners turn by 2 pi / 32, so each
+    // weighs 1/8 and a face carries 4 kn in all (geometry/corner_share_3d.hpp).
     const double drum_weight_n = w.bodies[1].mass_kg * g;
-    const double sink_m = (3.0 + 2.0 + 1.0) * drum_weight_n / (32.0 * 1e8);
+    const double sink_m = (3.0 + 2.0 + 1.0) * drum_weight_n / (4.0 * 1e8);
     EXPECT_NEAR(start[3].z - w.bodies[3].position_m.z, sink_m, 1e-3 * sink_m);
     // The ledger closes to the scheme's second-order error of the settling (the column's highest
-    // mode has omega dt of about 0.3): measured 4.8e-4, and 1.2e-4 at dt / 2.
+    // mode has omega dt of about 0.1 with 4 kn a face): measured 6.0e-5 (4.8e-4 with a full kn a corner).
     EXPECT_LT(w.ledger.balance_error(), 1e-3);
     std::printf("drum column: 96 points, sideways drift %.2e m, turn %.2e rad, speed %.2e m/s, top sank %.4e m "
                 "(springs in series %.4e), energy balance error %.2e\n",
@@ -305,6 +307,14 @@ TEST(World3d, StableTimeStepBoundsTheCubesRowsAndTheWallsInstability) {
     ASSERT_EQ(w.contacts.size(), 4u);
     const double lambda = 4.0 * 1e6 * (std::sqrt(6.0) / 2.0) * (1.0 + std::sqrt(6.0)) / 100.0;
     EXPECT_NEAR(live_time_step_3d(w).dt_s, 2.0 / std::sqrt(lambda), 1e-12);
+    // Each point's springs are kn times its stiffness share (geometry/corner_share_3d.hpp): with
+    // every share halved the rows halve and the kn-only bound grows by sqrt 2; a share of 2 (the
+    // sharpest corner) shortens it by sqrt 2.
+    for (double share : {0.5, 2.0}) {
+        World3d shared = w;
+        for (ContactPoint3d& c : shared.contacts) c.stiffness_share = share;
+        EXPECT_NEAR(live_time_step_3d(shared).dt_s, 2.0 / std::sqrt(share * lambda), 1e-12);
+    }
 
     // The settled 288-box wall: measured unstable at 5e-5 s, stable at 2.5e-5 s (docs/3d.md). The
     // bound must lie below the unstable step, and a run at 0.9 of it closes its ledger.

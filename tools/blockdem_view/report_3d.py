@@ -9,6 +9,7 @@ import math
 
 import numpy as np
 
+from .animation_3d import write_animation_3d
 from .figures_3d import MAX_CURVES, make_run_figures_3d
 from .report import HERE, _json_script, _script, dygraphs_assets, energy_section, warnings_section
 from .report_data import MAX_PLOT_ROWS, _round, _stride
@@ -47,7 +48,11 @@ def _body_row(run, b):
     twist = float(run.twist_rad(name)[-1]) if run.has_series(name) else None
     overturned = (f"<td class='{'yes' if over else 'no'}' data-key='overturned'>{'yes' if over else 'no'}"
                   f" (limit {_g(b.get('overturning_angle_rad'))} rad)</td>")
-    return (f"<tr data-body='{html.escape(name)}'><td>{html.escape(name)}</td>{overturned}"
+    word = b.get("outcome", "")
+    when = b.get("outcome_time_s")
+    outcome = (f"<td class='{'yes' if b.get('failed') else 'no'}' data-key='outcome'>{html.escape(word.replace('_', ' '))}"
+               f"{f' at {_g(when)} s' if isinstance(when, (int, float)) else ''}</td>")
+    return (f"<tr data-body='{html.escape(name)}'><td>{html.escape(name)}</td>{outcome}{overturned}"
             f"{_angle_cell('peak_tilt_rad', b.get('peak_tilt_rad', 0.0))}{_cell('peak_tilt_time_s', _g(b.get('peak_tilt_time_s')))}"
             f"{_cell('peak_tilt_axis_azimuth_deg', _g(axis_az))}{_cell('lean_azimuth_deg', _g(lean_az))}"
             f"{_cell('final_tilt_rad', _g(final_tilt))}{_cell('slip_x_m', _g(slip[0]))}{_cell('slip_y_m', _g(slip[1]))}"
@@ -71,13 +76,17 @@ def outcome_section(run):
     dynamic = [b for b in s.get("bodies", []) if b.get("kind") == "dynamic"]
     if dynamic:
         over = sum(1 for b in dynamic if b.get("overturned"))
+        words = {}
+        for b in dynamic:
+            words[b.get("outcome", "?")] = words.get(b.get("outcome", "?"), 0) + 1
+        counted = ", ".join(f"{n} {w.replace('_', ' ')}" for w, n in sorted(words.items()))
         most = max(dynamic, key=lambda b: b.get("peak_tilt_rad", 0.0))
         far = max(dynamic, key=lambda b: b.get("peak_slip_m", 0.0))
-        parts.append(f"<p id='outcome-counts'>{len(dynamic)} dynamic bodies, <b>{over} overturned</b>; largest peak tilt "
+        parts.append(f"<p id='outcome-counts'>{len(dynamic)} dynamic bodies ({html.escape(counted)}), <b>{over} overturned</b>; largest peak tilt "
                      f"{most.get('peak_tilt_rad', 0.0):.4g} rad ({html.escape(most['name'])}), largest peak slip "
                      f"{far.get('peak_slip_m', 0.0):.4g} m ({html.escape(far['name'])}).</p>")
     shown = sorted(dynamic, key=lambda b: -b.get("peak_tilt_rad", 0.0)) if len(dynamic) > MAX_ROWS else dynamic
-    rows = ["<tr><th>body</th><th>overturned?</th><th>peak tilt</th><th>at t [s]</th><th>tilt axis azimuth [°]</th>"
+    rows = ["<tr><th>body</th><th>outcome</th><th>overturned?</th><th>peak tilt</th><th>at t [s]</th><th>tilt axis azimuth [°]</th>"
             "<th>leaned towards [°]</th><th>final tilt [rad]</th><th>slip x [m]</th><th>slip y [m]</th>"
             "<th>|slip| [m]</th><th>peak |slip| [m]</th><th>final twist [rad]</th></tr>"]
     rows += [_body_row(run, b) for b in shown[:MAX_ROWS]]
@@ -88,7 +97,8 @@ def outcome_section(run):
     parts.append("<p class='note'>Tilt: the angle between a body's initially vertical line and the vertical. Peak tilt "
                  "axis: the horizontal axis it turned about at the peak (summary.json <code>peak_tilt_axis</code>); its "
                  "azimuth and the direction the top leaned towards are measured from +x towards +y (counter-clockwise "
-                 "seen from above). Overturned: the tilt at the end exceeds atan(d / h) of the initial base (the limit "
+                 "seen from above). Outcome: the 2-D words and rule (docs/outputs.md, \"Outcomes\"), from the tilt on the body "
+                 "below, the slip of the resting face's lowest corner on it, and the support. Overturned: the tilt at the end exceeds atan(d / h) of the initial base (the limit "
                  "shown). Slip: the centroid's horizontal displacement minus the table's, at the end. Twist: the turn "
                  "about the vertical (twist-swing split of the quaternion in history.csv), counter-clockwise +. "
                  "docs/3d.md, \"Outputs\".</p>")
@@ -150,6 +160,13 @@ FIGURE_CAPTIONS = {
 
 def figures_section(run, written):
     parts = ["<h2 id='figures'>Figures</h2>"]
+    movie = written.get("animation")
+    if movie:
+        rel = html.escape(str(movie.relative_to(run.path)))
+        tag = (f"<video id='animation' controls loop src='{rel}' width='640'></video>" if movie.suffix == ".mp4"
+               else f"<img id='animation' alt='animation' src='{rel}' width='640'>")
+        parts.append(f"<figure id='figure-animation'>{tag}<figcaption>The run in the axonometric view, the bodies "
+                     f"posed from history.csv (<a href='{rel}'>{movie.suffix[1:].upper()}</a>).</figcaption></figure>")
     for stem in ("snapshots", "response", "table_motion", "energy"):
         paths = written.get(stem) or []
         png = next((p for p in paths if p.suffix == ".png"), None)
@@ -203,9 +220,11 @@ def build_report_3d(run, written):
 """
 
 
-def write_report_3d(run, formats=("png", "svg")):
-    """Makes the figures, then writes run.path/report.html; returns its path."""
+def write_report_3d(run, formats=("png", "svg"), animation=True):
+    """Makes the figures (and the animation file), then writes run.path/report.html; returns its path."""
     written = make_run_figures_3d(run, formats)
+    if animation:
+        written["animation"] = write_animation_3d(run, run.path / "figures")
     path = run.path / "report.html"
     path.write_text(build_report_3d(run, written), encoding="utf-8")
     return path

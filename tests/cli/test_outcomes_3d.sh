@@ -1,0 +1,169 @@
+#!/usr/bin/env bash
+# End-to-end: the outcome word of 3-D bodies (world/response_monitor_3d.hpp; the 2-D words and
+# rule of world/outcome.hpp), each scene chosen so that the closed form says what must happen:
+#   rocked:   a 0.4 x 1.0 x 1.6 m box under a one-sine pulse of 0.3 g, T = 1 s, along x: above
+#             the uplift at g b / h = 0.25 g and below Housner's overturning threshold, 0.309 g
+#             (README, 3-D rows: it rocks back from 0.10 rad); mu 0.8 > 0.3, so it does not slide;
+#   slid:     a squat 1.0 x 1.0 x 0.2 m block, mu 0.2, under a 0.5 g sine: it slides (a > mu g)
+#             (6 cm in 1 s) and cannot rock (that needs a > g b / h = 5 g);
+#   fell:     a 0.2 x 0.2 x 0.1 m block on a 0.3 m wide pier, mu 0.1, under a 0.6 g, 1 s sine: it
+#             slides off the pier's edge (0.05 m away; Newmark's slip is tens of cm a cycle) and
+#             drops 0.5 m onto the table, which never held it up;
+#   overturned: the slender block of test_run_3d.sh (0.2 x 0.2 x 1 m, 0.6 g one-sine pulse);
+# [outcomes] thresholds are read in 3-D (a large rocking_ratio makes the rocking box "stable").
+# Usage: test_outcomes_3d.sh BLOCKDEM
+set -u
+bin=$1
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+table='[[bodies]]
+name = "table"
+kind = "driven"
+shape = "box"
+size = [6.0, 6.0, 0.2]
+position = [0.0, 0.0, -0.1]'
+
+cat > "$tmp/rocked.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 2.0
+[contact]
+kn = 1e8
+ks = 1e8
+mu = 0.8
+e = 0.5
+$table
+[[bodies]]
+name = "box"
+shape = "box"
+size = [0.4, 1.0, 1.6]
+position = [0.0, 0.0, 0.8]
+density = 2000.0
+[table_motion.x]
+type = "one_sine"
+amplitude = 0.3
+unit = "g"
+period = 1.0
+TOML
+
+cat > "$tmp/slid.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 1.0
+[contact]
+kn = 1e8
+ks = 1e8
+mu = 0.2
+e = 0.5
+$table
+[[bodies]]
+name = "slab"
+shape = "box"
+size = [1.0, 1.0, 0.2]
+position = [0.0, 0.0, 0.1]
+density = 2000.0
+[table_motion.x]
+type = "sine"
+amplitude = 0.5
+unit = "g"
+period = 0.5
+TOML
+
+cat > "$tmp/fell.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 2.0
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.1
+e = 0.3
+$table
+[[bodies]]
+name = "pier"
+kind = "driven"
+shape = "box"
+size = [0.3, 0.3, 0.5]
+position = [0.0, 0.0, 0.25]
+[[bodies]]
+name = "block"
+shape = "box"
+size = [0.2, 0.2, 0.1]
+position = [0.0, 0.0, 0.55]
+density = 2000.0
+[table_motion.x]
+type = "sine"
+amplitude = 0.6
+unit = "g"
+period = 1.0
+TOML
+
+cat > "$tmp/overturned.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 3.0
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.8
+e = 0.5
+$table
+[[bodies]]
+name = "slender"
+shape = "box"
+size = [0.2, 0.2, 1.0]
+position = [0.0, 0.0, 0.5]
+density = 2000.0
+[table_motion.y]
+type = "one_sine"
+amplitude = 0.6
+unit = "g"
+period = 0.8
+TOML
+
+for scene in rocked slid fell overturned; do
+    "$bin" run "$tmp/$scene.toml" --out "$tmp/$scene" -q >"$tmp/$scene.txt" 2>&1 || fail "$scene failed: $(cat "$tmp/$scene.txt")"
+    /usr/bin/python3 - "$tmp/$scene/summary.json" "$scene" <<'PY' || fail "the $scene scene's summary"
+import json, sys
+s = json.load(open(sys.argv[1]))
+scene = sys.argv[2]
+body = [b for b in s["bodies"] if b["kind"] == "dynamic"][0]
+assert body["outcome"] == scene, (scene, body["outcome"], body)
+assert body["failed"] == (scene in ("fell", "overturned")), body
+t = body["outcome_time_s"]
+assert t is not None and 0.0 < t <= s["time_s"], body
+collapse = s["collapse"][0]
+assert collapse["group"] == "all" and collapse["blocks"] == 1, collapse
+assert collapse["fell"] == (1 if scene == "fell" else 0) and collapse["overturned"] == (1 if scene == "overturned" else 0), collapse
+if scene == "rocked":
+    assert body["peak_tilt_rad"] > 0.01 * body["overturning_angle_rad"] and not body["overturned"], body
+    assert body["supporters"] == ["table"], body["supporters"]
+if scene == "slid":
+    assert body["peak_base_slip_m"] > 0.02 and body["peak_tilt_rad"] < 0.01 * body["overturning_angle_rad"], body
+if scene == "fell":
+    assert body["supporters"] == ["pier"] and body["touches_a_supporter"] is False, body
+    assert body["final_drop_m"] > 0.4, body["final_drop_m"]
+    assert len(body["fell"]["position_m"]) == 3, body["fell"]
+if scene == "overturned":
+    assert t == body["overturning_time_s"], body
+PY
+done
+grep -qF "box: rocked (from t = " "$tmp/rocked.txt" || "$bin" run "$tmp/rocked.toml" --out "$tmp/rocked2" 2>&1 | grep -qF "box: rocked (from t = " \
+    || fail "the run's line does not name the outcome"
+
+# [outcomes] in 3-D: a rocking ratio above the box's peak tilt over its limit reads "stable".
+"$bin" run "$tmp/rocked.toml" --out "$tmp/ratio" -q --set outcomes.rocking_ratio=0.9 >/dev/null 2>&1 || fail "[outcomes] in 3-D refused"
+/usr/bin/python3 -c "
+import json, sys
+b = json.load(open('$tmp/ratio/summary.json'))['bodies'][1]
+assert b['outcome'] == 'stable', b['outcome']
+s = json.load(open('$tmp/ratio/summary.json'))
+assert s['outcome_thresholds']['rocking_ratio'] == 0.9
+" || fail "outcomes.rocking_ratio not used in 3-D"
+"$bin" run "$tmp/rocked.toml" --out "$tmp/bad" -q --set outcomes.rocking_rato=0.9 >"$tmp/bad.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "rocking_rato" "$tmp/bad.txt" || fail "an unknown [outcomes] key is not refused by name: $(cat "$tmp/bad.txt")"
+
+[[ $failures -eq 0 ]] && echo "all 3-D outcome checks passed"
+exit $((failures > 0))
