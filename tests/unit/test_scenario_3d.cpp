@@ -313,8 +313,8 @@ TEST(Scenario3d, BadInputNamesTheKeyAndTheBody) {
     EXPECT_NE(e6.find("body 'tet'"), std::string::npos) << e6;
     EXPECT_NE(e6.find("face 0"), std::string::npos) << e6;
     const std::string e7 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1, 1]\nposition = [0, 0, 0.5]\n"
-                                    "density = 1.0\n[output]\nreport = true\n");
-    EXPECT_NE(e7.find("output.report"), std::string::npos) << e7;
+                                    "density = 1.0\n[output]\nvtk_contact = true\n");
+    EXPECT_NE(e7.find("output.vtk_contact"), std::string::npos) << e7;  // (report and vtk_contacts are read in 3-D)
     EXPECT_THROW(scenario_dimension(toml::parse("dimension = 4"), "x.toml"), InputError);
     EXPECT_EQ(scenario_dimension(toml::parse("title = \"t\""), "x.toml"), 2);
 }
