@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "broad_phase/grid_broad_phase_3d.hpp"
+#include "world/parallel.hpp"
 
 namespace blockdem {
 namespace {
@@ -76,6 +77,28 @@ double extent_m(const Box& box) {
     return extent;
 }
 
+// A large scene's search is cut into this many chunks, whatever the thread count: each writes its
+// own list (world/parallel.hpp's rule 1), and the lists are joined and sorted, so the pairs do not
+// depend on how many threads ran. A small scene's is one chunk, run serially (world/parallel.hpp:
+// starting threads costs more than its whole search).
+constexpr std::size_t large_scene_chunks = 64;
+
+std::size_t search_chunks(std::size_t n) {
+    return static_cast<std::ptrdiff_t>(n) >= parallel_threshold ? large_scene_chunks : 1;
+}
+
+// Calls search(k) for every chunk k of a scene of n bodies, on all threads when it has several.
+template <class Search>
+void for_chunks(std::size_t n, Search search) {
+    const auto chunks = static_cast<std::ptrdiff_t>(search_chunks(n));
+    if (chunks == 1) {
+        search(0);
+        return;
+    }
+#pragma omp parallel for schedule(dynamic)
+    for (std::ptrdiff_t k = 0; k < chunks; ++k) search(static_cast<std::size_t>(k));
+}
+
 }  // namespace
 
 template <class Box>
@@ -86,6 +109,8 @@ void GridBroadPhaseOf<Box>::find_pairs(const std::vector<Box>& boxes, const std:
     pairs.clear();
     const std::uint32_t n = static_cast<std::uint32_t>(boxes.size());
     if (n < 2) return;
+    const std::size_t chunks = search_chunks(n);
+    if (chunk_pairs_.size() < chunks) chunk_pairs_.resize(chunks);
 
     // Cell size: twice the median body extent, so that a typical body spans at most 2 cells a side.
     extents_.resize(n);
@@ -148,28 +173,40 @@ void GridBroadPhaseOf<Box>::find_pairs(const std::vector<Box>& boxes, const std:
         fill_.assign(cell_start_.begin(), cell_start_.end() - 1);
         for (std::uint32_t i : small_) for_cells(grid, boxes[i], [&](std::size_t c) { cell_items_[fill_[c]++] = i; });
 
-        for (std::size_t c = 0; c < cells; ++c) {
-            for (std::uint32_t p = cell_start_[c]; p < cell_start_[c + 1]; ++p) {
-                for (std::uint32_t q = p + 1; q < cell_start_[c + 1]; ++q) {
-                    const std::uint32_t a = cell_items_[p];
-                    const std::uint32_t b = cell_items_[q];
-                    if ((is_static[a] && is_static[b]) || !overlaps(boxes[a], boxes[b])) continue;
-                    // Report only from the cell that holds the intersection's lowest corner.
-                    if (corner_cell(grid, boxes[a], boxes[b]) != c) continue;
-                    pairs.emplace_back(std::min(a, b), std::max(a, b));
+        for_chunks(n, [&](std::size_t k) {
+            std::vector<BodyPair>& found = chunk_pairs_[k];
+            for (std::size_t c = cells * k / chunks; c < cells * (k + 1) / chunks; ++c) {
+                for (std::uint32_t p = cell_start_[c]; p < cell_start_[c + 1]; ++p) {
+                    for (std::uint32_t q = p + 1; q < cell_start_[c + 1]; ++q) {
+                        const std::uint32_t a = cell_items_[p];
+                        const std::uint32_t b = cell_items_[q];
+                        if ((is_static[a] && is_static[b]) || !overlaps(boxes[a], boxes[b])) continue;
+                        // Report only from the cell that holds the intersection's lowest corner.
+                        if (corner_cell(grid, boxes[a], boxes[b]) != c) continue;
+                        found.emplace_back(std::min(a, b), std::max(a, b));
+                    }
                 }
             }
-        }
+        });
     }
 
-    for (std::uint32_t big : large_) {
-        for (std::uint32_t other = 0; other < n; ++other) {
-            if (other == big) continue;
-            const bool other_is_large = extents_[other] > 4.0 * grid.cell_m;
-            if (other_is_large && other < big) continue;  // large-large pairs once
-            if ((is_static[big] && is_static[other]) || !overlaps(boxes[big], boxes[other])) continue;
-            pairs.emplace_back(std::min(big, other), std::max(big, other));
-        }
+    if (!large_.empty()) {
+        for_chunks(n, [&](std::size_t k) {
+            std::vector<BodyPair>& found = chunk_pairs_[k];
+            for (std::uint32_t big : large_) {
+                for (std::uint32_t other = n * k / chunks; other < n * (k + 1) / chunks; ++other) {
+                    if (other == big) continue;
+                    const bool other_is_large = extents_[other] > 4.0 * grid.cell_m;
+                    if (other_is_large && other < big) continue;  // large-large pairs once
+                    if ((is_static[big] && is_static[other]) || !overlaps(boxes[big], boxes[other])) continue;
+                    found.emplace_back(std::min(big, other), std::max(big, other));
+                }
+            }
+        });
+    }
+    for (std::size_t k = 0; k < chunks; ++k) {
+        pairs.insert(pairs.end(), chunk_pairs_[k].begin(), chunk_pairs_[k].end());
+        chunk_pairs_[k].clear();
     }
     std::sort(pairs.begin(), pairs.end());
 }

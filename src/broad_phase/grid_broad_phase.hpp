@@ -47,9 +47,11 @@ public:
 
     /// Bytes held by the scratch arrays.
     std::size_t memory_bytes() const {
+        std::size_t chunk_bytes = 0;
+        for (const std::vector<BodyPair>& c : chunk_pairs_) chunk_bytes += c.capacity() * sizeof(BodyPair);
         return (cell_start_.capacity() + cell_items_.capacity() + large_.capacity() + small_.capacity() +
                 fill_.capacity()) * sizeof(std::uint32_t) +
-               (extents_.capacity() + sorted_extents_.capacity()) * sizeof(double);
+               (extents_.capacity() + sorted_extents_.capacity()) * sizeof(double) + chunk_bytes;
     }
 
 private:
@@ -61,6 +63,8 @@ private:
     std::vector<double> extents_;
     std::vector<double> sorted_extents_;
     std::vector<std::uint32_t> fill_;
+    /// The pairs found by each fixed chunk of the search (threads share the chunks out).
+    std::vector<std::vector<BodyPair>> chunk_pairs_;
 };
 
 extern template class GridBroadPhaseOf<Aabb>;
