@@ -5,8 +5,9 @@
 #
 #   scripts/fuzz.sh [--build-dir DIR] [--seconds N] [--smoke] [--no-build] [HARNESS...]
 #
-# --seconds N  time per harness (default 300); --smoke: 6 s per harness, fixed random seed and a
-# throw-away corpus (the check `make test` runs). HARNESS: names such as fuzz_scenario (default:
+# --seconds N  time per harness (default 300); --smoke: 2 s per harness, but never before every
+# seed and regression input has run once (libFuzzer replays them all before it looks at the
+# clock), fixed random seed and a throw-away corpus (the check `make test` runs). HARNESS: names such as fuzz_scenario (default:
 # all). The corpus grows in DIR/corpus/HARNESS, findings land in DIR/findings/, logs in DIR/logs/.
 # Exit status 1 when any harness found a crash, a sanitizer report, a leak, a timeout or ran out
 # of memory; a summary table (CPU seconds, executions, coverage, corpus, findings) is printed.
@@ -22,7 +23,7 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build_dir=$(realpath -m "$2"); shift 2 ;;
     --seconds) seconds="$2"; shift 2 ;;
-    --smoke) smoke=1; seconds=6; shift ;;
+    --smoke) smoke=1; seconds=2; shift ;;
     --no-build) build=0; shift ;;
     -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1" >&2; exit 2 ;;
@@ -138,6 +139,12 @@ for h in "${harnesses[@]}"; do
   found=$((after - before))
   [ "$smoke" = 1 ] && rm -rf "$corpus"
   printf '%-24s %8s %12s %8s %8s %8s %s\n' "$h" "$cpu" "${execs:-?}" "${cov:-?}" "${ft:-?}" "$size" "$found" >>"$summary"
+  # The smoke's short run must still have replayed every seed and regression input: libFuzzer
+  # prints INITED after the last one.
+  if [ "$smoke" = 1 ] && [ "$rc" -eq 0 ] && ! grep -q ' INITED ' "$log"; then
+    status=1
+    echo "fuzz.sh: $h stopped before it had replayed its seeds (no INITED in $log)" >&2
+  fi
   if [ "$rc" -ne 0 ] || [ "$found" -gt 0 ]; then
     status=1
     echo "fuzz.sh: $h FOUND A PROBLEM (exit $rc); log $log:" >&2
