@@ -5,16 +5,19 @@
 #
 #   scripts/fuzz.sh [--build-dir DIR] [--seconds N] [--smoke] [--no-build] [HARNESS...]
 #
-# --seconds N  time per harness (default 300); --smoke: 6 s per harness, fixed random seed and a
-# throw-away corpus (the check `make test` runs). HARNESS: names such as fuzz_scenario (default:
-# all). The corpus grows in DIR/corpus/HARNESS, findings land in DIR/findings/, logs in DIR/logs/.
+# --seconds N  time per harness (default 300); --smoke: 4 s for the scenario and override
+# harnesses (slow inputs: each builds a world), 1 s for the others (hundreds to thousands of
+# inputs a second), but never before every seed and regression input has run once (libFuzzer
+# replays them all before it looks at the clock), fixed random seed and a throw-away corpus (the
+# check `make test` runs). HARNESS: names such as fuzz_scenario (default: all). The corpus grows
+# in DIR/corpus/HARNESS, findings land in DIR/findings/, logs in DIR/logs/.
 # Exit status 1 when any harness found a crash, a sanitizer report, a leak, a timeout or ran out
 # of memory; a summary table (CPU seconds, executions, coverage, corpus, findings) is printed.
 set -euo pipefail
 
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 build_dir="$source_dir/build/fuzz"
-seconds=300
+seconds=
 smoke=0
 build=1
 harnesses=()
@@ -22,9 +25,9 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --build-dir) build_dir=$(realpath -m "$2"); shift 2 ;;
     --seconds) seconds="$2"; shift 2 ;;
-    --smoke) smoke=1; seconds=6; shift ;;
+    --smoke) smoke=1; shift ;;
     --no-build) build=0; shift ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "$0"; exit 0 ;;
     -*) echo "fuzz.sh: unknown option $1" >&2; exit 2 ;;
     *) harnesses+=("$1"); shift ;;
   esac
@@ -89,6 +92,14 @@ make_dict() {
   echo "$dict"
 }
 
+# Time of one harness: --seconds, else the smoke's share (see the top), else 300 s.
+run_seconds() {
+  if [ -n "$seconds" ]; then echo "$seconds"
+  elif [ "$smoke" = 0 ]; then echo 300
+  else case "$1" in fuzz_scenario|fuzz_overrides) echo 4 ;; *) echo 1 ;; esac
+  fi
+}
+
 max_len() {
   case "$1" in
     fuzz_scenario) echo 8192 ;;
@@ -123,7 +134,7 @@ for h in "${harnesses[@]}"; do
   export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}" UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
   TIMEFORMAT='%U %S'
   { time nice -n 19 "$exe" "$corpus" "$seeds" -dict="$(make_dict "$h")" \
-      -max_total_time="$seconds" -max_len="$(max_len "$h")" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+      -max_total_time="$(run_seconds "$h")" -max_len="$(max_len "$h")" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
       -artifact_prefix="$build_dir/findings/$h-" "${extra[@]}" >"$log" 2>&1; } 2>"$log.time"
   rc=$?
   set -e
@@ -138,6 +149,12 @@ for h in "${harnesses[@]}"; do
   found=$((after - before))
   [ "$smoke" = 1 ] && rm -rf "$corpus"
   printf '%-24s %8s %12s %8s %8s %8s %s\n' "$h" "$cpu" "${execs:-?}" "${cov:-?}" "${ft:-?}" "$size" "$found" >>"$summary"
+  # The smoke's short run must still have replayed every seed and regression input: libFuzzer
+  # prints INITED after the last one.
+  if [ "$smoke" = 1 ] && [ "$rc" -eq 0 ] && ! grep -qw INITED "$log"; then
+    status=1
+    echo "fuzz.sh: $h stopped before it had replayed its seeds (no INITED in $log)" >&2
+  fi
   if [ "$rc" -ne 0 ] || [ "$found" -gt 0 ]; then
     status=1
     echo "fuzz.sh: $h FOUND A PROBLEM (exit $rc); log $log:" >&2
