@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "dynamics/rigid_body_3d.hpp"
-#include "world/response_monitor_3d.hpp"
 #include "world/step_3d.hpp"
 
 namespace blockdem {
@@ -33,9 +32,7 @@ LeastSettled least_settled(const World3d& w) {
 
 // [rad] the angle body i turned since settling started.
 double turned_rad(const World3d& w, const std::vector<Quaternion>& start, std::size_t i) {
-    BodyResponse3d r;
-    r.start_orientation = start[i];
-    const Quaternion turn = turn_since_start(w, r, i);
+    const Quaternion turn = normalized(w.bodies[i].orientation * conjugate(start[i]));
     return 2.0 * std::atan2(std::sqrt(turn.x * turn.x + turn.y * turn.y + turn.z * turn.z), std::abs(turn.w));
 }
 
