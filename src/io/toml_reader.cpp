@@ -188,7 +188,8 @@ std::string TableReader::choice(const std::string& key, const std::vector<std::s
 bool TableReader::boolean_or(const std::string& key, bool fallback) {
     const toml::node* node = get(key);
     if (!node) return fallback;
-    if (auto v = node->value<bool>()) return *v;
+    // (value<bool>() would read an integer as a flag: vtk_contacts = 3 is a slip, not true.)
+    if (node->is_boolean()) return *node->value<bool>();
     fail(key, "must be true or false");
 }
 

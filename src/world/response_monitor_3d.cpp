@@ -177,8 +177,12 @@ void ResponseMonitor3d::follow_support(const World3d& w, std::size_t i, BodyResp
     const RigidBody3d& b = w.bodies[i];
     const std::vector<std::size_t>& corners = b.shape.faces[r.support_face];
     std::size_t pivot = corners[0];
+    double lowest_m = world_vertex(b, pivot).z;
     for (std::size_t k : corners)
-        if (world_vertex(b, k).z < world_vertex(b, pivot).z) pivot = k;
+        if (const double z = world_vertex(b, k).z; z < lowest_m) {
+            pivot = k;
+            lowest_m = z;
+        }
     const Vec3 pivot_start = r.start_position_m + rotate(r.start_orientation, b.shape.vertices_m[pivot]);
     const Vec3 under = r.supporters.empty() ? pivot_start + table_displacement(w.table, w.time_s)
                                             : carried_by(w, bodies_, r.supporters.front(), pivot_start);

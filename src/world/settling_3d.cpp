@@ -17,14 +17,14 @@ double size_m(const RigidBody3d& b) {
 }
 
 // The least settled dynamic body now (world/settling.hpp).
-LeastSettled least_settled(const World3d& w) {
+LeastSettled least_settled(const World3d& w, const std::vector<double>& sizes_m) {
     LeastSettled worst;
     for (std::size_t i = 0; i < w.bodies.size(); ++i) {
         if (w.kinds[i] != BodyKind3d::dynamic) continue;
         const RigidBody3d& b = w.bodies[i];
         const double kinetic_j = kinetic_energy(b);
         // Without gravity the scale is 0: any motion is then "not settled", rest is settled.
-        const double ratio = kinetic_j > 0.0 ? kinetic_j / (b.mass_kg * w.gravity_m_s2 * size_m(b)) : 0.0;
+        const double ratio = kinetic_j > 0.0 ? kinetic_j / (b.mass_kg * w.gravity_m_s2 * sizes_m[i]) : 0.0;
         if (ratio > worst.ratio) worst = {ratio, i, kinetic_j};
     }
     return worst;
@@ -68,16 +68,18 @@ SettlingReport settle_3d(World3d& w, const SettlingSettings& settings) {
     if (settings.friction == SettlingFriction::held) w.contact.mu = held_friction_mu;
     std::vector<Vec3> start_m;
     std::vector<Quaternion> start_q;
+    std::vector<double> sizes_m;  // [m] each body's L, taken once
     for (const RigidBody3d& b : w.bodies) {
         start_m.push_back(b.position_m);
         start_q.push_back(b.orientation);
+        sizes_m.push_back(size_m(b));
     }
     SettlingWindow window(settings, w.dt_s);
     SettlingReport report;
     std::size_t reported = w.bodies.size();
     for (std::int64_t n = 1;; ++n) {
         step_begin(w);
-        window.note(least_settled(w));
+        window.note(least_settled(w, sizes_m));
         step_end(w);
         window.close_if_due(n, report, reported);
         if (report.settled || w.time_s >= settings.max_time_s) {

@@ -164,6 +164,8 @@ assert s['outcome_thresholds']['rocking_ratio'] == 0.9
 " || fail "outcomes.rocking_ratio not used in 3-D"
 "$bin" run "$tmp/rocked.toml" --out "$tmp/bad" -q --set outcomes.rocking_rato=0.9 >"$tmp/bad.txt" 2>&1
 [[ $? -eq 2 ]] && grep -q "rocking_rato" "$tmp/bad.txt" || fail "an unknown [outcomes] key is not refused by name: $(cat "$tmp/bad.txt")"
+"$bin" run "$tmp/rocked.toml" --out "$tmp/bad2" -q --set outcomes.slip_ratio=-1 >"$tmp/bad2.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "outcomes.slip_ratio': must be >= 0" "$tmp/bad2.txt" || fail "a negative [outcomes] value: $(cat "$tmp/bad2.txt")"
 
 [[ $failures -eq 0 ]] && echo "all 3-D outcome checks passed"
 exit $((failures > 0))

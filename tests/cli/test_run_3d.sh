@@ -112,6 +112,10 @@ PY
 "$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/nocontacts" --set simulation.duration=0.05 --set output.vtk_contacts=false -q \
     >/dev/null 2>&1 || fail "vtk_contacts = false refused"
 ls "$tmp/nocontacts/vtk/"contacts* >/dev/null 2>&1 && fail "vtk_contacts = false still writes contact frames"
+"$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/badflag" --set simulation.duration=0.05 --set output.vtk_contacts=3 -q \
+    >"$tmp/badflag.log" 2>&1
+[[ $? -eq 2 ]] && grep -q "output.vtk_contacts': must be true or false" "$tmp/badflag.log" \
+    || fail "vtk_contacts = 3 is not refused by name: $(cat "$tmp/badflag.log")"
 
 # The same bytes at 1 and 2 threads (world/parallel.hpp's rules carry through the run).
 "$bin" run "$src/examples/3d/drum_column.toml" --out "$tmp/run2" --set simulation.duration=0.3 -q -j 2 >/dev/null 2>&1 \

@@ -107,6 +107,9 @@ rc=$?
 "$bin" run "$tmp/stack.toml" --out "$tmp/bad" -q --set settling.kinetic_rato=1e-6 >"$tmp/log" 2>&1
 rc=$?
 [[ $rc -eq 2 ]] && grep -q "kinetic_rato" "$tmp/log" || fail "an unknown [settling] key: exit $rc, $(cat "$tmp/log")"
+"$bin" run "$tmp/stack.toml" --out "$tmp/bad2" -q --set settling.kinetic_ratio=-1 >"$tmp/log" 2>&1
+rc=$?
+[[ $rc -eq 2 ]] && grep -q "settling.kinetic_ratio': must be > 0" "$tmp/log" || fail "a negative [settling] value: exit $rc, $(cat "$tmp/log")"
 
 [[ $failures -eq 0 ]] && echo "test_settling_3d: all passed"
 exit $((failures > 0))

@@ -11,13 +11,28 @@ WIDTH_IN = 6.4  # [in] frame width: at DPI, 1280 pixels (HD), with the figures' 
 DPI = 200  # [pixels per inch] of the animation frames
 
 
-def frame_rows(run, fps, max_frames):
-    """History rows of the frames: one per 1/fps of simulated time, thinned to max_frames
-    (a long record then plays faster than real time rather than making a huge file)."""
-    t = run.t_s
+def frame_times(t, fps, max_frames):
+    """[s] the frames' times over the history times t: one per 1/fps of simulated time, thinned
+    to max_frames (a long record then plays faster than real time rather than making a huge
+    file). Both dimensions."""
     count = int(min(max_frames, np.floor((t[-1] - t[0]) * fps) + 1))
-    times = np.linspace(t[0], t[-1], max(count, 2))
-    return sorted({run.row_at(x) for x in times})
+    return np.linspace(t[0], t[-1], max(count, 2))
+
+
+def frame_rows(run, fps, max_frames):
+    """History rows of the frames (frame_times, each on its nearest row)."""
+    return sorted({run.row_at(x) for x in frame_times(run.t_s, fps, max_frames)})
+
+
+def save_movie(movie, path, fmt, fps):
+    """Writes a matplotlib animation to path as MP4 (H.264 through ffmpeg) or GIF (Pillow)."""
+    if fmt == "mp4":
+        # H.264 in yuv420p (what every player plays) needs even pixel sizes: pad by one if odd.
+        writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=[
+            "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p"])
+    else:
+        writer = animation.PillowWriter(fps=fps)
+    movie.save(path, writer=writer, dpi=DPI)
 
 
 def write_animation(run, folder, fps=25, max_frames=750, fmt=None):
@@ -44,12 +59,6 @@ def write_animation(run, folder, fps=25, max_frames=750, fmt=None):
         movie = animation.FuncAnimation(fig, update, frames=rows, blit=False)
         path = folder / f"animation.{fmt}"
         folder.mkdir(parents=True, exist_ok=True)
-        if fmt == "mp4":
-            # H.264 in yuv420p (what every player plays) needs even pixel sizes: pad by one if odd.
-            writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=[
-                "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p"])
-        else:
-            writer = animation.PillowWriter(fps=fps)
-        movie.save(path, writer=writer, dpi=DPI)
+        save_movie(movie, path, fmt, fps)
         plt.close(fig)
         return path

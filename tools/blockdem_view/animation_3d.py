@@ -6,22 +6,17 @@ import shutil
 import numpy as np
 from matplotlib import animation
 
+from .animation import DPI, WIDTH_IN, frame_times, save_movie
 from .drawing_3d import VIEWS, draw_frame, screen_extent
 from .figures import STYLE, plt
-
-WIDTH_IN = 6.4  # [in] frame width: at DPI, 1280 pixels (HD), as the 2-D animation
-DPI = 200  # [pixels per inch]
 MAX_FACE_DRAWS = 3.0e5  # faces drawn over the whole animation: a large wall gets fewer frames
                         # (each frame redraws every face), so that a report stays a matter of seconds
 
 
-def frame_times(run, fps, max_frames):
-    """[s] one frame per 1/fps of simulated time, thinned to max_frames (a long record then plays
-    faster than real time), each on a history row."""
+def frame_times_on_rows(run, fps, max_frames):
+    """[s] the frames' times (animation.frame_times), each moved to its nearest history row."""
     t = run.t_s
-    count = int(min(max_frames, np.floor((t[-1] - t[0]) * fps) + 1))
-    wanted = np.linspace(t[0], t[-1], max(count, 2))
-    rows = sorted({int(np.argmin(np.abs(t - x))) for x in wanted})
+    rows = sorted({int(np.argmin(np.abs(t - x))) for x in frame_times(t, fps, max_frames)})
     return [float(t[r]) for r in rows]
 
 
@@ -32,7 +27,7 @@ def write_animation_3d(run, folder, fps=25, max_frames=750, fmt=None):
     fmt = fmt or ("mp4" if shutil.which("ffmpeg") else "gif")
     first = run.bodies_at(0.0)
     faces = max(1, len(first.offsets))
-    times = frame_times(run, fps, max(2, min(max_frames, int(MAX_FACE_DRAWS / faces))))
+    times = frame_times_on_rows(run, fps, max(2, min(max_frames, int(MAX_FACE_DRAWS / faces))))
     kinds = run.kinds_by_index()
     camera = VIEWS["axonometric"][0]
     # One view box for the whole run, from a sample of the frames (every body's reach).
@@ -63,11 +58,6 @@ def write_animation_3d(run, folder, fps=25, max_frames=750, fmt=None):
         movie = animation.FuncAnimation(fig, update, frames=times, blit=False)
         path = folder / f"animation.{fmt}"
         folder.mkdir(parents=True, exist_ok=True)
-        if fmt == "mp4":
-            writer = animation.FFMpegWriter(fps=fps, codec="libx264", extra_args=[
-                "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p"])
-        else:
-            writer = animation.PillowWriter(fps=fps)
-        movie.save(path, writer=writer, dpi=DPI)
+        save_movie(movie, path, fmt, fps)
         plt.close(fig)
         return path
