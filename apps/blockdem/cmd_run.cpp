@@ -14,6 +14,7 @@
 #include "apps/blockdem/commands.hpp"
 #include "apps/blockdem/stop_signal.hpp"
 #include "run/run_scenario.hpp"
+#include "world/settling.hpp"
 
 namespace blockdem::cli {
 namespace {
@@ -160,7 +161,13 @@ void add_run_command(CLI::App& app) {
             if (!*quiet) fmt::print(stderr, "blockdem: state saved to {}\n", file.string());
         };
         request.stop_requested = &install_stop_handlers();
-        const nlohmann::json summary = run_scenario(request);
+        nlohmann::json summary;
+        try {
+            summary = run_scenario(request);
+        } catch (const SettlingStopped& e) {  // nothing was written: say so, with the stop's exit status
+            fmt::print(stderr, "interrupted: {}\n", e.what());
+            throw ExitStatus{stop_exit_status()};
+        }
         const std::string folder = summary["run_folder"].get<std::string>();
         if (summary["status"] == "interrupted") {
             fmt::print(stderr, "interrupted at t = {:.4g} s of {:.4g} s: the results so far are in {}/ (summary.json "

@@ -368,12 +368,14 @@ int scenario_dimension(const toml::table& root, const std::string& file) {
     return static_cast<int>(*value);
 }
 
-LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle) {
-    return load_scenario_3d(load_toml_file(file), file, overrides, settle);
+LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle,
+                                  const std::atomic<bool>* stop_requested) {
+    return load_scenario_3d(load_toml_file(file), file, overrides, settle, stop_requested);
 }
 
 LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path& file,
-                                  const std::vector<std::string>& overrides, bool settle) {
+                                  const std::vector<std::string>& overrides, bool settle,
+                                  const std::atomic<bool>* stop_requested) {
     LoadedScenario3d s;
     s.file = file;
     s.root = std::move(root);
@@ -411,7 +413,11 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
                           e.what());
     }
     if (settle && s.settling) {
-        const SettlingReport report = settle_3d(s.world, *s.settling);
+        const SettlingReport report = settle_3d(s.world, *s.settling, stop_requested);
+        if (report.stopped)
+            throw SettlingStopped(fmt::format("stopped while the model settled, after {:.4g} s of settling ({} steps): "
+                                              "nothing was written; run again to settle and shake",
+                                              report.time_s, report.steps));
         // A run that started and could not settle failed (exit 3), it is not bad input.
         if (!report.settled) throw SimulationError(settling_failure(report, *s.settling));
         s.settled = settling_record(report, *s.settling);

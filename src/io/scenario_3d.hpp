@@ -3,6 +3,7 @@
 // with --set, validated key by key with the 2-D reader's machinery and words (io/toml_reader.hpp,
 // io/scenario_keys.hpp), and turned into a World3d whose time step is set and checked
 // (world/world_3d_start.hpp). Every problem is an InputError naming the file, key and body.
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -41,11 +42,13 @@ struct LoadedScenario3d {
 /// Loads, overrides, validates and builds. A model error (a non-convex or degenerate polyhedron,
 /// overlap at start, dt above the stable bound) is an InputError naming the file and the body.
 /// With settle and a [settling] table the world is settled (world/settling_3d.hpp) before t = 0;
-/// a settling that fails is a SimulationError (the run's exit 3, as in 2-D).
+/// a settling that fails is a SimulationError (the run's exit 3, as in 2-D), one that a stop
+/// request (stop_requested) ended is a SettlingStopped.
 LoadedScenario3d load_scenario_3d(const std::filesystem::path& file, const std::vector<std::string>& overrides,
-                                  bool settle = false);
+                                  bool settle = false, const std::atomic<bool>* stop_requested = nullptr);
 /// The same for a scenario already parsed; `file` names it and its folder resolves file names.
 LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path& file,
-                                  const std::vector<std::string>& overrides, bool settle = false);
+                                  const std::vector<std::string>& overrides, bool settle = false,
+                                  const std::atomic<bool>* stop_requested = nullptr);
 
 }  // namespace blockdem

@@ -249,7 +249,7 @@ struct ScenarioRun3d::Parts {
                                  fmt::format("a 3-D state: scenario {} is not 3-D", scenario.string()));
         }
         // (A restart takes the settled state from its file: settling again would be wasted time.)
-        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides, !restart);
+        loaded = load_scenario_3d(std::move(*root), scenario, request.overrides, !restart, request.stop_requested);
         World3d& w = loaded.world;
         monitor.emplace(w, loaded.outcomes);  // (at t = 0: a restart puts back its start poses and peaks below)
         least_widths = least_widths_m(w);

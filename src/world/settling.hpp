@@ -24,6 +24,7 @@
 // that cannot stand does not settle). The tilt does not grow while settling (tilt_rate applies
 // from t = 0).
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 #include "world/world.hpp"
@@ -32,6 +33,7 @@ namespace blockdem {
 
 struct SettlingReport {
     bool settled = false;            ///< the criterion was met before max_time_s
+    bool stopped = false;            ///< a stop request (Ctrl-C, SIGTERM) ended it first (3-D)
     double time_s = 0.0;             ///< [s] of simulated settling
     std::int64_t steps = 0;
     double kinetic_ratio = 0.0;      ///< [-] largest kinetic energy / (m g L) of any body over the last window
@@ -79,6 +81,12 @@ private:
     double kinetic_ratio_;
     std::int64_t steps_per_window_;
     LeastSettled worst_;
+};
+
+/// A stop request (Ctrl-C, SIGTERM) that came while the model settled, before anything was written.
+class SettlingStopped : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
 };
 
 /// Settles the world in place (table at rest), then restarts the clock at t = 0: time, step

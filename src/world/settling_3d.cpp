@@ -61,7 +61,7 @@ void note_motion(const World3d& w, const std::vector<Vec3>& start_m, const std::
 
 }  // namespace
 
-SettlingReport settle_3d(World3d& w, const SettlingSettings& settings) {
+SettlingReport settle_3d(World3d& w, const SettlingSettings& settings, const std::atomic<bool>* stop_requested) {
     const TableMotion3d shaking = w.table;
     const double mu = w.contact.mu;
     w.table = TableMotion3d{};
@@ -78,6 +78,12 @@ SettlingReport settle_3d(World3d& w, const SettlingSettings& settings) {
     SettlingReport report;
     std::size_t reported = w.bodies.size();
     for (std::int64_t n = 1;; ++n) {
+        if (stop_requested && stop_requested->load(std::memory_order_relaxed)) {
+            report.stopped = true;
+            report.steps = n - 1;
+            report.time_s = w.time_s;
+            break;
+        }
         step_begin(w);
         window.note(least_settled(w, sizes_m));
         step_end(w);

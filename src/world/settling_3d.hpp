@@ -7,12 +7,15 @@
 // rest where they settled, keeping their contacts and the contacts' shear history: the first step
 // is then the half step from an initial state, as for a scenario that did not settle (the
 // kinetic energy dropped is below kinetic_ratio x m g L of each body).
+#include <atomic>
+
 #include "world/settling.hpp"
 #include "world/world_3d.hpp"
 
 namespace blockdem {
 
-/// Settles the world in place (table at rest), then restarts the clock at t = 0.
-SettlingReport settle_3d(World3d& w, const SettlingSettings& settings);
+/// Settles the world in place (table at rest), then restarts the clock at t = 0. A stop request
+/// (stop_requested set, checked between steps) ends it with report.stopped.
+SettlingReport settle_3d(World3d& w, const SettlingSettings& settings, const std::atomic<bool>* stop_requested = nullptr);
 
 }  // namespace blockdem

@@ -5,7 +5,7 @@
 # 2 m g / (4 kn), the top by m g / (4 kn) (the closed form of springs in series; asserted to 1 %
 # of the smallest closure); summary.json reports the settling; a run saved at T/2 and restarted
 # is the same bytes as the straight run (the restart does not settle again, the state keeps the
-# record); settled once and saved at t = 0 (--save-state 0), the stack shaken from that state
+# record); Ctrl-C while settling stops with exit 130 and nothing written; settled once and saved at t = 0 (--save-state 0), the stack shaken from that state
 # ([simulation] initial_state, settle once, shake many times) is the same bytes as the run that
 # settled itself; a missing initial state is refused naming the file; a settling that cannot finish in max_time stops the run with exit 3 naming the body;
 # an unknown [settling] key is refused with exit 2 naming it.
@@ -110,6 +110,18 @@ rc=$?
 "$bin" run "$tmp/stack.toml" --out "$tmp/bad2" -q --set settling.kinetic_ratio=-1 >"$tmp/log" 2>&1
 rc=$?
 [[ $rc -eq 2 ]] && grep -q "settling.kinetic_ratio': must be > 0" "$tmp/log" || fail "a negative [settling] value: exit $rc, $(cat "$tmp/log")"
+
+# Ctrl-C while the model settles (a window far longer than the run allows): the run stops with the
+# stop's exit status (130), says nothing was written, and leaves no output folder behind.
+"$bin" run "$tmp/stack.toml" --out "$tmp/stopped" -q --set settling.window=1000 --set settling.max_time=10000 >"$tmp/log" 2>&1 &
+pid=$!
+sleep 1
+kill -INT $pid
+wait $pid
+rc=$?
+[[ $rc -eq 130 ]] && grep -q "stopped while the model settled" "$tmp/log" && grep -q "nothing was written" "$tmp/log" \
+    || fail "Ctrl-C while settling: exit $rc, $(cat "$tmp/log")"
+[[ -e "$tmp/stopped/summary.json" ]] && fail "a run stopped while settling left a summary"
 
 [[ $failures -eq 0 ]] && echo "test_settling_3d: all passed"
 exit $((failures > 0))
