@@ -577,12 +577,13 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     return model;
 }
 
-LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle) {
-    return load_scenario(load_toml_file(file), file, overrides, settle);
+LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides, bool settle,
+                             const std::atomic<bool>* stop_requested) {
+    return load_scenario(load_toml_file(file), file, overrides, settle, stop_requested);
 }
 
 LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file, const std::vector<std::string>& overrides,
-                             bool settle) {
+                             bool settle, const std::atomic<bool>* stop_requested) {
     LoadedScenario s;
     s.file = file;
     s.root = std::move(root);
@@ -604,7 +605,7 @@ LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file
     }
     if (!settle) s.model.settling.reset();
     try {
-        s.world = build_world(s.model);
+        s.world = build_world(s.model, stop_requested);
     } catch (const ModelError& e) {
         throw InputError({file.string(), "", 0, 0}, e.what());
     }

@@ -44,12 +44,13 @@ struct LoadedScenario {
 
 /// Loads, overrides, validates and builds. A model error (overlap at start, unstable dt) is
 /// reported as an InputError naming the file. settle = false skips [settling] (a restart
-/// takes the settled state from its state file).
+/// takes the settled state from its state file). A stop request while settling throws
+/// SettlingStopped (world/settling.hpp).
 LoadedScenario load_scenario(const std::filesystem::path& file, const std::vector<std::string>& overrides,
-                             bool settle = true);
+                             bool settle = true, const std::atomic<bool>* stop_requested = nullptr);
 /// The same for a scenario already parsed (the Python module's from_toml and from_dict): `file`
 /// names it in messages, and its folder resolves relative file names.
 LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file, const std::vector<std::string>& overrides,
-                             bool settle = true);
+                             bool settle = true, const std::atomic<bool>* stop_requested = nullptr);
 
 }  // namespace blockdem

@@ -414,10 +414,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     }
     if (settle && s.settling) {
         const SettlingReport report = settle_3d(s.world, *s.settling, stop_requested);
-        if (report.stopped)
-            throw SettlingStopped(fmt::format("stopped while the model settled, after {:.4g} s of settling ({} steps): "
-                                              "nothing was written; run again to settle and shake",
-                                              report.time_s, report.steps));
+        if (report.stopped) throw SettlingStopped(report);
         // A run that started and could not settle failed (exit 3), it is not bad input.
         if (!report.settled) throw SimulationError(settling_failure(report, *s.settling));
         s.settled = settling_record(report, *s.settling);

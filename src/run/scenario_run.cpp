@@ -321,7 +321,7 @@ ScenarioRun::ScenarioRun(const RunRequest& request) : parts_(std::make_unique<Pa
     std::error_code ec;
     p.in_place = p.start.restart && fs::exists(p.out_dir) && fs::equivalent(p.out_dir, p.start.run_folder, ec);
     // (A restart takes the settled state from its file: settling again would be wasted time.)
-    p.loaded = load_scenario(p.scenario, request.overrides, !p.start.restart);
+    p.loaded = load_scenario(p.scenario, request.overrides, !p.start.restart, request.stop_requested);
     p.start_from_restart_or_initial_state();
     p.open_outputs(false);
     begin();

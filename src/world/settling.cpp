@@ -118,7 +118,12 @@ void SettlingWindow::report_partial(std::int64_t n, SettlingReport& report, std:
     reported_body = worst_.body;
 }
 
-SettlingReport settle(World& w, const SettlingSettings& settings) {
+SettlingStopped::SettlingStopped(const SettlingReport& r)
+    : std::runtime_error(fmt::format("stopped while the model settled, after {:.4g} s of settling ({} steps): nothing was "
+                                     "written; run again to settle and shake",
+                                     r.time_s, r.steps)) {}
+
+SettlingReport settle(World& w, const SettlingSettings& settings, const std::atomic<bool>* stop_requested) {
     const HeldWhileSettling held = hold(w, settings);
     update_body_geometry(w);
     const std::vector<Vec2> start_m = w.bodies.position_m;
@@ -128,6 +133,12 @@ SettlingReport settle(World& w, const SettlingSettings& settings) {
     std::size_t reported_body = 0;
     const std::size_t left_before = w.domain.left.size();
     for (std::int64_t n = 1;; ++n) {
+        if (stop_requested && stop_requested->load(std::memory_order_relaxed)) {
+            report.stopped = true;
+            report.steps = n - 1;
+            report.time_s = w.time_s;
+            break;
+        }
         step_begin(w);
         if (w.domain.left.size() > left_before) {
             // Taken out of the step, it would read as still; the set-up has lost a body.

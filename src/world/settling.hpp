@@ -23,6 +23,7 @@
 // own law (settling.cpp, hold: why). "actual" keeps mu, so bodies may slide into place while settling (and a body
 // that cannot stand does not settle). The tilt does not grow while settling (tilt_rate applies
 // from t = 0).
+#include <atomic>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -33,7 +34,7 @@ namespace blockdem {
 
 struct SettlingReport {
     bool settled = false;            ///< the criterion was met before max_time_s
-    bool stopped = false;            ///< a stop request (Ctrl-C, SIGTERM) ended it first (3-D)
+    bool stopped = false;            ///< a stop request (Ctrl-C, SIGTERM) ended it first
     double time_s = 0.0;             ///< [s] of simulated settling
     std::int64_t steps = 0;
     double kinetic_ratio = 0.0;      ///< [-] largest kinetic energy / (m g L) of any body over the last window
@@ -84,14 +85,16 @@ private:
 };
 
 /// A stop request (Ctrl-C, SIGTERM) that came while the model settled, before anything was written.
+/// Its message says how far settling got and that nothing was written.
 class SettlingStopped : public std::runtime_error {
 public:
-    using std::runtime_error::runtime_error;
+    explicit SettlingStopped(const SettlingReport& stopped);
 };
 
 /// Settles the world in place (table at rest), then restarts the clock at t = 0: time, step
 /// count and energy ledger are reset and the settled positions become the initial positions.
-SettlingReport settle(World& w, const SettlingSettings& settings);
+/// A stop request (stop_requested set, checked between steps) ends it with report.stopped.
+SettlingReport settle(World& w, const SettlingSettings& settings, const std::atomic<bool>* stop_requested = nullptr);
 
 /// What the summary and check report of a settling stage.
 SettlingRecord settling_record(const SettlingReport& report, const SettlingSettings& settings);

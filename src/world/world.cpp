@@ -237,7 +237,7 @@ std::size_t memory_bytes(const World& w) {
     return total;
 }
 
-World build_world(const Model& model) {
+World build_world(const Model& model, const std::atomic<bool>* stop_requested) {
     World w;
     w.settings = model.settings;
     w.contact = model.contact;
@@ -266,7 +266,8 @@ World build_world(const Model& model) {
     init_model_domain(w);
     initialise_energy(w);
     if (model.settling) {
-        const SettlingReport settled = settle(w, *model.settling);
+        const SettlingReport settled = settle(w, *model.settling, stop_requested);
+        if (settled.stopped) throw SettlingStopped(settled);
         // A run that started and could not settle failed (exit 3), it is not bad input.
         if (!settled.settled) throw SimulationError(settling_failure(settled, *model.settling));
         w.settling_time_s = settled.time_s;

@@ -2,6 +2,7 @@
 // The world owns every array of a simulation: bodies as flat arrays indexed by body id, the
 // contact table, the broad phase and the energy ledger. step() in step.cpp advances it by one
 // time step; writers only read it.
+#include <atomic>
 #include <cstdint>
 #include <stdexcept>
 #include <optional>
@@ -200,7 +201,7 @@ std::size_t memory_bytes(const World& w);
 /// Throws ModelError naming the body when a body is invalid, bodies overlap at the start, or
 /// the time step is above the stable limit (bad input); throws SimulationError when an
 /// assembly does not settle (the run started and failed: exit status 3).
-World build_world(const Model& model);
+World build_world(const Model& model, const std::atomic<bool>* stop_requested = nullptr);
 
 /// A model that cannot be simulated (invalid body, overlap at start, unstable dt).
 class ModelError : public std::runtime_error {

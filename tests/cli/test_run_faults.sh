@@ -2,7 +2,7 @@
 # `blockdem run` when something goes wrong around the physics, and the exit codes of
 # docs/outputs.md: a write that fails (file-size limit), an --out folder that holds another run
 # (--force), a run that would not fit the machine (duration 1e300, memory, disk), a failed
-# settle, a bad command line, an internal error.
+# settle, a stop while settling, a bad command line, an internal error.
 # Usage: test_run_faults.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$(realpath "$1"); src=$(realpath "$2")
@@ -81,6 +81,24 @@ expect_in "$msg" "of memory (1e+13 VTK frames)"
 msg=$("$bin" run "$src/examples/assemblies/rock_slope.toml" --out "$tmp/unsettled" -q --set settling.max_time=0.001 2>&1); rc=$?
 [ $rc -eq 3 ] || fail "unsettled assembly: exit $rc, expected 3"
 expect_in "$msg" "the assembly did not settle within 0.001 s"
+#    130 and 143: Ctrl-C (SIGINT) or SIGTERM while the model settles (a window far longer than the run
+#    allows, so it would settle for hours): it stops at once, says nothing was written, and leaves
+#    no output folder behind.
+for sig in INT:130 TERM:143; do
+    code=${sig#*:}; sig=${sig%:*}
+    "$bin" run "$src/examples/assemblies/rock_slope.toml" --out "$tmp/stopped_$sig" -q \
+        --set settling.window=1000 --set settling.max_time=10000 >"$tmp/log" 2>&1 &
+    pid=$!
+    sleep 2
+    kill -$sig $pid
+    for _ in $(seq 50); do kill -0 $pid 2>/dev/null || break; sleep 0.1; done
+    kill -0 $pid 2>/dev/null && { fail "SIG$sig while settling: still running 5 s later"; kill -KILL $pid; }
+    wait $pid; rc=$?
+    [ $rc -eq "$code" ] || fail "SIG$sig while settling: exit $rc ($(cat "$tmp/log"))"
+    expect_in "$(cat "$tmp/log")" "stopped while the model settled"
+    expect_in "$(cat "$tmp/log")" "nothing was written"
+    [ ! -e "$tmp/stopped_$sig" ] || fail "a run stopped while settling left its output folder"
+done
 #    2: a bad command line (CLI11's own codes are 100+).
 msg=$("$bin" run "$sliding" --out "$tmp/x" --no-such-option 2>&1); rc=$?
 [ $rc -eq 2 ] || fail "unknown option: exit $rc, expected 2"
