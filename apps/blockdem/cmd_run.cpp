@@ -31,19 +31,20 @@ void print_progress(const RunProgress& p) {
 std::string outcome_words(const nlohmann::json& body) {
     const std::string outcome = body["outcome"].get<std::string>();
     const double t = body["outcome_time_s"].is_number() ? body["outcome_time_s"].get<double>() : -1.0;
+    const auto point = [](const nlohmann::json& position_m) {  // (x, y) in 2-D, (x, y, z) in 3-D
+        std::vector<std::string> at;
+        for (const auto& x : position_m) at.push_back(fmt::format("{:.3f}", x.get<double>()));
+        return fmt::format("({}) m", fmt::join(at, ", "));
+    };
     if (outcome == "fell") {
         const auto& fell = body["fell"];
-        std::vector<std::string> at;  // (x, y) in 2-D, (x, y, z) in 3-D
-        for (const auto& x : fell["position_m"]) at.push_back(fmt::format("{:.3f}", x.get<double>()));
-        return fmt::format("FELL from its supporters at t = {:.3f} s, {} ({}) m", t,
+        return fmt::format("FELL from its supporters at t = {:.3f} s, {} {}", t,
                            fell["came_to_rest"].get<bool>() ? "came to rest at" : "still moving at the end, at",
-                           fmt::join(at, ", "));
+                           point(fell["position_m"]));
     }
-    if (outcome == "left_model") {
-        const auto& left = body["left_model"];
-        return fmt::format("LEFT THE MODEL at t = {:.3f} s at ({:.3f}, {:.3f}) m (taken out of the run)", t,
-                           left["position_m"][0].get<double>(), left["position_m"][1].get<double>());
-    }
+    if (outcome == "left_model")
+        return fmt::format("LEFT THE MODEL at t = {:.3f} s at {} (taken out of the run)", t,
+                           point(body["left_model"]["position_m"]));
     if (outcome == "overturned") return fmt::format("OVERTURNED at t = {:.3f} s", t);
     if (outcome == "stable") return "stable";
     return fmt::format("{} (from t = {:.3f} s)", outcome == "rocked_and_slid" ? "rocked and slid" : outcome, t);

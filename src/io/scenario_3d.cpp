@@ -29,11 +29,27 @@ constexpr double pi = std::numbers::pi;
 // 128 about 0.4 s a body.
 constexpr std::int64_t max_sides = 128;
 
-SimulationSettings read_settings_3d(TableReader t) {
+// [simulation] domain = [[x_min, y_min, z_min], [x_max, y_max, z_max]] (m): the model's extent
+// (world/model_domain_3d.hpp); nullopt derives it.
+std::optional<Aabb3d> read_domain_3d(TableReader& t) {
+    if (!t.has("domain")) return std::nullopt;
+    const std::vector<Vec3> corners = vec3_list(t, "domain");
+    if (corners.size() != 2)
+        t.fail("domain", fmt::format("must be two corners [[x_min, y_min, z_min], [x_max, y_max, z_max]] in m, got {} "
+                                     "points", corners.size()));
+    const Aabb3d box{corners[0], corners[1]};
+    if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y && box.lo.z < box.hi.z))
+        t.fail("domain", fmt::format("the first corner must be below the second in x, y and z, got [[{:g}, {:g}, {:g}], "
+                                     "[{:g}, {:g}, {:g}]]", box.lo.x, box.lo.y, box.lo.z, box.hi.x, box.hi.y, box.hi.z));
+    return box;
+}
+
+SimulationSettings read_settings_3d(TableReader t, std::optional<Aabb3d>& domain) {
     SimulationSettings s;
     read_run_keys(t, s);
     s.gravity_m_s2 = t.number_or("gravity", s.gravity_m_s2);
     if (s.gravity_m_s2 < 0.0) t.fail("gravity", "is a magnitude [m/s^2] acting in -z and must be >= 0");
+    domain = read_domain_3d(t);
     t.allow({"initial_state"});  // a state file: read by load_scenario_3d (io, not physics)
     t.reject_unknown_keys();
     return s;
@@ -382,7 +398,8 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     apply_overrides_to_scenario(s.root, overrides, file);
     TableReader top(s.root, file.string(), "");
     top.number("dimension");
-    const SimulationSettings settings = read_settings_3d(top.table("simulation"));
+    std::optional<Aabb3d> domain;
+    const SimulationSettings settings = read_settings_3d(top.table("simulation"), domain);
     s.duration_s = settings.duration_s;
     s.output_interval_s = settings.output_interval_s;
     s.max_energy_error = settings.max_energy_error;
@@ -411,6 +428,11 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     } catch (const ModelError& e) {
         throw model_error(file, settings.dt_s && std::string(e.what()).starts_with("time step") ? "simulation.dt" : "",
                           e.what());
+    }
+    try {
+        init_model_domain_3d(s.world, domain);
+    } catch (const ModelError& e) {
+        throw model_error(file, "simulation.domain", e.what());
     }
     if (settle && s.settling) {
         const SettlingReport report = settle_3d(s.world, *s.settling, stop_requested);

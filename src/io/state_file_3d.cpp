@@ -155,6 +155,39 @@ StabilityWatch3d read_stability(const StateGroup& g) {
     return s;
 }
 
+// The bodies that left the model (the extent itself comes from the scenario again).
+void write_domain(StateGroup g, const ModelDomain3d& d) {
+    std::vector<std::uint32_t> body;
+    std::vector<double> time_s;
+    std::vector<Vec3> position_m, velocity_m_s;
+    for (const BodyLeftModel3d& l : d.left) {
+        body.push_back(l.body);
+        time_s.push_back(l.time_s);
+        position_m.push_back(l.position_m);
+        velocity_m_s.push_back(l.velocity_m_s);
+    }
+    g.write("left_body", body);
+    g.write("left_time_s", time_s);
+    g.write("left_position_m", flat(position_m), 3);
+    g.write("left_velocity_m_s", flat(velocity_m_s), 3);
+}
+
+void read_domain(const StateGroup& g, World3d& w) {
+    const std::vector<std::uint32_t> body = g.indices("left_body");
+    const auto left = static_cast<std::int64_t>(body.size());
+    const std::vector<double> time_s = g.doubles("left_time_s", left);
+    const std::vector<Vec3> position_m = vec3s(g, "left_position_m", body.size());
+    const std::vector<Vec3> velocity_m_s = vec3s(g, "left_velocity_m_s", body.size());
+    w.domain.left.clear();
+    for (std::size_t i = 0; i < body.size(); ++i) {
+        if (body[i] >= w.bodies.size())
+            throw InputError({g.file(), "", 0, 0}, fmt::format("not a readable blockdem state file: /domain3d/left_body: "
+                                                               "body {} of {}", body[i], w.bodies.size()));
+        w.domain.left.push_back({body[i], time_s[i], position_m[i], velocity_m_s[i]});
+    }
+    mark_taken_out(w);
+}
+
 }  // namespace
 
 void write_world_3d(StateGroup& root, const World3d& w) {
@@ -163,6 +196,7 @@ void write_world_3d(StateGroup& root, const World3d& w) {
     write_contacts(root.create_group("contacts3d"), w.contacts);
     write_ledger(root.create_group("energy"), w.ledger);
     write_stability(root.create_group("stability3d"), w.stability);
+    write_domain(root.create_group("domain3d"), w.domain);
 }
 
 namespace {
@@ -202,6 +236,7 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
     w.contacts = read_contacts(root.open_group("contacts3d"), w.bodies.size());
     w.ledger = read_ledger(root.open_group("energy"));
     w.stability = read_stability(root.open_group("stability3d"));
+    if (root.has("domain3d")) read_domain(root.open_group("domain3d"), w);  // (files of earlier versions lack it)
     w.time_s = file.time_s();
     w.steps = file.step_index();
 }

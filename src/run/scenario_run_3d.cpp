@@ -51,6 +51,25 @@ void add_outcome_3d(nlohmann::json& j, const World3d& w, std::size_t i, const Bo
     j["support_lost_time_s"] = time_or_null(record.support_lost_time_s);
     j["final_drop_m"] = record.drop_m;
     if (o.outcome == Outcome::fell) j["fell"] = {{"came_to_rest", o.at_rest}, {"position_m", vec(position_now_m(w, i))}};
+    if (o.outcome == Outcome::left_model)
+        for (const BodyLeftModel3d& l : w.domain.left)
+            if (l.body == i) j["left_model"] = {{"time_s", l.time_s}, {"position_m", vec(l.position_m)}};
+}
+
+// The model's extent and the bodies that left it (world/model_domain_3d.hpp), as 2-D's "domain".
+nlohmann::json domain_3d(const World3d& w) {
+    const ModelDomain3d& d = w.domain;
+    nlohmann::json left = nlohmann::json::array();
+    for (const BodyLeftModel3d& l : d.left)
+        left.push_back({{"body", w.bodies[l.body].name}, {"time_s", l.time_s}, {"position_m", vec(l.position_m)},
+                        {"velocity_m_s", vec(l.velocity_m_s)}});
+    const auto finite_or_null = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+    const auto corner = [&](Vec3 p) { return nlohmann::json::array({p.x, p.y, finite_or_null(p.z)}); };
+    return {{"from", d.from_scenario ? "scenario" : "derived"},
+            {"lo_m", corner(d.box_m.lo)},
+            {"hi_m", corner(d.box_m.hi)},
+            {"margin_m", d.margin_m},
+            {"left", left}};
 }
 
 // Every dynamic body's collapse (3-D bodies carry no assembly name yet: one group, "all").
@@ -65,6 +84,7 @@ nlohmann::json collapse_3d(const World3d& w, const std::vector<BodyRecord>& reco
           {"blocks", c.blocks},
           {"fell", c.fell},
           {"overturned", c.overturned},
+          {"left_model", c.left_model},
           {"displaced_mass_fraction", c.displaced_mass_fraction},
           {"first_to_go", c.first_to_go >= 0 ? nlohmann::json(w.bodies[static_cast<std::size_t>(c.first_to_go)].name) : nlohmann::json(nullptr)},
           {"first_to_go_time_s", time_or_null(c.first_to_go_time_s)}}});
@@ -129,6 +149,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
           {"shear_dashpot", e.shear_dashpot_j},
           {"friction", e.friction_j},
           {"table_work", e.table_work_j},
+          {"removed_with_bodies_leaving", e.removed_j},
           {"residual", e.residual_j()},
           {"balance_error_relative", e.balance_error()}}},
         // The 2-D "checks" object's time step part (io/run_checks.hpp), for the 3-D watch.
@@ -147,6 +168,7 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
     summary["collapse"] = collapse_3d(w, records, outcomes, monitor.thresholds());
     summary["outcome_thresholds"] = thresholds_3d(monitor.thresholds());
     if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;
+    summary["domain"] = domain_3d(w);
     if (!error.empty()) summary["error"] = error;
     return summary;
 }

@@ -258,6 +258,12 @@ std::vector<BodyRecord> ResponseMonitor3d::records(const World3d& w) const {
         o.final_position_m = {at.x, at.y};
         o.at_rest = r.at_rest;
     }
+    for (const BodyLeftModel3d& left : w.domain.left) {
+        BodyRecord& o = out[left.body];
+        o.left_model = true;
+        o.left_model_time_s = left.time_s;
+        o.left_model_position_m = {left.position_m.x, left.position_m.y};
+    }
     return out;
 }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "dynamics/central_difference.hpp"
 #include "world/model_domain.hpp"
@@ -145,7 +146,7 @@ SettlingReport settle(World& w, const SettlingSettings& settings, const std::ato
             const BodyLeftModel& left = w.domain.left[left_before];
             report.left_model = true;
             report.left_time_s = left.time_s;
-            report.left_position_m = left.position_m;
+            report.left_position_m = {left.position_m.x, left.position_m.y};
             report.settled = false;
             report.steps = n;
             report.time_s = w.time_s;
@@ -184,9 +185,9 @@ SettlingRecord settling_record(const SettlingReport& r, const SettlingSettings& 
 std::string settling_failure(const SettlingReport& r, const SettlingSettings& settings) {
     if (r.left_model)
         return fmt::format("the assembly did not settle: body '{}' left the model at t = {:.4g} s of settling, at "
-                           "({:.4g}, {:.4g}) m, so it had nothing to rest on (it moved {:.3g} m and turned {:.3g} rad "
-                           "since settling started); support the body or move it",
-                           r.body, r.left_time_s, r.left_position_m.x, r.left_position_m.y, r.body_moved_m,
+                           "({:.4g}) m, so it had nothing to rest on (it moved {:.3g} m and turned {:.3g} rad since "
+                           "settling started); support the body or move it",
+                           r.body, r.left_time_s, fmt::join(r.left_position_m, ", "), r.body_moved_m,
                            r.body_turned_rad);
     return fmt::format("the assembly did not settle within {:g} s: body '{}' still moves (kinetic energy {:.3g} J = "
                        "{:.3g} x m g L, L = {:.3g} m its size; asked for < {:.3g} over {:g} s); it moved {:.3g} m and "

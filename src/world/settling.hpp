@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "world/world.hpp"
 
@@ -53,7 +54,7 @@ struct SettlingReport {
     /// set-up lost it before any shaking, so settling failed; body names it.
     bool left_model = false;
     double left_time_s = 0.0;        ///< [s] of settling when it left
-    Vec2 left_position_m;            ///< [m] where
+    std::vector<double> left_position_m;  ///< [m] where: (x, y) in 2-D, (x, y, z) in 3-D
 };
 
 /// The least settled dynamic body at a step: the largest kinetic energy / (m g L).

@@ -85,6 +85,17 @@ SettlingReport settle_3d(World3d& w, const SettlingSettings& settings, const std
             break;
         }
         step_begin(w);
+        if (!w.domain.left.empty()) {
+            // Taken out of the step, it would read as still; the set-up has lost a body.
+            const BodyLeftModel3d& left = w.domain.left.front();
+            report.left_model = true;
+            report.left_time_s = left.time_s;
+            report.left_position_m = {left.position_m.x, left.position_m.y, left.position_m.z};
+            report.steps = n;
+            report.time_s = w.time_s;
+            reported = left.body;
+            break;
+        }
         window.note(least_settled(w, sizes_m));
         step_end(w);
         window.close_if_due(n, report, reported);

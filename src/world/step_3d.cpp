@@ -87,7 +87,7 @@ void pose_body(World3d& w, std::size_t i) {
     // The drift turned the body about this axis, so its world direction is the same at both ends.
     s.angular_velocity_world_rad_s[i] = rotate(b.orientation, b.angular_velocity_body_rad_s);
     s.boxes[i] = box;
-    s.is_static[i] = w.kinds[i] != BodyKind3d::dynamic;
+    s.is_static[i] = w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i);
 }
 
 PosedPolyhedron posed(const World3d& w, std::uint32_t i) {
@@ -111,6 +111,11 @@ double reduced_mass(const World3d& w, std::uint32_t a, std::uint32_t b) {
 void find_contacts(World3d& w) {
     WorldScratch3d& s = w.scratch;
     s.broad_phase.find_pairs(s.boxes, s.is_static, s.pairs);
+    // A body taken out is static, but a dynamic body could still reach its box: it is in no pair.
+    if (!w.domain.left.empty())
+        std::erase_if(s.pairs, [&](const BodyPair& p) {
+            return is_taken_out(w.domain, p.first) || is_taken_out(w.domain, p.second);
+        });
     if (s.pair_points.size() < s.pairs.size()) s.pair_points.resize(s.pairs.size());
     if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
     parallel_for(static_cast<std::ptrdiff_t>(s.pairs.size()), [&](std::ptrdiff_t k) {
@@ -276,12 +281,43 @@ void apply_contact_law(World3d& w, Vec3 table_step_m) {
 struct BodyTotals {
     double kinetic_j = 0.0;
     double gravitational_j = 0.0;
+    double leaving_j = 0.0;        ///< [J] kinetic + gravitational energy of the bodies leaving the model now
+    std::size_t leaving = 0;
     BodyTotals& operator+=(const BodyTotals& o) {
         kinetic_j += o.kinetic_j;
         gravitational_j += o.gravitational_j;
+        leaving_j += o.leaving_j;
+        leaving += o.leaving;
         return *this;
     }
 };
+
+// Step 6, the bodies: the kick, and each body's energy; a body leaving the model now (its box,
+// posed this step, wholly outside the extent) is kicked as the others and its energy booked as
+// leaving (world/model_domain_3d.hpp).
+BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
+    BodyTotals e;
+    if (w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i)) return e;
+    RigidBody3d& b = w.bodies[i];
+    update_velocity_3d(b, w.dt_s, starting);
+    const double kinetic_j = kinetic_energy(b);
+    const double gravitational_j = b.mass_kg * w.gravity_m_s2 * b.position_m.z;
+    if (is_outside(w.domain, w.scratch.boxes[i])) {
+        e.leaving_j = kinetic_j + gravitational_j;
+        e.leaving = 1;
+    } else {
+        e.kinetic_j = kinetic_j;
+        e.gravitational_j = gravitational_j;
+    }
+    return e;
+}
+
+// The bodies that left now, in body order (the list has one order at any thread count).
+void take_out_leaving_bodies(World3d& w) {
+    for (std::size_t i = 0; i < w.bodies.size(); ++i)
+        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i) && is_outside(w.domain, w.scratch.boxes[i]))
+            take_out(w, static_cast<std::uint32_t>(i));
+}
 
 }  // namespace
 
@@ -304,16 +340,13 @@ void step_begin(World3d& w) {
     apply_contact_law(w, 0.5 * (d_after - d_before));
 
     const bool starting = w.steps == 0;
-    const BodyTotals totals = deterministic_sum(n, [&](std::ptrdiff_t i) {
-        BodyTotals e;
-        if (w.kinds[i] != BodyKind3d::dynamic) return e;
-        RigidBody3d& b = w.bodies[i];
-        update_velocity_3d(b, dt, starting);
-        e.kinetic_j = kinetic_energy(b);
-        e.gravitational_j = b.mass_kg * w.gravity_m_s2 * b.position_m.z;
-        return e;
-    });
+    const BodyTotals totals =
+        deterministic_sum(n, [&](std::ptrdiff_t i) { return kick_body(w, static_cast<std::size_t>(i), starting); });
     EnergyLedger& ledger = w.ledger;
+    if (totals.leaving > 0) {
+        take_out_leaving_bodies(w);
+        ledger.removed_j += totals.leaving_j;
+    }
     ledger.kinetic_j = totals.kinetic_j;
     ledger.gravitational_j = totals.gravitational_j;
     if (starting) {
@@ -326,7 +359,7 @@ void step_begin(World3d& w) {
 void step_end(World3d& w) {
     const double dt = w.dt_s;
     parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
-        if (w.kinds[i] == BodyKind3d::dynamic) update_position_3d(w.bodies[i], dt);
+        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i)) update_position_3d(w.bodies[i], dt);
     });
     w.time_s += dt;
     ++w.steps;

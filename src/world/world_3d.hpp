@@ -15,6 +15,7 @@
 #include "laws/contact_parameters.hpp"
 #include "motion/table_motion.hpp"
 #include "world/energy_ledger.hpp"
+#include "world/model_domain_3d.hpp"
 
 namespace blockdem {
 
@@ -89,6 +90,7 @@ struct World3d {
     double output_interval_s = 1e-3;        ///< [s] between rows of history.csv and energy.csv
     EnergyLedger ledger;
     StabilityWatch3d stability;
+    ModelDomain3d domain;                   ///< the model's extent and the bodies that left it
     std::vector<ContactPoint3d> contacts;   ///< this step's points, sorted by key
     WorldScratch3d scratch;
 };

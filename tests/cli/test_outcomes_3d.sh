@@ -9,6 +9,7 @@
 #   fell:     a 0.2 x 0.2 x 0.1 m block on a 0.3 m wide pier, mu 0.1, under a 0.6 g, 1 s sine: it
 #             slides off the pier's edge (0.05 m away; Newmark's slip is tens of cm a cycle) and
 #             drops 0.5 m onto the table, which never held it up;
+#   left_model: the fell scene without the table (below);
 #   overturned: the slender block of test_run_3d.sh (0.2 x 0.2 x 1 m, 0.6 g one-sine pulse);
 # [outcomes] thresholds are read in 3-D (a large rocking_ratio makes the rocking box "stable").
 # Usage: test_outcomes_3d.sh BLOCKDEM
@@ -152,6 +153,69 @@ PY
 done
 grep -qF "box: rocked (from t = " "$tmp/rocked.txt" || "$bin" run "$tmp/rocked.toml" --out "$tmp/rocked2" 2>&1 | grep -qF "box: rocked (from t = " \
     || fail "the run's line does not name the outcome"
+
+# left_model: the fell scene without the table under the pier. Nothing can catch the block, so
+# once its box is wholly below the derived extent (the pier's bottom less one body diagonal,
+# 0.3 m) it is taken out: frozen, its energy moved to removed_with_bodies_leaving, the ledger
+# closed. Restarted from a state saved before it left and from one saved after, the run writes
+# the same bytes as the run straight through. A given domain that misses a body is refused.
+sed '/^name = "table"/,/^position = \[0.0, 0.0, -0.1\]/d; s/^\[\[bodies\]\]$/[[bodies]]/' "$tmp/fell.toml" \
+    | awk 'BEGIN { skip = 0 } /^\[\[bodies\]\]$/ { if (prev == "[[bodies]]") next } { print; prev = $0 }' >"$tmp/left.toml"
+grep -q '"table"' "$tmp/left.toml" && fail "the left scene still has the table"
+"$bin" run "$tmp/left.toml" --out "$tmp/left" --save-state 1.0,1.5 >"$tmp/left.txt" 2>&1 || fail "left failed: $(cat "$tmp/left.txt")"
+grep -qF "block: LEFT THE MODEL at t = " "$tmp/left.txt" || fail "the run's line does not say LEFT THE MODEL: $(cat "$tmp/left.txt")"
+/usr/bin/python3 - "$tmp/left/summary.json" "$tmp/left/history.csv" <<'PY' || fail "the left scene's summary"
+import csv, json, sys
+s = json.load(open(sys.argv[1]))
+body = [b for b in s["bodies"] if b["kind"] == "dynamic"][0]
+assert body["outcome"] == "left_model" and body["failed"], body
+d = s["domain"]
+assert d["from"] == "derived" and d["hi_m"][2] is None, d
+assert abs(d["margin_m"] - (0.2**2 + 0.2**2 + 0.1**2) ** 0.5) < 1e-12, d
+assert abs(d["lo_m"][2] - (0.0 - d["margin_m"])) < 1e-12, d        # the pier's bottom, less the margin
+(left,) = d["left"]
+assert left["body"] == "block" and body["left_model"]["time_s"] == left["time_s"] == body["outcome_time_s"], (left, body)
+assert left["position_m"][2] < d["lo_m"][2], left                   # below the extent (its box wholly so)
+assert left["velocity_m_s"][2] < 0.0, left
+e = s["energy_j"]
+g, m = 9.81, body["mass_kg"]
+v2 = sum(x * x for x in left["velocity_m_s"])
+removed = 0.5 * m * v2 + m * g * left["position_m"][2]               # + its turning energy, small
+assert abs(e["removed_with_bodies_leaving"] - removed) < 0.05 * abs(removed) + 1.0, (e, removed)
+assert e["kinetic"] == 0.0, e                                        # the only body is frozen
+assert s["collapse"][0]["left_model"] == 1, s["collapse"]
+assert e["balance_error_relative"] < 1e-3, e
+# frozen: the rows after it left keep its position
+rows = list(csv.DictReader(open(sys.argv[2])))
+after = [r for r in rows if float(r["t_s"]) > left["time_s"] + 1e-3]
+assert len(after) > 10 and len({r["block.z_m"] for r in after}) == 1, after[:2]
+assert abs(float(after[0]["block.z_m"]) - left["position_m"][2]) < 1e-12
+PY
+for state in 1.000000 1.500000; do
+    "$bin" run --restart "$tmp/left/state/t_${state}s.h5" --out "$tmp/left_$state" -q >"$tmp/log" 2>&1 \
+        || fail "restart at $state s failed: $(cat "$tmp/log")"
+    for f in history.csv energy.csv; do
+        cmp -s "$tmp/left/$f" "$tmp/left_$state/$f" || fail "restarted at $state s (the body left at 1.24 s): $f differs"
+    done
+done
+"$bin" run "$tmp/left.toml" --out "$tmp/bad_domain" -q --set 'simulation.domain=[[-1.0, -1.0, -1.0], [1.0, 1.0, 0.5]]' \
+    >"$tmp/bad.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "simulation.domain" "$tmp/bad.txt" && grep -q "does not contain body 'block'" "$tmp/bad.txt" \
+    || fail "a domain that misses a body: $(cat "$tmp/bad.txt")"
+"$bin" run "$tmp/left.toml" --out "$tmp/bad_domain2" -q --set 'simulation.domain=[[1.0, -1.0, -1.0], [-1.0, 1.0, 2.0]]' \
+    >"$tmp/bad.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "simulation.domain': the first corner must be below the second" "$tmp/bad.txt" \
+    || fail "an inverted domain: $(cat "$tmp/bad.txt")"
+#    A given domain: the block leaves as soon as its box is wholly below z = -0.2 m.
+"$bin" run "$tmp/left.toml" --out "$tmp/given" -q --set 'simulation.domain=[[-1.0, -1.0, -0.2], [1.0, 1.0, 1.0]]' \
+    >"$tmp/log" 2>&1 || fail "a given domain: $(cat "$tmp/log")"
+/usr/bin/python3 -c "
+import json
+s = json.load(open('$tmp/given/summary.json'))
+d = s['domain']
+assert d['from'] == 'scenario' and d['hi_m'] == [1.0, 1.0, 1.0] and d['margin_m'] == 0.0, d
+assert d['left'][0]['position_m'][2] < -0.2 and d['left'][0]['time_s'] < json.load(open('$tmp/left/summary.json'))['domain']['left'][0]['time_s']
+" || fail "a given domain is not the extent"
 
 # [outcomes] in 3-D: a rocking ratio above the box's peak tilt over its limit reads "stable".
 "$bin" run "$tmp/rocked.toml" --out "$tmp/ratio" -q --set outcomes.rocking_ratio=0.9 >/dev/null 2>&1 || fail "[outcomes] in 3-D refused"
