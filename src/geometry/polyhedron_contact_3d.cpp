@@ -208,11 +208,18 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     const auto& polygon = scratch.polygon;
     const auto& ref_corners = ref.shape->faces[ref_face];
     // The shares come from the whole clipped polygon, corners above the reference plane included,
-    // so that a corner crossing the plane changes no other corner's share.
+    // so that a corner crossing the plane changes no other corner's share. A corner that is still
+    // one of the incident face's own keeps that face's edges as its two sides, so on a box it turns
+    // by exactly a quarter.
     scratch.corners_m.resize(polygon.size());
     scratch.shares.resize(polygon.size());
-    for (std::size_t i = 0; i < polygon.size(); ++i) scratch.corners_m[i] = polygon[i].point_m;
-    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data());
+    scratch.quarter_turns.resize(polygon.size());
+    const bool incident_is_box = inc.box != nullptr && inc.box->is_box;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        scratch.corners_m[i] = polygon[i].point_m;
+        scratch.quarter_turns[i] = incident_is_box && feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+    }
+    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data(), scratch.quarter_turns.data());
     const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
     for (std::size_t i = 0; i < polygon.size(); ++i) {
         const ClipCorner3d& c = polygon[i];
