@@ -124,6 +124,7 @@ EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const
     const Vec3 hb = b.box->half_lengths_m;
     const double half_a[3] = {ha.x, ha.y, ha.z};
     const double half_b[3] = {hb.x, hb.y, hb.z};
+    constexpr std::uint32_t next_of[3] = {1, 2, 0};  // (k + 1) % 3 without a division
     for (std::uint32_t i = 0; i < 3; ++i) {
         for (std::uint32_t j = 0; j < 3; ++j) {
             Vec3 axis = cross(a.directions[i], b.directions[j]);
@@ -133,7 +134,7 @@ EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const
             axis = inverse_l * axis;
             // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index (the
             // directions are perpendicular unit vectors), and likewise for b: the dots already taken.
-            const std::uint32_t i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const std::uint32_t i1 = next_of[i], i2 = next_of[i1], j1 = next_of[j], j2 = next_of[j1];
             const double reach_a =
                 inverse_l * (half_a[i1] * std::abs(pair.dots[i2][j]) + half_a[i2] * std::abs(pair.dots[i1][j]));
             const double reach_b =

@@ -147,8 +147,11 @@ void find_contacts(World3d& w) {
         const double mass_kg = reduced_mass(w, a, b);
         ContactPoint3d* run = &w.contacts[pair.first_point];
         for (std::uint32_t k = 0; k < pair.points; ++k) {
+            // Written field by field into the table's slot (a default point built and copied in
+            // cost 0.3 M instructions a step on the 1000-brick wall); the history starts at zero
+            // and this step's state (force, sliding) is the law's to write.
             const ContactGeometry3d& g = points[k];
-            ContactPoint3d p;
+            ContactPoint3d& p = run[k];
             p.key = {a, b, g.feature_a, g.feature_b};
             p.point_m = g.point_m;
             p.normal = g.normal;
@@ -156,7 +159,10 @@ void find_contacts(World3d& w) {
             p.stiffness_share = g.stiffness_share;
             p.dashpot_mass_kg = shares > 0.0 ? mass_kg * g.stiffness_share / shares
                                              : mass_kg / static_cast<double>(points.size());
-            run[k] = p;
+            p.normal_dashpot_n = 0.0;
+            p.shear = {};
+            p.sliding = false;
+            p.force_n = {};
         }
         carry_history(s.previous, run, pair.points, pair.first_point);
     });
