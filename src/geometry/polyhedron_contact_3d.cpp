@@ -214,13 +214,15 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     // by exactly a quarter.
     scratch.corners_m.resize(polygon.size());
     scratch.shares.resize(polygon.size());
-    scratch.quarter_turns.resize(polygon.size());
     const bool incident_is_box = inc.box != nullptr && inc.box->is_box;
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-        scratch.corners_m[i] = polygon[i].point_m;
-        scratch.quarter_turns[i] = incident_is_box && feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+    for (std::size_t i = 0; i < polygon.size(); ++i) scratch.corners_m[i] = polygon[i].point_m;
+    if (incident_is_box) {
+        scratch.quarter_turns.resize(polygon.size());
+        for (std::size_t i = 0; i < polygon.size(); ++i)
+            scratch.quarter_turns[i] = feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
     }
-    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data(), scratch.quarter_turns.data());
+    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data(),
+                     incident_is_box ? scratch.quarter_turns.data() : nullptr);
     const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
     for (std::size_t i = 0; i < polygon.size(); ++i) {
         const ClipCorner3d& c = polygon[i];
@@ -324,15 +326,17 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
     if (!std::is_sorted(begin, out.end(), key_less)) std::sort(begin, out.end(), key_less);
     // A key twice (a reference corner found from both its sides, two corners at one place): the
-    // first stands for it, with both shares.
-    auto kept = begin;
-    for (auto it = begin; it != out.end(); ++it) {
-        if (it != begin && it->feature_a == kept->feature_a && it->feature_b == kept->feature_b)
-            kept->stiffness_share += it->stiffness_share;
-        else if (it != begin)
-            *++kept = *it;
+    // first stands for it, with both shares. A point is moved only once a duplicate went before it.
+    if (begin != out.end()) {
+        auto kept = begin;
+        for (auto it = begin + 1; it != out.end(); ++it) {
+            if (it->feature_a == kept->feature_a && it->feature_b == kept->feature_b)
+                kept->stiffness_share += it->stiffness_share;
+            else if (++kept != it)
+                *kept = *it;
+        }
+        out.erase(kept + 1, out.end());
     }
-    if (begin != out.end()) out.erase(kept + 1, out.end());
     return out.size() - first;
 }
 
