@@ -22,6 +22,9 @@
 // two ends turn by pi (weight 2 each), a point is the whole turn (4, shared by the corners there).
 // The shares depend only on where the corners are, not on which features made them, so a
 // polygon from any clip (the general one, a box face's rectangle clip) gets the same shares.
+// Cost (docs/performance.md, "Branch np3d"): a corner the caller knows to be a right angle (a box
+// face's own corner, kept by the clip) is given 1 without a turn; a turn near a quarter or near
+// zero, as a brick wall's cuts are, takes the arctangent's series rather than atan2.
 #include <cstddef>
 #include <cstdint>
 
