@@ -22,14 +22,23 @@
 // two ends turn by pi (weight 2 each), a point is the whole turn (4, shared by the corners there).
 // The shares depend only on where the corners are, not on which features made them, so a
 // polygon from any clip (the general one, a box face's rectangle clip) gets the same shares.
+// Cost (docs/performance.md, "Branch np3d"): a corner the caller knows to be a right angle (a box
+// face's own corner, kept by the clip) is given 1 without a turn; a turn near a quarter or near
+// zero, as a brick wall's cuts are, takes the arctangent's series rather than atan2.
 #include <cstddef>
+#include <cstdint>
 
 #include "geometry/vec3.hpp"
 
 namespace blockdem {
 
 /// shares[i] = corner i's share of the contact stiffness (its turn over pi / 2), for the count
-/// corners of a plane convex polygon in order round it (either way round).
-void corner_shares_3d(const Vec3* corners_m, std::size_t count, double* shares);
+/// corners of a plane convex polygon in order round it (either way round). quarter_turns, when
+/// given, marks (nonzero) the corners whose turn the caller knows to be a right angle: a box face's
+/// own corner that the clip kept, both its sides lying along the face's edges. Such a corner
+/// weighs exactly 1, not 1 to round-off, and costs no turn (when no side of the polygon is short;
+/// otherwise every corner is measured, as the groups need).
+void corner_shares_3d(const Vec3* corners_m, std::size_t count, double* shares,
+                      const std::uint8_t* quarter_turns = nullptr);
 
 }  // namespace blockdem

@@ -124,6 +124,7 @@ EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const
     const Vec3 hb = b.box->half_lengths_m;
     const double half_a[3] = {ha.x, ha.y, ha.z};
     const double half_b[3] = {hb.x, hb.y, hb.z};
+    constexpr std::uint32_t next_of[3] = {1, 2, 0};  // (k + 1) % 3 without a division
     for (std::uint32_t i = 0; i < 3; ++i) {
         for (std::uint32_t j = 0; j < 3; ++j) {
             Vec3 axis = cross(a.directions[i], b.directions[j]);
@@ -133,7 +134,7 @@ EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const
             axis = inverse_l * axis;
             // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index (the
             // directions are perpendicular unit vectors), and likewise for b: the dots already taken.
-            const std::uint32_t i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const std::uint32_t i1 = next_of[i], i2 = next_of[i1], j1 = next_of[j], j2 = next_of[j1];
             const double reach_a =
                 inverse_l * (half_a[i1] * std::abs(pair.dots[i2][j]) + half_a[i2] * std::abs(pair.dots[i1][j]));
             const double reach_b =
@@ -208,11 +209,20 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     const auto& polygon = scratch.polygon;
     const auto& ref_corners = ref.shape->faces[ref_face];
     // The shares come from the whole clipped polygon, corners above the reference plane included,
-    // so that a corner crossing the plane changes no other corner's share.
+    // so that a corner crossing the plane changes no other corner's share. A corner that is still
+    // one of the incident face's own keeps that face's edges as its two sides, so on a box it turns
+    // by exactly a quarter.
     scratch.corners_m.resize(polygon.size());
     scratch.shares.resize(polygon.size());
+    const bool incident_is_box = inc.box != nullptr && inc.box->is_box;
     for (std::size_t i = 0; i < polygon.size(); ++i) scratch.corners_m[i] = polygon[i].point_m;
-    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data());
+    if (incident_is_box) {
+        scratch.quarter_turns.resize(polygon.size());
+        for (std::size_t i = 0; i < polygon.size(); ++i)
+            scratch.quarter_turns[i] = feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+    }
+    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data(),
+                     incident_is_box ? scratch.quarter_turns.data() : nullptr);
     const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
     for (std::size_t i = 0; i < polygon.size(); ++i) {
         const ClipCorner3d& c = polygon[i];
@@ -316,15 +326,17 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
     if (!std::is_sorted(begin, out.end(), key_less)) std::sort(begin, out.end(), key_less);
     // A key twice (a reference corner found from both its sides, two corners at one place): the
-    // first stands for it, with both shares.
-    auto kept = begin;
-    for (auto it = begin; it != out.end(); ++it) {
-        if (it != begin && it->feature_a == kept->feature_a && it->feature_b == kept->feature_b)
-            kept->stiffness_share += it->stiffness_share;
-        else if (it != begin)
-            *++kept = *it;
+    // first stands for it, with both shares. A point is moved only once a duplicate went before it.
+    if (begin != out.end()) {
+        auto kept = begin;
+        for (auto it = begin + 1; it != out.end(); ++it) {
+            if (it->feature_a == kept->feature_a && it->feature_b == kept->feature_b)
+                kept->stiffness_share += it->stiffness_share;
+            else if (++kept != it)
+                *kept = *it;
+        }
+        out.erase(kept + 1, out.end());
     }
-    if (begin != out.end()) out.erase(kept + 1, out.end());
     return out.size() - first;
 }
 

@@ -81,6 +81,7 @@ struct ContactScratch3d {
     std::vector<double> heights_m2;  ///< [m^2] the corners' heights over a side plane, times the side's length
     std::vector<Vec3> corners_m;     ///< [m] the clipped polygon's corners, for their shares
     std::vector<double> shares;      ///< [-] their stiffness shares
+    std::vector<std::uint8_t> quarter_turns;  ///< 1 where a corner is a box face's own (a right angle)
 };
 
 /// The general face clip: inc's face inc_face clipped by the side planes of ref's face ref_face

@@ -98,6 +98,24 @@ inline ContactHistory history_of(const ContactForce& f) {
     f.shear_dashpot_work_j = -0.5 * (previous.shear_dashpot_n + f.shear_dashpot_n) * tangential_speed_m_s * dt_s;
 }
 
+/// The normal half of the law: spring and dashpot, no tension unless termination = zero_overlap.
+/// Sets f's normal force, its dashpot part and the dashpot's work over the last interval
+/// (the trapezoid: see linear_spring_dashpot). The 3-D law takes this half alone, with its own
+/// vector slider (laws/coulomb_slider_3d.hpp), so that no scalar shear is worked out for nothing.
+[[gnu::always_inline]] inline void normal_spring_dashpot(double kn_N_m, double cn_N_s_m, ContactTermination termination,
+                                                         double overlap_m, double normal_speed_m_s,
+                                                         double previous_normal_dashpot_n, double dt_s,
+                                                         ContactForce& f) {
+    const double spring_n = kn_N_m * overlap_m;
+    const double spring_and_dashpot_n = spring_n - cn_N_s_m * normal_speed_m_s;
+    // No tension: the dashpot may only reduce the compressive force to zero. Zero overlap: the
+    // dashpot acts in full while the overlap lasts, as in the paper's derivation of h_n.
+    f.normal_n = termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
+                                                                 : std::max(0.0, spring_and_dashpot_n);
+    f.normal_dashpot_n = f.normal_n - spring_n;
+    f.normal_dashpot_work_j = -0.5 * (previous_normal_dashpot_n + f.normal_dashpot_n) * normal_speed_m_s * dt_s;
+}
+
 /// Advances one contact point by dt from its history (zero for a new contact). Returns the
 /// forces on b and the dissipation over the interval that ends now.
 ///
@@ -112,15 +130,8 @@ inline ContactHistory history_of(const ContactForce& f) {
 inline ContactForce linear_spring_dashpot(const ContactParameters& p, const DashpotCoefficients& c,
                                           const ContactKinematics& k, const ContactHistory& previous, double dt_s) {
     ContactForce f;
-    const double spring_n = p.kn_N_m * k.overlap_m;
-    const double spring_and_dashpot_n = spring_n - c.cn_N_s_m * k.normal_speed_m_s;
-    // No tension: the dashpot may only reduce the compressive force to zero. Zero overlap: the
-    // dashpot acts in full while the overlap lasts, as in the paper's derivation of h_n.
-    f.normal_n = p.termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
-                                                                    : std::max(0.0, spring_and_dashpot_n);
-    f.normal_dashpot_n = f.normal_n - spring_n;
-    f.normal_dashpot_work_j = -0.5 * (previous.normal_dashpot_n + f.normal_dashpot_n) * k.normal_speed_m_s * dt_s;
-
+    normal_spring_dashpot(p.kn_N_m, c.cn_N_s_m, p.termination, k.overlap_m, k.normal_speed_m_s,
+                          previous.normal_dashpot_n, dt_s, f);
     coulomb_slider(p.ks_N_m, c.cs_N_s_m, p.mu * std::max(0.0, f.normal_n), k.tangential_speed_m_s, previous, dt_s, f);
     return f;
 }

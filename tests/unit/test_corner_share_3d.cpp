@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
 #include "contact/contact_table_3d.hpp"
+#include "geometry/box_frame_3d.hpp"
 #include "geometry/corner_share_3d.hpp"
 #include "geometry/polyhedron_contact_3d.hpp"
 
@@ -86,6 +88,50 @@ TEST(CornerShare3d, CoincidentCornersShareTheirTurnAndDegenerateShapesKeepTheSum
     for (double x : shares_of({{1, 2, 3}, {1, 2, 3}})) EXPECT_NEAR(x, 2.0, 0.0);
 }
 
+TEST(CornerShare3d, TurnsNearAQuarterOrNearStraightAgreeWithTheArctangentToRoundOff) {
+    // The turn at corner 1 of the triangle (0,0,0), (1,0,0), (1,0,0) + (cos t, sin t, 0) is t. Near a
+    // quarter and near zero the shares take the arctangent's series; elsewhere atan2. Either way the
+    // share is atan2(|a x b|, a . b) / (pi / 2) of the same sides to within two units in the last
+    // place (4.5e-16 for shares below 2), over ratios from 1e-14 to beyond the series' 1e-3.
+    for (double offset : {0.0, 1e-14, 1e-9, 3e-7, 1e-4, 9.99e-4, 1.001e-3, 0.01, 0.3}) {
+        for (double t : {0.5 * std::numbers::pi + offset, 0.5 * std::numbers::pi - offset, offset}) {
+            if (t <= 0.0) continue;
+            const std::vector<Vec3> p{{0, 0, 0}, {1, 0, 0}, Vec3{1, 0, 0} + Vec3{std::cos(t), std::sin(t), 0}};
+            const Vec3 a = p[1] - p[0];
+            const Vec3 b = p[2] - p[1];
+            const double expected = std::atan2(length(cross(a, b)), dot(a, b)) / (0.5 * std::numbers::pi);
+            EXPECT_NEAR(shares_of(p)[1], expected, 4.5e-16) << "turn " << t;
+        }
+    }
+}
+
+TEST(CornerShare3d, CornersKnownToBeRightAnglesWeighExactlyOne) {
+    // A rectangle turned in space: measured, its corners weigh 1 to round-off; marked as a box
+    // face's own corners, exactly 1. A corner cut off keeps its measured turns; the marked ones stay 1.
+    const Vec3 u = normalized(Vec3{1, 2, 0.5});
+    const Vec3 v = normalized(cross(Vec3{0.3, -0.2, 1}, u));
+    const Vec3 o{3, -5, 7};
+    const std::vector<Vec3> cut{in_plane(o, u, v, 0, 0), in_plane(o, u, v, 0.2, 0), in_plane(o, u, v, 0.2, 0.07),
+                                in_plane(o, u, v, 0.15, 0.1), in_plane(o, u, v, 0, 0.1)};
+    const std::uint8_t kept[5] = {1, 1, 0, 0, 1};
+    std::vector<double> s(cut.size());
+    corner_shares_3d(cut.data(), cut.size(), s.data(), kept);
+    EXPECT_EQ(s[0], 1.0);
+    EXPECT_EQ(s[1], 1.0);
+    EXPECT_EQ(s[4], 1.0);
+    const std::vector<double> measured = shares_of(cut);
+    EXPECT_EQ(s[2], measured[2]);
+    EXPECT_EQ(s[3], measured[3]);
+    EXPECT_NEAR(sum(s), 4.0, 1e-12);
+    // With a short side (two corners 1e-12 m apart) the groups need every turn: the marks are not used.
+    const std::vector<Vec3> doubled{{0, 0, 0}, {1, 0, 0}, {1, 1e-12, 0}, {1, 1, 0}, {0, 1, 0}};
+    const std::uint8_t all[5] = {1, 1, 1, 1, 1};
+    std::vector<double> d(doubled.size());
+    corner_shares_3d(doubled.data(), doubled.size(), d.data(), all);
+    EXPECT_NEAR(d[1], 0.5, 1e-12);
+    EXPECT_NEAR(d[2], 0.5, 1e-12);
+}
+
 // A box of the given size centred at c, turned by angle about the vertical through c.
 std::vector<Vec3> turned_box(Vec3 size, Vec3 c, double angle_rad) {
     std::vector<Vec3> v = box_vertices(size, {});
@@ -130,6 +176,58 @@ TEST(CornerShare3d, FlushBricksCutAlongTheirSidesGiveNearlyWeightlessCuts) {
     }
     EXPECT_EQ(cuts, 2);
     EXPECT_NEAR(total, 4.0, 1e-12);
+}
+
+// A box about its centroid (as a body's shape is held), turned by the rotation vector turn and
+// moved to c, with its box frame: the narrow phase's box paths.
+struct PosedBox {
+    Polyhedron shape;
+    PolyhedronEdges edges;
+    BoxFrame3d frame;
+    std::vector<Vec3> vertices, normals, directions;
+    Vec3 centre;
+    PosedBox(Vec3 size_m, Vec3 c, Vec3 turn_rad)
+        : shape(convex_polyhedron(box_vertices(size_m, {}))), edges(polyhedron_edges(shape)),
+          frame(box_frame(shape, edges)), centre(c) {
+        const Quaternion q = from_rotation_vector(turn_rad);
+        for (const Vec3& v : shape.vertices_m) vertices.push_back(c + rotate(q, v));
+        for (const Vec3& n : shape.face_normals) normals.push_back(rotate(q, n));
+        for (const Vec3& d : edges.directions) directions.push_back(rotate(q, d));
+    }
+    PosedPolyhedron view() const {
+        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), centre, &frame};
+    }
+};
+
+TEST(CornerShare3d, ABoxFacesKeptCornersWeighExactlyOne) {
+    // A brick half over the edge of a slab (2 x 1 x 0.5 m), sunk 1e-3 m and tilted 1e-3 rad: the
+    // slab's top face is the reference, its side x = 1 cuts the brick's bottom face. The brick's two
+    // kept corners weigh exactly 1 (a box face's right angles, not measured); the two cuts, measured,
+    // add to 2 (a line across two parallel edges turns by t and pi - t) to round-off.
+    for (const Vec3 tilt : {Vec3{1e-3, 0, 0}, Vec3{1e-3, 2e-4, 0}, Vec3{-3e-4, -2e-4, 0}}) {
+        SCOPED_TRACE(testing::Message() << "tilt " << tilt.x << " " << tilt.y << " " << tilt.z);
+        const PosedBox slab({2.0, 1.0, 0.5}, {0, 0, -0.25}, {});
+        const PosedBox brick({0.2, 0.1, 0.1}, {1.0, 0, 0.05 - 1e-3}, tilt);
+        ASSERT_TRUE(slab.frame.is_box && brick.frame.is_box);
+        ContactScratch3d scratch;
+        std::vector<ContactGeometry3d> points;
+        polyhedron_contact_3d(slab.view(), brick.view(), scratch, points);
+        int kept = 0, cut = 0;
+        double cuts = 0.0;
+        for (const ContactGeometry3d& p : points) {
+            if (feature_kind(p.feature_b) == FeatureKind3d::vertex) {
+                ++kept;
+                EXPECT_EQ(feature_kind(p.feature_a), FeatureKind3d::face);  // the slab's top face is the reference
+                EXPECT_EQ(p.stiffness_share, 1.0);
+            } else {
+                ++cut;
+                cuts += p.stiffness_share;
+            }
+        }
+        EXPECT_EQ(kept, 2);
+        EXPECT_EQ(cut, 2);
+        EXPECT_NEAR(cuts, 2.0, 1e-12);
+    }
 }
 
 TEST(CornerShare3d, AKeptPointsShearSpringKeepsItsDisplacementWhenItsShareChanges) {
