@@ -27,18 +27,6 @@ bool contains(const Box& outer, const Box& inner) {
     return true;
 }
 
-// overlaps(a, b) as a 0/1 count without branches: a listed pair overlaps about one time in four
-// on a wall, so the short-circuit's branches were mispredicted. The same comparisons, so the
-// same answer (NaN included).
-template <class Box>
-std::uint8_t overlap_flag(const Box& a, const Box& b) {
-    using Axes = BoxAxes<Box>;
-    bool in = true;
-    for (std::size_t axis = 0; axis < Axes::count; ++axis)
-        in &= (Axes::lo(a, axis) <= Axes::hi(b, axis)) & (Axes::lo(b, axis) <= Axes::hi(a, axis));
-    return static_cast<std::uint8_t>(in);
-}
-
 // The filter over the listed pairs runs in this many fixed chunks when the list is long, whatever
 // the thread count: each chunk counts what it keeps, the counts' prefix sum places each chunk's
 // pairs, so the pairs keep the list's order at any thread count (world/parallel.hpp, rule 1).
@@ -97,7 +85,7 @@ void SkinPairListOf<Box>::find_pairs(const std::vector<Box>& boxes, const std::v
     auto test_chunk = [&](std::size_t k) {
         std::size_t kept = 0;
         for (std::size_t p = chunk_begin(k); p < chunk_begin(k + 1); ++p) {
-            keep_[p] = overlap_flag(boxes[listed_[p].first], boxes[listed_[p].second]);
+            keep_[p] = overlaps(boxes[listed_[p].first], boxes[listed_[p].second]);
             kept += keep_[p];
         }
         chunk_kept_[k + 1] = kept;
