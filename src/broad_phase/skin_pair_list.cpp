@@ -81,25 +81,32 @@ void SkinPairListOf<Box>::find_pairs(const std::vector<Box>& boxes, const std::v
     keep_.resize(listed);
     chunk_kept_.assign(chunks + 1, 0);
     auto chunk_begin = [&](std::size_t k) { return listed * k / chunks; };
+    // Bounds and arrays taken into locals: a store through the flags' bytes may alias anything,
+    // so the compiler would otherwise reload them (and divide for the bound) at every pair.
+    const BodyPair* const list = listed_.data();
+    const Box* const box = boxes.data();
+    std::uint8_t* const keep = keep_.data();
     // Pass 1: each pair's exact test, and each chunk's count (the static test was the rebuild's).
     auto test_chunk = [&](std::size_t k) {
         std::size_t kept = 0;
-        for (std::size_t p = chunk_begin(k); p < chunk_begin(k + 1); ++p) {
-            keep_[p] = overlaps(boxes[listed_[p].first], boxes[listed_[p].second]);
-            kept += keep_[p];
+        const std::size_t end = chunk_begin(k + 1);
+        for (std::size_t p = chunk_begin(k); p < end; ++p) {
+            const bool in = overlaps(box[list[p].first], box[list[p].second]);
+            keep[p] = in;
+            kept += in;
         }
         chunk_kept_[k + 1] = kept;
     };
     // Pass 2: each chunk's kept pairs written from its offset.
-    auto write_chunk = [&](std::size_t k) {
-        std::size_t out = chunk_kept_[k];
-        for (std::size_t p = chunk_begin(k); p < chunk_begin(k + 1); ++p)
-            if (keep_[p]) pairs[out++] = listed_[p];
+    auto write_chunk = [&](std::size_t k, BodyPair* out) {
+        const std::size_t end = chunk_begin(k + 1);
+        for (std::size_t p = chunk_begin(k); p < end; ++p)
+            if (keep[p]) *out++ = list[p];
     };
     if (chunks == 1) {
         test_chunk(0);
         pairs.resize(chunk_kept_[1]);
-        write_chunk(0);
+        write_chunk(0, pairs.data());
         return;
     }
     const auto n_chunks = static_cast<std::ptrdiff_t>(chunks);
@@ -108,7 +115,8 @@ void SkinPairListOf<Box>::find_pairs(const std::vector<Box>& boxes, const std::v
     for (std::size_t k = 0; k < chunks; ++k) chunk_kept_[k + 1] += chunk_kept_[k];
     pairs.resize(chunk_kept_[chunks]);
 #pragma omp parallel for schedule(dynamic)
-    for (std::ptrdiff_t k = 0; k < n_chunks; ++k) write_chunk(static_cast<std::size_t>(k));
+    for (std::ptrdiff_t k = 0; k < n_chunks; ++k)
+        write_chunk(static_cast<std::size_t>(k), pairs.data() + chunk_kept_[static_cast<std::size_t>(k)]);
 }
 
 template class SkinPairListOf<Aabb>;
