@@ -29,15 +29,14 @@ int thread_count() {
 #endif
 }
 
-// Step 1: driven bodies ride the table; fixed ones stay.
-void place_driven_bodies(World3d& w, Vec3 displacement_m, Vec3 velocity_m_s) {
-    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
-        if (w.kinds[i] != BodyKind3d::driven) continue;
-        RigidBody3d& b = w.bodies[i];
-        b.position_m = w.rest_positions_m[i] + displacement_m;
-        b.velocity_m_s = velocity_m_s;
-        b.velocity_at_t_m_s = velocity_m_s;
-    }
+// Step 1: a driven body rides the table; a fixed one stays. Called per body in the pose's
+// parallel loop (a serial loop over all bodies was a piece of the step's serial part).
+void place_driven_body(World3d& w, std::size_t i, Vec3 displacement_m, Vec3 velocity_m_s) {
+    if (w.kinds[i] != BodyKind3d::driven) return;
+    RigidBody3d& b = w.bodies[i];
+    b.position_m = w.rest_positions_m[i] + displacement_m;
+    b.velocity_m_s = velocity_m_s;
+    b.velocity_at_t_m_s = velocity_m_s;
 }
 
 // The offsets of each body's entries in the flat pose arrays, when the bodies changed.
@@ -106,6 +105,66 @@ double reduced_mass(const World3d& w, std::uint32_t a, std::uint32_t b) {
     return da ? ma : mb;
 }
 
+// A large scene's candidate pairs are cut into this many chunks for the table's layout, whatever
+// the thread count (world/parallel.hpp, rule 3); a small scene's are one chunk, run serially.
+constexpr std::size_t layout_chunks = 64;
+
+// Calls work(k) for each chunk k < chunks, on all threads when there are several.
+template <class Work>
+void for_fixed_chunks(std::size_t chunks, Work work) {
+    if (chunks == 1) {
+        work(0);
+        return;
+    }
+    const auto count = static_cast<std::ptrdiff_t>(chunks);
+#pragma omp parallel for schedule(dynamic)
+    for (std::ptrdiff_t k = 0; k < count; ++k) work(static_cast<std::size_t>(k));
+}
+
+// The table's layout: each candidate pair with points gets its run, in candidate order. Each
+// fixed chunk of the candidates counts its pairs in contact and their points, a prefix sum over
+// the chunks places them, and each chunk then writes its own entries: the same layout as one
+// serial pass, at any thread count. Returns the number of points.
+std::uint32_t lay_out_table(WorldScratch3d& s) {
+    const std::size_t candidates = s.pairs.size();
+    const std::size_t chunks =
+        static_cast<std::ptrdiff_t>(candidates) >= parallel_threshold ? layout_chunks : std::size_t{1};
+    auto chunk_begin = [&](std::size_t k) { return candidates * k / chunks; };
+    s.chunk_pairs.assign(chunks + 1, 0);
+    s.chunk_points.assign(chunks + 1, 0);
+    for_fixed_chunks(chunks, [&](std::size_t k) {
+        std::uint32_t pairs = 0;
+        std::uint32_t points = 0;
+        for (std::size_t c = chunk_begin(k); c < chunk_begin(k + 1); ++c) {
+            const auto count = static_cast<std::uint32_t>(s.pair_points[c].size());
+            pairs += count > 0 ? 1 : 0;
+            points += count;
+        }
+        s.chunk_pairs[k + 1] = pairs;
+        s.chunk_points[k + 1] = points;
+    });
+    for (std::size_t k = 0; k < chunks; ++k) {
+        s.chunk_pairs[k + 1] += s.chunk_pairs[k];
+        s.chunk_points[k + 1] += s.chunk_points[k];
+    }
+    s.contact_pairs.resize(s.chunk_pairs[chunks]);
+    for_fixed_chunks(chunks, [&](std::size_t k) {
+        std::uint32_t pair = s.chunk_pairs[k];
+        std::uint32_t point = s.chunk_points[k];
+        for (std::size_t c = chunk_begin(k); c < chunk_begin(k + 1); ++c) {
+            const auto count = static_cast<std::uint32_t>(s.pair_points[c].size());
+            if (count == 0) continue;
+            ContactPairSums3d& entry = s.contact_pairs[pair++];
+            entry = ContactPairSums3d{};
+            entry.candidate = static_cast<std::uint32_t>(c);
+            entry.first_point = point;
+            entry.points = count;
+            point += count;
+        }
+    });
+    return s.chunk_points[chunks];
+}
+
 // Steps 3 and 4: this step's points, sorted by key, with last step's history. Each pair's points
 // go to its own slot (in parallel), then into the table in pair order (serially).
 void find_contacts(World3d& w) {
@@ -127,19 +186,7 @@ void find_contacts(World3d& w) {
     // The table's layout first: each pair's run of points (a prefix sum over the pairs, the only
     // serial part), then the runs filled with last step's history pair by pair in parallel.
     std::swap(s.previous, w.contacts);
-    s.contact_pairs.clear();
-    std::uint32_t table_size = 0;
-    for (std::size_t k = 0; k < s.pairs.size(); ++k) {
-        const auto count = static_cast<std::uint32_t>(s.pair_points[k].size());
-        if (count == 0) continue;
-        ContactPairSums3d pair;
-        pair.candidate = static_cast<std::uint32_t>(k);
-        pair.first_point = table_size;
-        pair.points = count;
-        s.contact_pairs.push_back(pair);
-        table_size += count;
-    }
-    w.contacts.resize(table_size);
+    w.contacts.resize(lay_out_table(s));
     parallel_for(static_cast<std::ptrdiff_t>(s.contact_pairs.size()), [&](std::ptrdiff_t i) {
         const ContactPairSums3d& pair = s.contact_pairs[i];
         const auto [a, b] = s.pairs[pair.candidate];
@@ -266,23 +313,57 @@ LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     return t;
 }
 
-// Step 5: the law at every pair in contact (in parallel), each pair's sums then added onto its two
-// bodies in the table's order (serially), so that each body's sum has the same terms in the same
-// order whatever the thread count. About b's centroid the pair's moment is the one about a's
-// plus (x_a - x_b) x F.
+// Each body's pairs in contact, in table order: a counting sort by body (serial, a few
+// instructions a pair: the pass that added the sums onto the bodies here cost about four times
+// more). Body i's entries end up in body_pairs[body_pair_start[i] .. body_pair_start[i + 1]).
+void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
+    std::vector<std::uint32_t>& start = s.body_pair_start;
+    start.assign(bodies + 2, 0);
+    for (const ContactPairSums3d& pair : s.contact_pairs) {
+        ++start[s.pairs[pair.candidate].first + 2];
+        ++start[s.pairs[pair.candidate].second + 2];
+    }
+    for (std::size_t i = 2; i < bodies + 2; ++i) start[i] += start[i - 1];
+    // start[i + 1] is now body i's first entry; filling moves it to one past its last.
+    s.body_pairs.resize(2 * s.contact_pairs.size());
+    for (std::uint32_t p = 0; p < s.contact_pairs.size(); ++p) {
+        const BodyPair& ab = s.pairs[s.contact_pairs[p].candidate];
+        s.body_pairs[start[ab.first + 1]++] = p;
+        s.body_pairs[start[ab.second + 1]++] = p;
+    }
+    start.pop_back();
+}
+
+// Body i takes its pairs' sums in table order, as one serial pass over the table adding each
+// pair onto its two bodies did: the same terms in the same order, so the same bits at any thread
+// count. About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
+void gather_pair_sums(World3d& w, std::uint32_t i) {
+    const WorldScratch3d& s = w.scratch;
+    RigidBody3d& body = w.bodies[i];
+    for (std::uint32_t e = s.body_pair_start[i]; e < s.body_pair_start[i + 1]; ++e) {
+        const ContactPairSums3d& pair = s.contact_pairs[s.body_pairs[e]];
+        const BodyPair& ab = s.pairs[pair.candidate];
+        if (ab.second == i) {
+            body.force_n += pair.force_n;
+            body.torque_n_m +=
+                pair.torque_about_a_n_m + cross(w.bodies[ab.first].position_m - body.position_m, pair.force_n);
+        } else {
+            body.force_n -= pair.force_n;
+            body.torque_n_m -= pair.torque_about_a_n_m;
+        }
+    }
+}
+
+// Step 5: the law at every pair in contact (in parallel), each pair's sums then gathered by its
+// two bodies in the table's order (in parallel over bodies), so that each body's sum has the same
+// terms in the same order whatever the thread count.
 void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
     const LawTotals t = deterministic_sum(static_cast<std::ptrdiff_t>(pairs.size()),
                                           [&](std::ptrdiff_t i) { return pair_law(w, pairs[i], table_step_m); });
-    for (const ContactPairSums3d& pair : pairs) {
-        const ContactKey3d& key = w.contacts[pair.first_point].key;
-        RigidBody3d& ba = w.bodies[key.body_a];
-        RigidBody3d& bb = w.bodies[key.body_b];
-        bb.force_n += pair.force_n;
-        bb.torque_n_m += pair.torque_about_a_n_m + cross(ba.position_m - bb.position_m, pair.force_n);
-        ba.force_n -= pair.force_n;
-        ba.torque_n_m -= pair.torque_about_a_n_m;
-    }
+    index_pairs_by_body(w.scratch, w.bodies.size());
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
+                 [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::uint32_t>(i)); });
     EnergyLedger& ledger = w.ledger;
     ledger.elastic_j = t.elastic_j;
     ledger.normal_dashpot_j += t.normal_dashpot_j;
@@ -341,9 +422,10 @@ void step_begin(World3d& w) {
     const Vec3 d_before = table_displacement(w.table, t - dt);
     const Vec3 d_after = table_displacement(w.table, t + dt);
     const auto n = static_cast<std::ptrdiff_t>(w.bodies.size());
-    place_driven_bodies(w, d_now, (1.0 / dt) * (d_now - d_before));
+    const Vec3 table_velocity_m_s = (1.0 / dt) * (d_now - d_before);
     size_pose_arrays(w);
     parallel_for(n, [&](std::ptrdiff_t i) {
+        place_driven_body(w, static_cast<std::size_t>(i), d_now, table_velocity_m_s);
         pose_body(w, static_cast<std::size_t>(i));
         w.bodies[i].force_n = {0.0, 0.0, -w.gravity_m_s2 * w.bodies[i].mass_kg};
         w.bodies[i].torque_n_m = {};

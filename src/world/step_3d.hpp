@@ -2,7 +2,7 @@
 // The 3-D time step, written once, in the 2-D step's order (world/step.cpp, docs/architecture.md):
 //   1. the table's motion at t: driven bodies placed and given its velocity;
 //   2. every body posed: world vertices, face normals and edge directions, bounding boxes;
-//   3. broad phase (broad_phase/grid_broad_phase_3d.hpp): candidate pairs;
+//   3. broad phase (broad_phase/skin_pair_list.hpp over the grid): candidate pairs;
 //   4. narrow phase (geometry/polyhedron_contact_3d.hpp): points keyed by features, and the
 //      history of last step's points carried by key (contact/contact_table_3d.hpp);
 //   5. forces: the contact law at every point (laws/linear_spring_dashpot.hpp for the normal,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "broad_phase/grid_broad_phase_3d.hpp"
+#include "broad_phase/skin_pair_list.hpp"
 #include "contact/contact_table_3d.hpp"
 #include "dynamics/rigid_body_3d.hpp"
 #include "geometry/box_frame_3d.hpp"
@@ -59,8 +60,12 @@ struct WorldScratch3d {
     std::vector<std::vector<ContactGeometry3d>> pair_points;  ///< per candidate pair, its points (kept: no allocation)
     std::vector<ContactPoint3d> previous;
     std::vector<ContactPairSums3d> contact_pairs;             ///< this step's pairs in contact, in table order
+    std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
+    std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
+    std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
+    std::vector<std::uint32_t> body_pairs;                    ///< per body, its pairs in contact (indices in contact_pairs), in table order
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
-    GridBroadPhase3d broad_phase;
+    SkinPairList3d broad_phase;                               ///< the grid, searched again only when a body left its skin
 };
 
 /// The stable step of the live contacts, watched during a run (world/run_checks_3d.hpp) as the

@@ -419,5 +419,36 @@ TEST(World3d, PeersS3dWallIsTheSameBytesAtOneAndTwoThreads) {
 #endif
 }
 
+TEST(World3d, PeersS3dWallAbove2048BodiesIsTheSameBytesAtOneAndTwoThreads) {
+    // 2100 bricks: more than parallel_threshold bodies, candidate pairs and listed pairs, so that
+    // every loop of the step takes its shared-out path: the pose, the skin's containment test and
+    // its chunked filter (broad_phase/skin_pair_list.hpp), the table's chunked layout, and each
+    // body gathering its pairs' sums (world/step_3d.cpp). 20 settling steps, then 40 shaken ones
+    // (the bytes need no settled wall, and the test stays a few seconds).
+#ifndef _OPENMP
+    GTEST_SKIP() << "built without OpenMP";
+#else
+    scenes::S3dWallDef def;
+    def.bricks = 2100;
+    def.settling_steps = 20;
+    std::vector<std::vector<unsigned char>> runs;
+    std::size_t candidates = 0;
+    std::size_t listed = 0;
+    const int threads_before = omp_get_max_threads();
+    for (int threads : {1, 2}) {
+        omp_set_num_threads(threads);
+        World3d w = scenes::settled_s3d_wall_3d(def);
+        for (int i = 0; i < 40; ++i) step_3d(w);
+        candidates = w.scratch.pairs.size();
+        listed = w.scratch.broad_phase.listed_pairs();
+        runs.push_back(state_bytes(w));
+    }
+    omp_set_num_threads(threads_before);
+    EXPECT_GT(candidates, 2048u);
+    EXPECT_GT(listed, 2048u);
+    EXPECT_EQ(runs[0], runs[1]);
+#endif
+}
+
 }  // namespace
 }  // namespace blockdem
