@@ -505,7 +505,9 @@ ContactEnergy update_convex_contacts_and_forces(World& w) {
         return deterministic_sum(pairs, [&](std::ptrdiff_t p) __attribute__((always_inline)) {
             return convex_pair_step<true>(w, static_cast<std::size_t>(p));
         });
-    return deterministic_sum(pairs, [&](std::ptrdiff_t p) { return convex_pair_step<false>(w, static_cast<std::size_t>(p)); });
+    return deterministic_sum(pairs, [&](std::ptrdiff_t p) __attribute__((always_inline)) {
+        return convex_pair_step<false>(w, static_cast<std::size_t>(p));
+    });
 }
 
 // Body i's force and torque: gravity, then its pair slots in table order (parallel.hpp, rule 2).
