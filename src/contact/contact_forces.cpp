@@ -470,8 +470,9 @@ namespace {
 }
 
 // One pair of a world of convex bodies: its narrow phase, then its law (the joint law's own path
-// with joints_only), its own points sharing its reduced mass. Flattened with joints_only, as
-// apply_joint_pair_law is; the per-point path keeps the code layout of its law (pair_law).
+// with joints_only), its own points sharing its reduced mass. Not flattened: the joint law's
+// rarely taken paths (sub-contacts, dilation, openings), inlined too, crowded the registers and
+// took back nearly all of what the fusion saved (docs/performance.md).
 template <bool joints_only>
 [[gnu::always_inline]] inline ContactEnergy convex_pair_step(World& w, std::size_t p) {
     const OpenedPoints opened = narrow_phase_detail::pair_contact<joints_only>(w, p);
@@ -499,6 +500,8 @@ bool every_pair_per_length(const MaterialPairs& contact) {
     return joint_pair_law_and_openings(w, p, mass_sharing_points, opened);
 }
 
+// (Each pair's body inlined in the chunk sum itself: a call per pair from the sum, with its
+// ContactEnergy returned through memory, cost the rounded per-length wall 2.6 % of its step.)
 ContactEnergy update_convex_contacts_and_forces(World& w) {
     const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
     if (every_pair_per_length(w.contact))

@@ -1,10 +1,11 @@
 #pragma once
 // The narrow phase of one pair (narrow_phase.hpp), inline: update_pair_contact and
 // update_joint_pair_contact are made of it, and so is the step's contact pass
-// (contact_forces.hpp, update_contacts_and_forces_convex), which runs it and the law in one body of
-// code per pair: two calls per pair, with the narrow phase's OpenedPoints handed through memory,
-// cost the rounded per-length wall 2 % of its step (docs/performance.md, "Per length + cohesion
-// + rounding together"). Not for other callers: narrow_phase.hpp is the interface.
+// (contact_forces.hpp, update_convex_contacts_and_forces), which runs it and the law in one body of
+// code per pair: two calls per pair and one from the chunk sum, with the OpenedPoints and the
+// ContactEnergy handed through memory, cost the rounded per-length wall 3.7 % of its step
+// (docs/performance.md, "The narrow phase and the law in one pass"). Not for other callers:
+// narrow_phase.hpp is the interface.
 #include <algorithm>
 #include <cmath>
 
