@@ -15,6 +15,7 @@
 #include "contact/sub_contacts.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "geometry/rounded_contact.hpp"
+#include "geometry/rounded_face_contact.hpp"
 #include "laws/mohr_coulomb_joint.hpp"
 #include "world/world.hpp"
 
@@ -139,11 +140,11 @@ template <bool joints_only>
         turn_rad + 2.3e-16 * (1.0 + std::abs(b.rotation_rad[pair.a]) + std::abs(b.rotation_rad[pair.b]));
     ContactManifold manifold;
     if (w.contact.rounding_m > 0.0) [[unlikely]]  // (sharp corners keep their code layout)
-        collide_rounded(with_corner_offsets(b, w.contact.rounding_m, a, part_a),
-                        with_corner_offsets(b, w.contact.rounding_m, c, part_b), w.contact.rounding_m, pair.reference,
-                        manifold, pair.axis_cache, collide_gap_m,
-                        b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[part_a]] : nullptr,
-                        b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[part_b]] : nullptr);
+        rounded_detail::collide_rounded_lasting(with_corner_offsets(b, w.contact.rounding_m, a, part_a),
+                                                with_corner_offsets(b, w.contact.rounding_m, c, part_b),
+                                                w.contact.rounding_m, pair.reference, manifold, pair.axis_cache, collide_gap_m,
+                                                b.part_count[pair.a] > 1 ? &b.seam_corner[b.part_vertex_begin[part_a]] : nullptr,
+                                                b.part_count[pair.b] > 1 ? &b.seam_corner[b.part_vertex_begin[part_b]] : nullptr);
     else
         collide_polygons(a, c, pair.reference, manifold, &pair.axis_cache, collide_gap_m);
     if (face_kept) [[unlikely]]
