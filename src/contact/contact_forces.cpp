@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/narrow_phase_pair.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 #include "laws/mohr_coulomb_joint.hpp"
 #include "world/parallel.hpp"
@@ -423,7 +424,12 @@ void count_body_pair_points(World& w) {
     }
 }
 
-ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points, const OpenedPoints& opened) {
+namespace {
+
+// apply_pair_law's body, inline: the contact pass below runs it after the narrow phase in one
+// body of code per pair.
+[[gnu::always_inline]] inline ContactEnergy pair_law_and_openings(World& w, std::size_t p, std::uint32_t mass_sharing_points,
+                                                                  const OpenedPoints& opened) {
     PairContact& pair = w.contacts[p];
     SubContacts* sub = p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
     ContactEnergy energy = pair_law(pair, w.bodies, w.contact, sub, w.dt_s, mass_sharing_points, w.pair_forces[p]);
@@ -435,15 +441,10 @@ ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing
     return energy;
 }
 
-bool every_pair_per_length(const MaterialPairs& contact) {
-    for (const ContactParameters& params : contact.parameters)
-        if (params.stiffness != StiffnessBasis::per_length) return false;
-    return !contact.parameters.empty();
-}
-
-// apply_pair_law with pair_law's per-length branch taken, in one body of code (flattened).
-[[gnu::flatten]] ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
-                                                    const OpenedPoints& opened) {
+// apply_joint_pair_law's body, inline for the contact pass as pair_law_and_openings.
+[[gnu::always_inline]] inline ContactEnergy joint_pair_law_and_openings(World& w, std::size_t p,
+                                                                        std::uint32_t mass_sharing_points,
+                                                                        const OpenedPoints& opened) {
     PairContact& pair = w.contacts[p];
     // (Empty first: the size is a division by the entry's size, at every pair of every step.)
     SubContacts* sub = !w.sub_contacts.empty() && p < w.sub_contacts.size() ? &w.sub_contacts[p] : nullptr;
@@ -466,6 +467,50 @@ bool every_pair_per_length(const MaterialPairs& contact) {
     if (opened.count > 0) energy += opened_points_work(w, pair, opened);
     energy.deepest_pair = static_cast<std::uint32_t>(p);
     return energy;
+}
+
+// One pair of a world of convex bodies: its narrow phase, then its law (the joint law's own path
+// with joints_only), its own points sharing its reduced mass. Not flattened: the joint law's
+// rarely taken paths (sub-contacts, dilation, openings), inlined too, crowded the registers and
+// took back nearly all of what the fusion saved (docs/performance.md).
+template <bool joints_only>
+[[gnu::always_inline]] inline ContactEnergy convex_pair_step(World& w, std::size_t p) {
+    const OpenedPoints opened = narrow_phase_detail::pair_contact<joints_only>(w, p);
+    if constexpr (joints_only)
+        return joint_pair_law_and_openings(w, p, w.contacts[p].count, opened);
+    else
+        return pair_law_and_openings(w, p, w.contacts[p].count, opened);
+}
+
+}  // namespace
+
+ContactEnergy apply_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points, const OpenedPoints& opened) {
+    return pair_law_and_openings(w, p, mass_sharing_points, opened);
+}
+
+bool every_pair_per_length(const MaterialPairs& contact) {
+    for (const ContactParameters& params : contact.parameters)
+        if (params.stiffness != StiffnessBasis::per_length) return false;
+    return !contact.parameters.empty();
+}
+
+// apply_pair_law with pair_law's per-length branch taken, in one body of code (flattened).
+[[gnu::flatten]] ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
+                                                    const OpenedPoints& opened) {
+    return joint_pair_law_and_openings(w, p, mass_sharing_points, opened);
+}
+
+// (Each pair's body inlined in the chunk sum itself: a call per pair from the sum, with its
+// ContactEnergy returned through memory, cost the rounded per-length wall 2.6 % of its step.)
+ContactEnergy update_convex_contacts_and_forces(World& w) {
+    const auto pairs = static_cast<std::ptrdiff_t>(w.contacts.size());
+    if (every_pair_per_length(w.contact))
+        return deterministic_sum(pairs, [&](std::ptrdiff_t p) __attribute__((always_inline)) {
+            return convex_pair_step<true>(w, static_cast<std::size_t>(p));
+        });
+    return deterministic_sum(pairs, [&](std::ptrdiff_t p) __attribute__((always_inline)) {
+        return convex_pair_step<false>(w, static_cast<std::size_t>(p));
+    });
 }
 
 // Body i's force and torque: gravity, then its pair slots in table order (parallel.hpp, rule 2).

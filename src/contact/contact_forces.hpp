@@ -71,6 +71,13 @@ bool every_pair_per_length(const MaterialPairs& contact);
 ContactEnergy apply_joint_pair_law(World& w, std::size_t p, std::uint32_t mass_sharing_points,
                                    const OpenedPoints& opened = OpenedPoints());
 
+/// The narrow phase (contact/narrow_phase.hpp) and then the law at every pair of a world whose
+/// bodies are all convex (each pair's own points share its reduced mass), pair by pair in one body
+/// of code: update_pair_contact then apply_pair_law, or in a world of joints only
+/// (every_pair_per_length) update_joint_pair_contact then apply_joint_pair_law, with the same
+/// results. Returns the pairs' energy terms summed in the fixed order of world/parallel.hpp.
+ContactEnergy update_convex_contacts_and_forces(World& w);
+
 /// Sets World::body_pair_points: for every table entry, the active points of its body pair this
 /// step, summed over the body pair's part pairs (after the narrow phase, before the law). One
 /// serial pass over the table (integer sums: the same at any thread count).

@@ -163,18 +163,9 @@ void update_contacts_and_forces(World& w) {
     ContactEnergy contacts;
     if (w.bodies.part_total() == w.bodies.size()) {
         // Every body convex: a pair's own points are its body pair's, known once its narrow
-        // phase is done.
-        // (A world of joints only takes the joint law's own path: same results, fewer instructions.)
-        if (every_pair_per_length(w.contact))
-            contacts = deterministic_sum(pairs, [&](std::ptrdiff_t p) {
-                const OpenedPoints opened = update_joint_pair_contact(w, static_cast<std::size_t>(p));
-                return apply_joint_pair_law(w, static_cast<std::size_t>(p), w.contacts[p].count, opened);
-            });
-        else
-            contacts = deterministic_sum(pairs, [&](std::ptrdiff_t p) {
-                const OpenedPoints opened = update_pair_contact(w, static_cast<std::size_t>(p));
-                return apply_pair_law(w, static_cast<std::size_t>(p), w.contacts[p].count, opened);
-            });
+        // phase is done. (A world of joints only takes the joint law's own path: same results,
+        // fewer instructions.)
+        contacts = update_convex_contacts_and_forces(w);
     } else {
         // Concave bodies: the law needs the points of all the body pair's part pairs, so the
         // narrow phase runs over the whole table first, then the points are counted.

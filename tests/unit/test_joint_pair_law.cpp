@@ -2,7 +2,9 @@
 // when every material pair has per-length stiffness) against the general one
 // (update_pair_contact, apply_pair_law): the same bits, pair by pair, on a shaken bonded wall
 // whose bonds break, with sub-contacts (the interior points' law) and without (the lean loop of
-// a pair's own points, joint_ends_law: docs/performance.md, "The bonded wall", "Joints").
+// a pair's own points, joint_ends_law: docs/performance.md, "The bonded wall", "Joints"). And
+// the step's contact pass (update_convex_contacts_and_forces: narrow phase and law in one body of
+// code per pair) against the two calls per pair it stands for.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,6 +13,7 @@
 #include "contact/contact_forces.hpp"
 #include "contact/narrow_phase.hpp"
 #include "scenes/assemblies.hpp"
+#include "world/parallel.hpp"
 #include "world/step.hpp"
 
 namespace blockdem {
@@ -96,6 +99,71 @@ void compare_paths(std::uint32_t sub_contacts, Seen& seen) {
     }
     std::printf("sub_contacts %u: compared pairs %zu: points intact %zu, broken %zu, open %zu, interior %zu\n",
                 sub_contacts, seen.pairs, seen.intact, seen.broken, seen.open, seen.interior);
+}
+
+// The step's contact pass against the narrow phase and the law called pair by pair (the
+// joint path in a world of joints only, else the general one), summed in the same chunks: the
+// same bits in every point, force slot and ledger term. Every 50 steps of 1500 of the weak
+// bonded wall (bonds break), with corners sharp or rounded, per-length or per-point.
+void compare_contact_pass(double rounding_m, bool per_length, std::size_t& compared) {
+    Model m = scenes::bonded_wall_scene(60, 1.0);
+    ContactParameters joint = m.contact.at(0, 0);
+    joint.cohesion_pa = 2e3;
+    joint.tensile_strength_pa = 1e3;
+    joint.residual_mu = 0.5 * joint.mu;
+    if (!per_length) {
+        joint.stiffness = StiffnessBasis::per_point;
+        joint.kn_N_m = 6e7;
+        joint.ks_N_m = 6e7;
+    }
+    m.contact = MaterialPairs::uniform(joint);
+    m.contact.rounding_m = rounding_m;
+    World w = build_world(m);
+    ASSERT_EQ(every_pair_per_length(w.contact), per_length);
+    for (int s = 0; s < 1500; ++s) {
+        if (s % 50 == 0) {
+            World fused = w;
+            World apart = w;
+            prepare_pair_forces(fused);
+            prepare_pair_forces(apart);
+            const ContactEnergy e_fused = update_convex_contacts_and_forces(fused);
+            const ContactEnergy e_apart = deterministic_sum(static_cast<std::ptrdiff_t>(apart.contacts.size()), [&](std::ptrdiff_t i) {
+                const auto p = static_cast<std::size_t>(i);
+                if (per_length) {
+                    const OpenedPoints opened = update_joint_pair_contact(apart, p);
+                    return apply_joint_pair_law(apart, p, apart.contacts[p].count, opened);
+                }
+                const OpenedPoints opened = update_pair_contact(apart, p);
+                return apply_pair_law(apart, p, apart.contacts[p].count, opened);
+            });
+            ASSERT_TRUE(same_energy(e_fused, e_apart)) << "step " << s;
+            for (std::size_t p = 0; p < w.contacts.size(); ++p) {
+                const PairContact& a = fused.contacts[p];
+                const PairContact& b = apart.contacts[p];
+                ASSERT_EQ(a.count, b.count);
+                ASSERT_TRUE(same_bits(a.normal, b.normal));
+                ASSERT_EQ(a.reference, b.reference);
+                ASSERT_EQ(fused.pair_forces[p].count, apart.pair_forces[p].count);
+                for (std::uint32_t k = 0; k < a.count; ++k) {
+                    ASSERT_TRUE(same_point(a.points[k], b.points[k])) << "pair " << p << " point " << k;
+                    ASSERT_TRUE(same_bits(fused.pair_forces[p].on_b_n[k], apart.pair_forces[p].on_b_n[k]));
+                    ASSERT_TRUE(same_bits(fused.pair_forces[p].torque_on_a_n_m[k], apart.pair_forces[p].torque_on_a_n_m[k]));
+                    ASSERT_TRUE(same_bits(fused.pair_forces[p].torque_on_b_n_m[k], apart.pair_forces[p].torque_on_b_n_m[k]));
+                }
+                compared += a.count;
+            }
+        }
+        step(w);
+    }
+}
+
+TEST(JointPairLaw, ContactPassGivesThePairByPairBits) {
+    for (const double rounding_m : {0.0, 0.002})
+        for (const bool per_length : {true, false}) {
+            std::size_t compared = 0;
+            compare_contact_pass(rounding_m, per_length, compared);
+            EXPECT_GT(compared, 1000u) << "rounding " << rounding_m << " per length " << per_length;
+        }
 }
 
 TEST(JointPairLaw, JointPathGivesTheGeneralPathsBits) {
