@@ -48,7 +48,8 @@ public:
                              "is 3: a 3-D scenario runs in blockdem.Simulation3d (the same step, t, positions, summary)");
         RunRequest request = make_request(threads, out_dir, force, save_state_s, save_state_every_s);
         request.scenario = scenario.file;
-        LoadedScenario loaded = scenario.load(true);
+        LoadedScenario loaded = build_watching_signals(
+            threads, settling_stop_, [&](const std::atomic<bool>* stop) { return scenario.load(true, stop); });
         run_ = std::make_unique<ScenarioRun>(std::move(loaded), request, history);
         writes_files_ = out_dir.has_value();
         step(0);  // the state at t = 0 complete (accelerations included) before anything reads it
@@ -204,6 +205,7 @@ private:
         return request;
     }
 
+    std::atomic<bool> settling_stop_{false};  ///< set by Ctrl-C while the model settles (build_watching_signals); before run_, which keeps a pointer to it
     std::unique_ptr<ScenarioRun> run_;
     int threads_ = 1;
     std::string failure_;   ///< what stopped the run; empty while it may go on

@@ -40,7 +40,11 @@ public:
         request.scenario = scenario.file;
         if (out_dir) request.out_dir = *out_dir;
         request.force = force;
-        run_ = std::make_unique<ScenarioRun3d>(request, scenario.parse(), history);
+        toml::table root = scenario.parse();
+        run_ = build_watching_signals(threads, settling_stop_, [&](const std::atomic<bool>* stop) {
+            request.stop_requested = stop;
+            return std::make_unique<ScenarioRun3d>(request, std::move(root), history);
+        });
         writes_files_ = out_dir.has_value();
         step(0);  // the state at t = 0 complete before anything reads it
     }
@@ -85,6 +89,7 @@ public:
     }
 
 private:
+    std::atomic<bool> settling_stop_{false};  ///< set by Ctrl-C while the model settles (build_watching_signals); before run_, which keeps a pointer to it
     std::unique_ptr<ScenarioRun3d> run_;
     int threads_ = 1;
     bool writes_files_ = false;

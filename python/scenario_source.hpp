@@ -2,6 +2,7 @@
 // What blockdem.Scenario holds: the scenario's TOML text and the name it goes by. It stays
 // TOML, edited by the setters, so that every check and message is the CLI's own
 // (io/scenario.hpp); a Simulation loads it as `blockdem run` loads a file.
+#include <atomic>
 #include <filesystem>
 #include <string>
 
@@ -32,7 +33,10 @@ struct ScenarioSource {
         }
     }
     /// Loads it as the CLI does (settle = false: only the checks; a Simulation settles).
-    LoadedScenario load(bool settle) const { return load_scenario(parse(), file, {}, settle); }
+    /// A stop request (stop_requested set) ends settling with SettlingStopped.
+    LoadedScenario load(bool settle, const std::atomic<bool>* stop_requested = nullptr) const {
+        return load_scenario(parse(), file, {}, settle, stop_requested);
+    }
 };
 
 }  // namespace blockdem::python

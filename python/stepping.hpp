@@ -5,7 +5,9 @@
 // (world/simulation.hpp, RunLoop), so an interrupted run can go on.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstdint>
+#include <future>
 #include <stdexcept>
 
 #include <pybind11/pybind11.h>
@@ -55,6 +57,40 @@ std::int64_t step_in_chunks(std::int64_t steps, int threads, StepChunk&& step_ch
         if (PyErr_CheckSignals() != 0) throw pybind11::error_already_set();
     } while (taken < steps);
     return taken;
+}
+
+/// Builds a run through build(&stop) (which may settle the model for minutes) on another thread,
+/// without the GIL and on `threads` OpenMP threads, while this thread looks at Python's signals
+/// every 0.1 s: Ctrl-C sets stop, which ends the settling at a whole step, and raises
+/// KeyboardInterrupt here (nothing was built). Signals can only be seen on the thread that
+/// called in, hence the second thread. `stop` must outlive what is built (a run keeps the
+/// pointer for its own stop requests).
+template <class Build>
+auto build_watching_signals(int threads, std::atomic<bool>& stop, Build&& build) {
+    auto built = std::async(std::launch::async, [&] {
+#ifdef _OPENMP
+        omp_set_num_threads(threads);  // (per thread: the one that builds)
+#else
+        (void)threads;
+#endif
+        return build(&stop);
+    });
+    for (;;) {
+        bool ready = false;
+        {
+            pybind11::gil_scoped_release release;
+            ready = built.wait_for(std::chrono::milliseconds(100)) == std::future_status::ready;
+        }
+        if (ready) return built.get();
+        if (PyErr_CheckSignals() != 0) {
+            stop = true;
+            {
+                pybind11::gil_scoped_release release;
+                built.wait();
+            }
+            throw pybind11::error_already_set();  // (the build's own result or error is dropped)
+        }
+    }
 }
 
 }  // namespace blockdem::python

@@ -217,3 +217,17 @@ def test_a_run_with_files_dropped_before_finish_ends_them(tmp_path):
     assert summary["status"] == "interrupted" and summary["time_s"] == pytest.approx(0.05)
     rows = (tmp_path / "run" / "history.csv").read_text().strip().splitlines()
     assert rows[-1].startswith("0.05,")  # the time reached is the last row
+
+
+def test_ctrl_c_while_the_model_settles_raises_at_once():
+    # A window far longer than settling is allowed: without the stop it would settle for hours.
+    import _thread
+    import time
+
+    scenario = block_on_table(duration=1.0)
+    scenario["settling"] = {"window": 1000.0, "max_time": 1.0e4}
+    threading.Timer(0.3, _thread.interrupt_main).start()
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        blockdem.Simulation(blockdem.Scenario.from_dict(scenario))
+    assert time.monotonic() - started < 5.0

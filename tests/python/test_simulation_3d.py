@@ -146,3 +146,18 @@ def test_history_holds_the_rows_history_csv_writes(tmp_path):
     np.testing.assert_allclose(h["energy"]["kinetic_J"], [float(e["kinetic_J"]) for e in energy], rtol=1e-8, atol=1e-12)
     with pytest.raises(ValueError, match="keeps no history"):
         blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), history=False).history()
+
+
+def test_ctrl_c_while_the_model_settles_raises_at_once():
+    # A window far longer than settling is allowed: without the stop it would settle for hours.
+    import _thread
+    import threading
+    import time
+
+    text = DROP.split('[[bodies]]\nname = "cube"')[0].replace(
+        "[[bodies]]", "[settling]\nwindow = 1000.0\nmax_time = 1.0e4\n[[bodies]]", 1)
+    threading.Timer(0.3, _thread.interrupt_main).start()
+    started = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        blockdem.Simulation3d(blockdem.Scenario.from_toml(text), threads=1)
+    assert time.monotonic() - started < 5.0
