@@ -67,9 +67,9 @@ inline ShearHistory3d carry_to_normal(ShearHistory3d h, Vec3 new_normal) {
 /// in the tangent plane, over the interval that ends now.
 inline ShearForce3d coulomb_slider_3d(double ks_N_m, double cs_N_s_m, double limit_n, Vec3 tangential_velocity_m_s,
                                       const ShearHistory3d& previous, double dt_s) {
-    ShearForce3d f;
     // The cap's square roots only where a length can reach the cap (surely_within_below): a
     // sticking point takes none. The trial's length is taken once, for the test and for the cap.
+    // Each branch builds its whole result at once, not a default one overwritten field by field.
     const double within_below = surely_within_below(limit_n);
     const Vec3 last = previous.spring_n;
     const Vec3 capped_last = capped_length(last, limit_n, within_below);
@@ -80,20 +80,17 @@ inline ShearForce3d coulomb_slider_3d(double ks_N_m, double cs_N_s_m, double lim
     const double trial_length = trial_within ? 0.0 : std::sqrt(trial_squared);
     const bool trial_over = !trial_within && trial_length > limit_n;
     if (trial_over || !(capped_last == last)) {
-        f.sliding = true;
-        f.spring_n = trial_over ? (limit_n / trial_length) * trial : trial;
-        f.total_n = f.spring_n;
-        const double work_on_bodies_j = 0.5 * dot(last + f.spring_n, increment_m);
+        const Vec3 spring_n = trial_over ? (limit_n / trial_length) * trial : trial;
+        const double work_on_bodies_j = 0.5 * dot(last + spring_n, increment_m);
         const double stored_change_j =
-            ks_N_m > 0.0 ? 0.5 * (dot(f.spring_n, f.spring_n) - dot(last, last)) / ks_N_m : 0.0;
-        f.friction_work_j = -work_on_bodies_j - stored_change_j;
-    } else {
-        f.spring_n = trial;
-        f.total_n = capped_length(trial - cs_N_s_m * tangential_velocity_m_s, limit_n, within_below);
-        f.dashpot_n = f.total_n - trial;
+            ks_N_m > 0.0 ? 0.5 * (dot(spring_n, spring_n) - dot(last, last)) / ks_N_m : 0.0;
+        // Sliding: no dashpot (its part is zero).
+        return {spring_n, spring_n, Vec3{}, true, -work_on_bodies_j - stored_change_j,
+                -0.5 * dot(previous.dashpot_n + Vec3{}, increment_m)};
     }
-    f.shear_dashpot_work_j = -0.5 * dot(previous.dashpot_n + f.dashpot_n, increment_m);
-    return f;
+    const Vec3 total_n = capped_length(trial - cs_N_s_m * tangential_velocity_m_s, limit_n, within_below);
+    const Vec3 dashpot_n = total_n - trial;
+    return {trial, total_n, dashpot_n, false, 0.0, -0.5 * dot(previous.dashpot_n + dashpot_n, increment_m)};
 }
 
 }  // namespace blockdem
