@@ -30,7 +30,8 @@ struct ShearForce3d {
 };
 
 /// Squares below this bound have a root within limit: sqrt(|v|^2), correctly rounded, cannot
-/// exceed limit, so the cap needs no square root. Why the margin: limit^2 rounds to
+/// exceed limit, so the cap needs no square root (limit >= 0: a cap mu F_n, and mu >= 0 is
+/// checked where it is read). Why the margin: limit^2 rounds to
 /// limit^2 (1 + e), |e| <= u (u = 2^-53), and the margin's product rounds once more, so a
 /// square below limit^2 (1 - 1e-15) has its exact root below limit (1 - 3e-16), and a root
 /// below a representable limit rounds to at most limit. Where limit^2 is not a normal number
