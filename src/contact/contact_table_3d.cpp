@@ -1,6 +1,7 @@
 #include "contact/contact_table_3d.hpp"
 
 #include <algorithm>
+#include <compare>
 
 namespace blockdem {
 
@@ -35,10 +36,12 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
                              previous.begin() + static_cast<std::ptrdiff_t>(hi),
                              [&](const ContactPoint3d& p) { return bodies(p.key) < first_bodies; }) -
         previous.begin());
+    // One three-way comparison a probe: the probe that stops the walk also says whether it matched.
     for (std::size_t i = 0; i < count; ++i) {
         ContactPoint3d& p = run[i];
-        while (j < previous.size() && previous[j].key < p.key) ++j;
-        if (j < previous.size() && previous[j].key == p.key) {
+        std::strong_ordering order = std::strong_ordering::less;
+        while (j < n && (order = previous[j].key <=> p.key) < 0) ++j;
+        if (j < n && order == 0) {
             p.normal_dashpot_n = previous[j].normal_dashpot_n;
             p.shear = previous[j].shear;
             const double before = previous[j].stiffness_share;

@@ -129,11 +129,12 @@ bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         std::swap(here_polygon, next_polygon);
         count = clipped;
     }
-    polygon.clear();
+    // Each corner written into its slot: no capacity check a corner (the scratch keeps its size).
+    polygon.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         const FaceCorner& c = here_polygon[i];
-        polygon.push_back({origin_m + c.u_m * e_u + c.v_m * e_v + c.w_m * n, c.feature_incident, c.feature_reference,
-                           c.line_after, c.line_is_reference});
+        polygon[i] = {origin_m + c.u_m * e_u + c.v_m * e_v + c.w_m * n, c.feature_incident, c.feature_reference,
+                      c.line_after, c.line_is_reference};
     }
     return true;
 }

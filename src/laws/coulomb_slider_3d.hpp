@@ -7,6 +7,7 @@
 // is taken by the trapezoid so that the energy ledger closes.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/vec3.hpp"
 
@@ -28,9 +29,26 @@ struct ShearForce3d {
     double shear_dashpot_work_j = 0.0;  ///< [J] dissipated by the shear dashpot over the last interval
 };
 
-/// v scaled down to length at most limit (v itself when shorter).
-inline Vec3 capped_length(Vec3 v, double limit) {
-    const double l = length(v);
+/// Squares below this bound have a root within limit: sqrt(|v|^2), correctly rounded, cannot
+/// exceed limit, so the cap needs no square root (limit >= 0: a cap mu F_n, and mu >= 0 is
+/// checked where it is read). Why the margin: limit^2 rounds to
+/// limit^2 (1 + e), |e| <= u (u = 2^-53), and the margin's product rounds once more, so a
+/// square below limit^2 (1 - 1e-15) has its exact root below limit (1 - 3e-16), and a root
+/// below a representable limit rounds to at most limit. Where limit^2 is not a normal number
+/// (its relative error is then unbounded) or is NaN, the bound is -1: no square is below it and
+/// the square root decides.
+inline double surely_within_below(double limit) {
+    const double limit_squared = limit * limit;
+    return limit_squared >= std::numeric_limits<double>::min() ? limit_squared * (1.0 - 1e-15) : -1.0;
+}
+
+/// v scaled down to length at most limit (v itself when shorter). within_below =
+/// surely_within_below(limit) lets the usual case, well inside the cap, skip the square root:
+/// the same bits either way.
+inline Vec3 capped_length(Vec3 v, double limit, double within_below) {
+    const double length_squared = dot(v, v);
+    if (length_squared < within_below) return v;
+    const double l = std::sqrt(length_squared);
     return l > limit ? (l > 0.0 ? (limit / l) * v : Vec3{}) : v;
 }
 
@@ -50,26 +68,30 @@ inline ShearHistory3d carry_to_normal(ShearHistory3d h, Vec3 new_normal) {
 /// in the tangent plane, over the interval that ends now.
 inline ShearForce3d coulomb_slider_3d(double ks_N_m, double cs_N_s_m, double limit_n, Vec3 tangential_velocity_m_s,
                                       const ShearHistory3d& previous, double dt_s) {
-    ShearForce3d f;
+    // The cap's square roots only where a length can reach the cap (surely_within_below): a
+    // sticking point takes none. The trial's length is taken once, for the test and for the cap.
+    // Each branch builds its whole result at once, not a default one overwritten field by field.
+    const double within_below = surely_within_below(limit_n);
     const Vec3 last = previous.spring_n;
-    const Vec3 capped_last = capped_length(last, limit_n);
+    const Vec3 capped_last = capped_length(last, limit_n, within_below);
     const Vec3 increment_m = dt_s * tangential_velocity_m_s;
     const Vec3 trial = capped_last - ks_N_m * increment_m;
-    if (length(trial) > limit_n || !(capped_last == last)) {
-        f.sliding = true;
-        f.spring_n = capped_length(trial, limit_n);
-        f.total_n = f.spring_n;
-        const double work_on_bodies_j = 0.5 * dot(last + f.spring_n, increment_m);
+    const double trial_squared = dot(trial, trial);
+    const bool trial_within = trial_squared < within_below;
+    const double trial_length = trial_within ? 0.0 : std::sqrt(trial_squared);
+    const bool trial_over = !trial_within && trial_length > limit_n;
+    if (trial_over || !(capped_last == last)) {
+        const Vec3 spring_n = trial_over ? (limit_n / trial_length) * trial : trial;
+        const double work_on_bodies_j = 0.5 * dot(last + spring_n, increment_m);
         const double stored_change_j =
-            ks_N_m > 0.0 ? 0.5 * (dot(f.spring_n, f.spring_n) - dot(last, last)) / ks_N_m : 0.0;
-        f.friction_work_j = -work_on_bodies_j - stored_change_j;
-    } else {
-        f.spring_n = trial;
-        f.total_n = capped_length(trial - cs_N_s_m * tangential_velocity_m_s, limit_n);
-        f.dashpot_n = f.total_n - trial;
+            ks_N_m > 0.0 ? 0.5 * (dot(spring_n, spring_n) - dot(last, last)) / ks_N_m : 0.0;
+        // Sliding: no dashpot (its part is zero).
+        return {spring_n, spring_n, Vec3{}, true, -work_on_bodies_j - stored_change_j,
+                -0.5 * dot(previous.dashpot_n + Vec3{}, increment_m)};
     }
-    f.shear_dashpot_work_j = -0.5 * dot(previous.dashpot_n + f.dashpot_n, increment_m);
-    return f;
+    const Vec3 total_n = capped_length(trial - cs_N_s_m * tangential_velocity_m_s, limit_n, within_below);
+    const Vec3 dashpot_n = total_n - trial;
+    return {trial, total_n, dashpot_n, false, 0.0, -0.5 * dot(previous.dashpot_n + dashpot_n, increment_m)};
 }
 
 }  // namespace blockdem
