@@ -66,18 +66,23 @@ void update_body_geometry(World& w) {
     const double rounding_m = w.contact.rounding_m;
     if (rounding_m > 0.0) b.world_corner_offsets_m.resize(b.world_normals.size());
     // Normals are turned with the body rather than recomputed from the corners: no square root.
-    parallel_for(n, [&](std::ptrdiff_t i) {
-        const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
-        const Vec2 x = b.position_m[i];
-        const std::uint32_t first_part = b.part_begin[i];
-        const std::uint32_t parts = b.part_count[i];
-        for (std::uint32_t j = first_part; j < first_part + parts; ++j)
-            b.part_box_m[j] = rounding_m > 0.0
-                                  ? place_corners<true>(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r, rounding_m)
-                                  : place_corners<false>(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r);
-        // A concave body's outline is not one of its parts: placed too, for the outputs.
-        if (parts > 1) place_corners<false>(b, b.vertex_begin[i], b.vertex_count[i], x, r);
-    });
+    // (Rounded or not is decided once, not for every part.)
+    const auto place_bodies = [&]<bool rounded>() {
+        parallel_for(n, [&](std::ptrdiff_t i) {
+            const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
+            const Vec2 x = b.position_m[i];
+            const std::uint32_t first_part = b.part_begin[i];
+            const std::uint32_t parts = b.part_count[i];
+            for (std::uint32_t j = first_part; j < first_part + parts; ++j)
+                b.part_box_m[j] = place_corners<rounded>(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r, rounding_m);
+            // A concave body's outline is not one of its parts: placed too, for the outputs.
+            if (parts > 1) place_corners<false>(b, b.vertex_begin[i], b.vertex_count[i], x, r);
+        });
+    };
+    if (rounding_m > 0.0)
+        place_bodies.operator()<true>();
+    else
+        place_bodies.operator()<false>();
     b.corner_offsets_rounding_m = rounding_m;
 }
 
