@@ -22,25 +22,40 @@ namespace {
 // part, rounding_m > 0), each corner's core offset too (rounded_contact.hpp), from the normals
 // as placed: once per body and step, not four times per pair in the narrow phase. (In one loop:
 // a second pass over the normals cost as much as the offsets saved.)
+// Each vector is held as the two lanes (x, y) of one register (GCC's vector extension, which
+// Clang shares; any target). Left to itself GCC paired x and y with shuffles and reloads, and
+// scalar code needs a register copy for nearly each operation: about 70 instructions a rounded
+// corner either way. The operations are Rotation::apply's, dot's and rounded_corner_offset's,
+// lane by lane, so the bits are the same: c x - s y is c x + (-s) y exactly, and
+// (v < lo ? v : lo) is std::min(lo, v).
 template <bool rounded>
 [[gnu::always_inline]] inline Aabb place_corners(Bodies& b, std::uint32_t first, std::uint32_t count, Vec2 x,
                                                  const Rotation& r, double rounding_m = 0.0) {
-    Aabb box{{INFINITY, INFINITY}, {-INFINITY, -INFINITY}};
-    Vec2 before;  // the normal of the edge before corner k (for the first corner, the last edge's)
-    if constexpr (rounded) before = r.apply(b.local_normals[first + count - 1]);
+    using Lanes = double __attribute__((vector_size(16)));  // (x, y) of one vector
+    const auto lanes = [](Vec2 v) { return Lanes{v.x, v.y}; };
+    const auto vec = [](Lanes v) { return Vec2{v[0], v[1]}; };
+    const Lanes turn_x{r.c, r.s};   // where the local x axis goes
+    const Lanes turn_y{-r.s, r.c};  // where the local y axis goes
+    const auto turn = [&](Vec2 v) { return v.x * turn_x + v.y * turn_y; };
+    const Lanes position = lanes(x);
+    Lanes lo{INFINITY, INFINITY};
+    Lanes hi{-INFINITY, -INFINITY};
+    Lanes before{};  // the normal of the edge before corner k (for the first corner, the last edge's)
+    if constexpr (rounded) before = turn(b.local_normals[first + count - 1]);
     for (std::uint32_t k = first; k < first + count; ++k) {
-        const Vec2 v = x + r.apply(b.local_vertices_m[k]);
-        b.world_vertices_m[k] = v;
-        const Vec2 normal = r.apply(b.local_normals[k]);
-        b.world_normals[k] = normal;
+        const Lanes v = position + turn(b.local_vertices_m[k]);
+        b.world_vertices_m[k] = vec(v);
+        const Lanes normal = turn(b.local_normals[k]);
+        b.world_normals[k] = vec(normal);
         if constexpr (rounded) {
-            b.world_corner_offsets_m[k] = rounded_corner_offset(before, normal, rounding_m);
+            const Lanes product = before * normal;
+            b.world_corner_offsets_m[k] = vec((rounding_m / (1.0 + (product[0] + product[1]))) * (before + normal));
             before = normal;
         }
-        box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y)};
-        box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y)};
+        lo = v < lo ? v : lo;
+        hi = hi < v ? v : hi;
     }
-    return box;
+    return {vec(lo), vec(hi)};
 }
 
 }  // namespace
@@ -51,18 +66,23 @@ void update_body_geometry(World& w) {
     const double rounding_m = w.contact.rounding_m;
     if (rounding_m > 0.0) b.world_corner_offsets_m.resize(b.world_normals.size());
     // Normals are turned with the body rather than recomputed from the corners: no square root.
-    parallel_for(n, [&](std::ptrdiff_t i) {
-        const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
-        const Vec2 x = b.position_m[i];
-        const std::uint32_t first_part = b.part_begin[i];
-        const std::uint32_t parts = b.part_count[i];
-        for (std::uint32_t j = first_part; j < first_part + parts; ++j)
-            b.part_box_m[j] = rounding_m > 0.0
-                                  ? place_corners<true>(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r, rounding_m)
-                                  : place_corners<false>(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r);
-        // A concave body's outline is not one of its parts: placed too, for the outputs.
-        if (parts > 1) place_corners<false>(b, b.vertex_begin[i], b.vertex_count[i], x, r);
-    });
+    // (Rounded or not is decided once, not for every part.)
+    const auto place_bodies = [&]<bool rounded>() {
+        parallel_for(n, [&](std::ptrdiff_t i) {
+            const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
+            const Vec2 x = b.position_m[i];
+            const std::uint32_t first_part = b.part_begin[i];
+            const std::uint32_t parts = b.part_count[i];
+            for (std::uint32_t j = first_part; j < first_part + parts; ++j)
+                b.part_box_m[j] = place_corners<rounded>(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r, rounding_m);
+            // A concave body's outline is not one of its parts: placed too, for the outputs.
+            if (parts > 1) place_corners<false>(b, b.vertex_begin[i], b.vertex_count[i], x, r);
+        });
+    };
+    if (rounding_m > 0.0)
+        place_bodies.operator()<true>();
+    else
+        place_bodies.operator()<false>();
     b.corner_offsets_rounding_m = rounding_m;
 }
 
