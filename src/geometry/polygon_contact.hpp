@@ -20,7 +20,9 @@
 // distance between the two points and l = 1% of the shorter of the two edges, so its force
 // fades continuously to zero.
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <new>
 
 #include "geometry/vec2.hpp"
 
@@ -48,11 +50,28 @@ struct ContactGeometry {
     std::uint32_t feature = 0; ///< make_feature(owner, corner)
 };
 
+/// Room for a manifold's two points, left unset until the narrow phase writes a point: the
+/// narrow phase makes a manifold for every pair it tests, and zeroing both points each time
+/// (their members have default values) cost 1 % of a jointed wall's step. Only the points below
+/// the manifold's count are ever written or read. (The bytes hold the points as implicitly
+/// created objects: ContactGeometry is an aggregate of plain values.)
+class ManifoldPoints {
+public:
+    ManifoldPoints() {}  // (user-provided so that ContactManifold{} leaves the points unset too)
+    ContactGeometry& operator[](std::uint32_t i) { return std::launder(reinterpret_cast<ContactGeometry*>(bytes_))[i]; }
+    const ContactGeometry& operator[](std::uint32_t i) const {
+        return std::launder(reinterpret_cast<const ContactGeometry*>(bytes_))[i];
+    }
+
+private:
+    alignas(ContactGeometry) std::byte bytes_[2 * sizeof(ContactGeometry)];
+};
+
 /// The contact between polygons a and b: a shared normal (from a to b) and 0 to 2 points.
 struct ContactManifold {
     Vec2 normal;                  ///< unit normal pointing from a to b
     std::uint32_t count = 0;      ///< number of points (0: separated)
-    ContactGeometry points[2];
+    ManifoldPoints points;        ///< points[0] to points[count - 1]; the others unset
     std::uint32_t reference = 0;  ///< make_feature(owner, edge) of the reference edge, for hysteresis
     double stiffness_scale = 1.0; ///< [-] multiplies the contact's stiffnesses (short overlaps, see above)
 };
