@@ -20,9 +20,7 @@
 // distance between the two points and l = 1% of the shorter of the two edges, so its force
 // fades continuously to zero.
 #include <cmath>
-#include <cstddef>
 #include <cstdint>
-#include <new>
 
 #include "geometry/vec2.hpp"
 
@@ -53,18 +51,19 @@ struct ContactGeometry {
 /// Room for a manifold's two points, left unset until the narrow phase writes a point: the
 /// narrow phase makes a manifold for every pair it tests, and zeroing both points each time
 /// (their members have default values) cost 1 % of a jointed wall's step. Only the points below
-/// the manifold's count are ever written or read. (The bytes hold the points as implicitly
-/// created objects: ContactGeometry is an aggregate of plain values.)
+/// the manifold's count are ever written or read. (A union member, so that no constructor runs;
+/// not std::byte storage behind std::launder, which kept GCC from holding the points in
+/// registers and cost as much as the zeroing saved.)
 class ManifoldPoints {
 public:
     ManifoldPoints() {}  // (user-provided so that ContactManifold{} leaves the points unset too)
-    ContactGeometry& operator[](std::uint32_t i) { return std::launder(reinterpret_cast<ContactGeometry*>(bytes_))[i]; }
-    const ContactGeometry& operator[](std::uint32_t i) const {
-        return std::launder(reinterpret_cast<const ContactGeometry*>(bytes_))[i];
-    }
+    ContactGeometry& operator[](std::uint32_t i) { return slots_[i]; }
+    const ContactGeometry& operator[](std::uint32_t i) const { return slots_[i]; }
 
 private:
-    alignas(ContactGeometry) std::byte bytes_[2 * sizeof(ContactGeometry)];
+    union {
+        ContactGeometry slots_[2];
+    };
 };
 
 /// The contact between polygons a and b: a shared normal (from a to b) and 0 to 2 points.
