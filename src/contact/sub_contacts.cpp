@@ -43,10 +43,13 @@ void keep_face_or_trim(ContactManifold& manifold, double gap_m, std::uint32_t n)
         if (manifold.points[i].overlap_m > -gap_m) manifold.points[kept++] = manifold.points[i];
     if (kept == manifold.count) return;
     manifold.count = kept;
-    if (kept == 0)
-        manifold = ContactManifold{};
-    else
-        manifold.stiffness_scale = 1.0;  // (a one-point contact is not softened: polygon_contact.cpp)
+    // (No points: the manifold's values as ContactManifold{} has them, set one by one, since the
+    // unset point storage is not worth copying.)
+    if (kept == 0) {
+        manifold.normal = Vec2{};
+        manifold.reference = 0;
+    }
+    manifold.stiffness_scale = 1.0;  // (a one-point contact is not softened: polygon_contact.cpp)
 }
 
 DroppedSubPoints drop_sub_points(SubContacts& sub) {

@@ -185,7 +185,7 @@ std::vector<StiffnessPoint> start_stiffness_points(const World& w) {
         for (std::uint32_t k = 0; k < t.manifold.count; ++k)
             points.push_back(stiffness_point(w, t.a, t.b, t.manifold.points[k].point_m, t.manifold.normal,
                                              t.manifold.count, sharing, 1.0, t.manifold.points[0].point_m,
-                                             t.manifold.points[1].point_m));
+                                             t.manifold.points[t.manifold.count - 1].point_m));  // (set points only)
     }
     for (std::uint32_t i = 0; i < b.size(); ++i)
         if (b.kind[i] == BodyKind::dynamic && !touches[i]) add_landing(w, i, points);

@@ -35,8 +35,15 @@ TEST(SubContacts, FaceKeepsBothEndsWhileAnInteriorPointIsWithinTheGap) {
     EXPECT_EQ(trimmed.stiffness_scale, 1.0);
     // Both ends beyond the gap: nothing.
     ContactManifold apart = face(-2e-4, -3e-4);
+    apart.reference = make_feature(1, 0);
     keep_face_or_trim(apart, 1e-4, 8);
     EXPECT_EQ(apart.count, 0u);
+    // ... with the values of a manifold of no points (ContactManifold{}), set field by field.
+    const ContactManifold none{};
+    EXPECT_EQ(apart.normal.x, none.normal.x);
+    EXPECT_EQ(apart.normal.y, none.normal.y);
+    EXPECT_EQ(apart.reference, none.reference);
+    EXPECT_EQ(apart.stiffness_scale, none.stiffness_scale);
 }
 
 // A pair with two ends 0.3 m apart along x, at height y.
