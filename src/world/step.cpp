@@ -28,9 +28,12 @@ namespace {
 // corner either way. The operations are Rotation::apply's, dot's and rounded_corner_offset's,
 // lane by lane, so the bits are the same: c x - s y is c x + (-s) y exactly, and
 // (v < lo ? v : lo) is std::min(lo, v).
-template <bool rounded>
-[[gnu::always_inline]] inline Aabb place_corners(Bodies& b, std::uint32_t first, std::uint32_t count, Vec2 x,
+// fixed_count (0: any): the corner count known when compiled, so that the loop is unrolled
+// (quadrilaterals, most blocks: no loop counter, no register copies between corners).
+template <bool rounded, std::uint32_t fixed_count = 0>
+[[gnu::always_inline]] inline Aabb place_corners(Bodies& b, std::uint32_t first, std::uint32_t any_count, Vec2 x,
                                                  const Rotation& r, double rounding_m = 0.0) {
+    const std::uint32_t count = fixed_count != 0 ? fixed_count : any_count;
     using Lanes = double __attribute__((vector_size(16)));  // (x, y) of one vector
     const auto lanes = [](Vec2 v) { return Lanes{v.x, v.y}; };
     const auto vec = [](Lanes v) { return Vec2{v[0], v[1]}; };
@@ -42,10 +45,14 @@ template <bool rounded>
     Lanes hi{-INFINITY, -INFINITY};
     Lanes before{};  // the normal of the edge before corner k (for the first corner, the last edge's)
     if constexpr (rounded) before = turn(b.local_normals[first + count - 1]);
+    // (Unrolled, the last normal is the first one's before, not turned twice: the stores between
+    // keep the compiler from seeing that itself.)
+    const Lanes last_normal = before;
     for (std::uint32_t k = first; k < first + count; ++k) {
         const Lanes v = position + turn(b.local_vertices_m[k]);
         b.world_vertices_m[k] = vec(v);
-        const Lanes normal = turn(b.local_normals[k]);
+        const bool known = rounded && fixed_count != 0 && k == first + count - 1;
+        const Lanes normal = known ? last_normal : turn(b.local_normals[k]);
         b.world_normals[k] = vec(normal);
         if constexpr (rounded) {
             const Lanes product = before * normal;
@@ -68,13 +75,19 @@ void update_body_geometry(World& w) {
     // Normals are turned with the body rather than recomputed from the corners: no square root.
     // (Rounded or not is decided once, not for every part.)
     const auto place_bodies = [&]<bool rounded>() {
-        parallel_for(n, [&](std::ptrdiff_t i) {
+        // (Inlined into the loop by force: with quadrilaterals unrolled, the compiler left it a
+        // call per body, which cost as much as the unrolling saved.)
+        parallel_for(n, [&](std::ptrdiff_t i) __attribute__((always_inline)) {
             const Rotation r = Rotation::from_angle(b.rotation_rad[i]);
             const Vec2 x = b.position_m[i];
             const std::uint32_t first_part = b.part_begin[i];
             const std::uint32_t parts = b.part_count[i];
-            for (std::uint32_t j = first_part; j < first_part + parts; ++j)
-                b.part_box_m[j] = place_corners<rounded>(b, b.part_vertex_begin[j], b.part_vertex_count[j], x, r, rounding_m);
+            for (std::uint32_t j = first_part; j < first_part + parts; ++j) {
+                const std::uint32_t first = b.part_vertex_begin[j];
+                const std::uint32_t count = b.part_vertex_count[j];
+                b.part_box_m[j] = count == 4 ? place_corners<rounded, 4>(b, first, count, x, r, rounding_m)
+                                             : place_corners<rounded>(b, first, count, x, r, rounding_m);
+            }
             // A concave body's outline is not one of its parts: placed too, for the outputs.
             if (parts > 1) place_corners<false>(b, b.vertex_begin[i], b.vertex_count[i], x, r);
         });
