@@ -17,8 +17,9 @@ Vec3 vec3(TableReader& t, const std::string& key, const std::string& what) {
 }
 
 std::vector<Vec3> vec3_list(TableReader& t, const std::string& key) {
-    t.has(key);
+    const bool given = t.has(key);
     const toml::array* rows = t.raw().get_as<toml::array>(key);
+    if (!rows && given) t.fail(key, "must be a list of [x, y, z] points in m");
     if (!rows) t.fail_missing(key, " (a list of [x, y, z] in m)");
     std::vector<Vec3> points;
     for (std::size_t i = 0; i < rows->size(); ++i) {

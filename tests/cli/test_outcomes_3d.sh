@@ -206,6 +206,13 @@ done
     >"$tmp/bad.txt" 2>&1
 [[ $? -eq 2 ]] && grep -q "simulation.domain': the first corner must be below the second" "$tmp/bad.txt" \
     || fail "an inverted domain: $(cat "$tmp/bad.txt")"
+"$bin" run "$tmp/left.toml" --out "$tmp/bad_domain3" -q --set 'simulation.domain="big"' >"$tmp/bad.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "simulation.domain': must be a list of \[x, y, z\] points in m" "$tmp/bad.txt" \
+    || fail "a domain that is not a list: $(cat "$tmp/bad.txt")"
+"$bin" run "$tmp/left.toml" --out "$tmp/bad_domain4" -q --set 'simulation.domain=[[-1.0, -1.0], [1.0, 1.0]]' \
+    >"$tmp/bad.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "simulation.domain': point 0 must be three numbers" "$tmp/bad.txt" \
+    || fail "a 2-D domain in 3-D: $(cat "$tmp/bad.txt")"
 #    A given domain: the block leaves as soon as its box is wholly below z = -0.2 m.
 "$bin" run "$tmp/left.toml" --out "$tmp/given" -q --set 'simulation.domain=[[-1.0, -1.0, -0.2], [1.0, 1.0, 1.0]]' \
     >"$tmp/log" 2>&1 || fail "a given domain: $(cat "$tmp/log")"
