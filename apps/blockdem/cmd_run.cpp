@@ -50,6 +50,24 @@ std::string outcome_words(const nlohmann::json& body) {
     return fmt::format("{} (from t = {:.3f} s)", outcome == "rocked_and_slid" ? "rocked and slid" : outcome, t);
 }
 
+// Each assembly's collapse, then all blocks' (both dimensions; docs/outputs.md).
+void print_collapse(const nlohmann::json& summary) {
+    const auto& collapse = summary["collapse"];
+    for (const auto& c : collapse) {
+        // ("all" repeats a lone assembly that holds every block.)
+        const bool repeats = c["group"] == "all" && collapse.size() == 2 && collapse[0]["blocks"] == c["blocks"];
+        if (c["blocks"].get<std::size_t>() < 2 || repeats) continue;
+        fmt::print("{}: {} of {} blocks fell, {} overturned, {} left the model; {:.0f}% of the mass displaced{}\n",
+                   c["group"] == "all" ? std::string("all blocks") : "assembly " + c["group"].get<std::string>(),
+                   c["fell"].get<std::size_t>(), c["blocks"].get<std::size_t>(), c["overturned"].get<std::size_t>(),
+                   c["left_model"].get<std::size_t>(), 100.0 * c["displaced_mass_fraction"].get<double>(),
+                   c["first_to_go"].is_string() ? fmt::format("; first to go: {} at t = {:.3f} s",
+                                                              c["first_to_go"].get<std::string>(),
+                                                              c["first_to_go_time_s"].get<double>())
+                                                : std::string());
+    }
+}
+
 // A 3-D run's lines (docs/3d.md, "Outputs"): one a body, or for more than 12 bodies the count
 // that overturned and the largest tilt and slip (summary.json has every body).
 void print_outcome_3d(const nlohmann::json& summary, const std::string& out_dir) {
@@ -78,6 +96,7 @@ void print_outcome_3d(const nlohmann::json& summary, const std::string& out_dir)
                    bodies.size(), fmt::join(counts, ", "), bodies[tilted]["peak_tilt_rad"].get<double>(),
                    bodies[tilted]["name"].get<std::string>(), slip(bodies[slid]), bodies[slid]["name"].get<std::string>());
     }
+    print_collapse(summary);
     fmt::print("energy balance error {:.3g} of the largest term; results in {}/ (history.csv, energy.csv, summary.json, "
                "vtk/bodies.pvd)\n",
                summary["energy_j"]["balance_error_relative"].get<double>(), out_dir);
@@ -94,20 +113,7 @@ void print_outcome(const nlohmann::json& summary, const std::string& out_dir) {
                    body["peak_abs_base_slip_m"].get<double>(), summary["displacements_relative_to"].get<std::string>(),
                    body["peak_abs_relative_displacement_m"].get<double>());
     }
-    const auto& collapse = summary["collapse"];
-    for (const auto& c : collapse) {
-        // ("all" repeats a lone assembly that holds every block.)
-        const bool repeats = c["group"] == "all" && collapse.size() == 2 && collapse[0]["blocks"] == c["blocks"];
-        if (c["blocks"].get<std::size_t>() < 2 || repeats) continue;
-        fmt::print("{}: {} of {} blocks fell, {} overturned, {} left the model; {:.0f}% of the mass displaced{}\n",
-                   c["group"] == "all" ? std::string("all blocks") : "assembly " + c["group"].get<std::string>(),
-                   c["fell"].get<std::size_t>(), c["blocks"].get<std::size_t>(), c["overturned"].get<std::size_t>(),
-                   c["left_model"].get<std::size_t>(), 100.0 * c["displaced_mass_fraction"].get<double>(),
-                   c["first_to_go"].is_string() ? fmt::format("; first to go: {} at t = {:.3f} s",
-                                                              c["first_to_go"].get<std::string>(),
-                                                              c["first_to_go_time_s"].get<double>())
-                                                : std::string());
-    }
+    print_collapse(summary);
     fmt::print("energy balance error {:.3g} of the largest term; results in {}/ (history.csv, summary.json)\n",
                summary["energy_j"]["balance_error_relative"].get<double>(), out_dir);
     if (summary.contains("warnings"))

@@ -96,6 +96,7 @@ std::vector<Vec3> centered_prism(std::vector<Vec2> polygon_m, double height_m) {
 struct BodyDef3d {
     std::string name;
     std::string key;               ///< the table it came from (bodies.NAME, assemblies.NAME), for messages
+    std::string assembly;          ///< the assembly's name (its collapse group); "" for [[bodies]]
     BodyKind3d kind = BodyKind3d::dynamic;
     std::vector<Vec3> vertices_m;  ///< [m] world frame at t = 0
     std::vector<std::vector<std::size_t>> faces;  ///< as listed (polyhedron `faces`); empty: from the hull
@@ -248,7 +249,10 @@ std::vector<BodyDef3d> read_assembly_3d(TableReader t, std::vector<std::string>&
                                     : type == "brick_wall"     ? read_brick_wall(t, name)
                                     : type == "rock_mass"      ? generated_bodies(read_rock_mass_3d(t, name), notes)
                                                                : generated_bodies(read_random_packing_3d(t, name), notes);
-    for (BodyDef3d& b : bodies) b.key = t.path();
+    for (BodyDef3d& b : bodies) {
+        b.key = t.path();
+        b.assembly = name;
+    }
     t.reject_unknown_keys();
     return bodies;
 }
@@ -360,7 +364,7 @@ World3d build_world_3d(TableReader& top, const std::filesystem::path& file, cons
             RigidBody3d b = d.faces.empty() ? make_rigid_body_3d(d.name, d.vertices_m, d.density_kg_m3)
                                             : make_rigid_body_3d(d.name, d.vertices_m, d.faces, d.density_kg_m3);
             set_initial_velocity(b, d.velocity_m_s, d.angular_velocity_rad_s);
-            add_body(w, std::move(b), d.kind);
+            add_body(w, std::move(b), d.kind, d.assembly);
         } catch (const ModelError& e) {
             throw model_error(file, d.key, e.what());
         }

@@ -34,45 +34,6 @@ void add_outcome(nlohmann::json& j, const World& w, const BodyRecord& record, co
         j["left_model"] = {{"time_s", record.left_model_time_s}, {"position_m", point(record.left_model_position_m)}};
 }
 
-nlohmann::json collapse_summary(const World& w, const CollapseSummary& c) {
-    return {{"group", c.group},
-            {"blocks", c.blocks},
-            {"fell", c.fell},
-            {"overturned", c.overturned},
-            {"left_model", c.left_model},
-            {"displaced_mass_fraction", c.displaced_mass_fraction},
-            {"first_to_go", c.first_to_go >= 0 ? nlohmann::json(w.bodies.name[static_cast<std::size_t>(c.first_to_go)])
-                                               : nlohmann::json(nullptr)},
-            {"first_to_go_time_s", time_or_null(c.first_to_go_time_s)}};
-}
-
-// One collapse summary per assembly, in the order they were generated, then one of every
-// dynamic body ("all").
-nlohmann::json collapse_summaries(const World& w, const std::vector<BodyRecord>& records,
-                                  const std::vector<ClassifiedOutcome>& outcomes, const OutcomeThresholds& t) {
-    const Bodies& b = w.bodies;
-    std::vector<std::string> groups;
-    std::vector<std::vector<std::uint32_t>> members;
-    std::vector<std::uint32_t> all;
-    for (std::uint32_t i = 0; i < b.size(); ++i) {
-        if (b.kind[i] != BodyKind::dynamic) continue;
-        all.push_back(i);
-        if (b.assembly[i].empty()) continue;
-        const auto found = std::find(groups.begin(), groups.end(), b.assembly[i]);
-        if (found == groups.end()) {
-            groups.push_back(b.assembly[i]);
-            members.push_back({i});
-        } else {
-            members[static_cast<std::size_t>(found - groups.begin())].push_back(i);
-        }
-    }
-    nlohmann::json out = nlohmann::json::array();
-    for (std::size_t g = 0; g < groups.size(); ++g)
-        out.push_back(collapse_summary(w, summarize_collapse(groups[g], members[g], records, outcomes, t)));
-    out.push_back(collapse_summary(w, summarize_collapse("all", all, records, outcomes, t)));
-    return out;
-}
-
 nlohmann::json domain_summary(const World& w) {
     const ModelDomain& d = w.domain;
     nlohmann::json left = nlohmann::json::array();
@@ -191,7 +152,8 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
     s["bodies"] = bodies;
     s["checks"] = run_checks(w);
     s["warnings"] = run_warnings(w);
-    s["collapse"] = collapse_summaries(w, records, outcomes, monitor.thresholds());
+    s["collapse"] = collapse_json(summarize_collapse_by_group(w.bodies.assembly, records, outcomes, monitor.thresholds()),
+                                   w.bodies.name);
     s["domain"] = domain_summary(w);
     s["outcome_thresholds"] = thresholds_summary(monitor.thresholds());
     s["gravity"] = gravity_summary(w);
@@ -218,6 +180,21 @@ nlohmann::json settling_summary(const std::optional<SettlingRecord>& settled) {
             {"largest_displacement_body", s.largest_move_body},
             {"largest_rotation_rad", s.largest_turn_rad},
             {"largest_rotation_body", s.largest_turn_body}};
+}
+
+nlohmann::json collapse_json(const std::vector<CollapseSummary>& groups, const std::vector<std::string>& body_names) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const CollapseSummary& c : groups)
+        out.push_back({{"group", c.group},
+                       {"blocks", c.blocks},
+                       {"fell", c.fell},
+                       {"overturned", c.overturned},
+                       {"left_model", c.left_model},
+                       {"displaced_mass_fraction", c.displaced_mass_fraction},
+                       {"first_to_go", c.first_to_go >= 0 ? nlohmann::json(body_names[static_cast<std::size_t>(c.first_to_go)])
+                                                          : nlohmann::json(nullptr)},
+                       {"first_to_go_time_s", time_or_null(c.first_to_go_time_s)}});
+    return out;
 }
 
 }  // namespace blockdem

@@ -72,24 +72,6 @@ nlohmann::json domain_3d(const World3d& w) {
             {"left", left}};
 }
 
-// Every dynamic body's collapse (3-D bodies carry no assembly name yet: one group, "all").
-nlohmann::json collapse_3d(const World3d& w, const std::vector<BodyRecord>& records, const std::vector<ClassifiedOutcome>& outcomes,
-                           const OutcomeThresholds& t) {
-    std::vector<std::uint32_t> all;
-    for (std::uint32_t i = 0; i < w.bodies.size(); ++i)
-        if (w.kinds[i] == BodyKind3d::dynamic) all.push_back(i);
-    const CollapseSummary c = summarize_collapse("all", all, records, outcomes, t);
-    return nlohmann::json::array(
-        {{{"group", c.group},
-          {"blocks", c.blocks},
-          {"fell", c.fell},
-          {"overturned", c.overturned},
-          {"left_model", c.left_model},
-          {"displaced_mass_fraction", c.displaced_mass_fraction},
-          {"first_to_go", c.first_to_go >= 0 ? nlohmann::json(w.bodies[static_cast<std::size_t>(c.first_to_go)].name) : nlohmann::json(nullptr)},
-          {"first_to_go_time_s", time_or_null(c.first_to_go_time_s)}}});
-}
-
 nlohmann::json thresholds_3d(const OutcomeThresholds& t) {
     return {{"rocking_ratio", t.rocking_ratio},     {"slip_ratio", t.slip_ratio},
             {"fall_drop_ratio", t.fall_drop_ratio}, {"displaced_ratio", t.displaced_ratio},
@@ -165,7 +147,9 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
              watch.first_exceeded_s >= 0.0 ? nlohmann::json(watch.first_exceeded_s) : nlohmann::json(nullptr)}}}}}};
     if (const std::string warning = live_time_step_warning_3d(w); !warning.empty()) summary["warnings"].push_back(warning);
     summary["settling"] = settling_summary(s.settled);
-    summary["collapse"] = collapse_3d(w, records, outcomes, monitor.thresholds());
+    std::vector<std::string> names;
+    for (const RigidBody3d& b : w.bodies) names.push_back(b.name);
+    summary["collapse"] = collapse_json(summarize_collapse_by_group(w.assembly, records, outcomes, monitor.thresholds()), names);
     summary["outcome_thresholds"] = thresholds_3d(monitor.thresholds());
     if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;
     summary["domain"] = domain_3d(w);

@@ -129,4 +129,30 @@ CollapseSummary summarize_collapse(const std::string& group, const std::vector<s
     return c;
 }
 
+std::vector<CollapseSummary> summarize_collapse_by_group(const std::vector<std::string>& group_of_body,
+                                                         const std::vector<BodyRecord>& records,
+                                                         const std::vector<ClassifiedOutcome>& outcomes,
+                                                         const OutcomeThresholds& thresholds) {
+    std::vector<std::string> groups;
+    std::vector<std::vector<std::uint32_t>> members;
+    std::vector<std::uint32_t> all;
+    for (std::uint32_t i = 0; i < records.size(); ++i) {
+        if (!records[i].dynamic) continue;
+        all.push_back(i);
+        if (i >= group_of_body.size() || group_of_body[i].empty()) continue;
+        const auto found = std::find(groups.begin(), groups.end(), group_of_body[i]);
+        if (found == groups.end()) {
+            groups.push_back(group_of_body[i]);
+            members.push_back({i});
+        } else {
+            members[static_cast<std::size_t>(found - groups.begin())].push_back(i);
+        }
+    }
+    std::vector<CollapseSummary> out;
+    for (std::size_t g = 0; g < groups.size(); ++g)
+        out.push_back(summarize_collapse(groups[g], members[g], records, outcomes, thresholds));
+    out.push_back(summarize_collapse("all", all, records, outcomes, thresholds));
+    return out;
+}
+
 }  // namespace blockdem

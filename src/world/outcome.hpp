@@ -102,4 +102,12 @@ CollapseSummary summarize_collapse(const std::string& group, const std::vector<s
                                    const std::vector<BodyRecord>& records, const std::vector<ClassifiedOutcome>& outcomes,
                                    const OutcomeThresholds& thresholds);
 
+/// The collapse of each assembly, in the order its first dynamic body comes, then of every
+/// dynamic body ("all"). group_of_body[i]: the assembly that made body i ("" for none: it is only
+/// in "all"); the same length as records.
+std::vector<CollapseSummary> summarize_collapse_by_group(const std::vector<std::string>& group_of_body,
+                                                         const std::vector<BodyRecord>& records,
+                                                         const std::vector<ClassifiedOutcome>& outcomes,
+                                                         const OutcomeThresholds& thresholds);
+
 }  // namespace blockdem

@@ -2,7 +2,8 @@
 
 namespace blockdem {
 
-std::uint32_t add_body(World3d& w, RigidBody3d body, BodyKind3d kind) {
+std::uint32_t add_body(World3d& w, RigidBody3d body, BodyKind3d kind, std::string assembly) {
+    w.assembly.push_back(std::move(assembly));
     w.edges.push_back(polyhedron_edges(body.shape));
     w.box_frames.push_back(box_frame(body.shape, w.edges.back()));
     w.rest_positions_m.push_back(body.position_m);

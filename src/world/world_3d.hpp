@@ -85,6 +85,7 @@ struct World3d {
     std::vector<PolyhedronEdges> edges;     ///< per body, numbered once
     std::vector<BoxFrame3d> box_frames;     ///< per body: a box's frame for the box-box test, or is_box = false
     std::vector<Vec3> rest_positions_m;     ///< [m] a driven body's centroid with the table at rest
+    std::vector<std::string> assembly;      ///< per body, the [[assemblies]] entry that made it ("" for [[bodies]])
     ContactParameters contact;
     TableMotion3d table;
     double gravity_m_s2 = 9.81;             ///< [m/s^2] along -z
@@ -101,7 +102,7 @@ struct World3d {
 };
 
 /// Adds a body (made by make_rigid_body_3d) and returns its index.
-std::uint32_t add_body(World3d& w, RigidBody3d body, BodyKind3d kind);
+std::uint32_t add_body(World3d& w, RigidBody3d body, BodyKind3d kind, std::string assembly = {});
 
 /// Total linear momentum [kg m/s] and angular momentum about the origin [kg m^2/s] of the dynamic
 /// bodies, from the half-step velocities and angular momenta of the last kick and the positions

@@ -11,6 +11,7 @@
 #             drops 0.5 m onto the table, which never held it up;
 #   left_model: the fell scene without the table (below);
 #   overturned: the slender block of test_run_3d.sh (0.2 x 0.2 x 1 m, 0.6 g one-sine pulse);
+#   the collapse by assembly: a slender and a squat drum column on one table (below);
 # [outcomes] thresholds are read in 3-D (a large rocking_ratio makes the rocking box "stable").
 # Usage: test_outcomes_3d.sh BLOCKDEM
 set -u
@@ -237,6 +238,71 @@ assert s['outcome_thresholds']['rocking_ratio'] == 0.9
 [[ $? -eq 2 ]] && grep -q "rocking_rato" "$tmp/bad.txt" || fail "an unknown [outcomes] key is not refused by name: $(cat "$tmp/bad.txt")"
 "$bin" run "$tmp/rocked.toml" --out "$tmp/bad2" -q --set outcomes.slip_ratio=-1 >"$tmp/bad2.txt" 2>&1
 [[ $? -eq 2 ]] && grep -q "outcomes.slip_ratio': must be >= 0" "$tmp/bad2.txt" || fail "a negative [outcomes] value: $(cat "$tmp/bad2.txt")"
+
+# Collapse by assembly: two drum columns on one table, each its own group, then "all".
+#   slender: two drums 0.08 m across, 0.8 m tall in all (tan alpha = 0.1): a 0.6 g one-sine
+#            pulse is six times the uplift acceleration g tan(alpha), far above Housner's
+#            overturning threshold for this size and period: it must lose its blocks;
+#   squat:   two drums 0.6 m across, 0.2 m tall in all: uplift needs g b / h = 3 g and sliding
+#            mu g = 0.8 g, both above 0.6 g: nothing of it may fail.
+cat > "$tmp/columns.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 2.0
+output_interval = 0.01
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.8
+e = 0.3
+h_s = 0.3
+[[bodies]]
+name = "table"
+kind = "driven"
+shape = "box"
+size = [3.0, 1.5, 0.2]
+position = [0.0, 0.0, -0.1]
+[[assemblies]]
+name = "slender"
+type = "drum_column"
+drums = 2
+sides = 8
+radius = 0.04
+height = 0.4
+base = [-0.8, 0.0, 0.0]
+density = 2700.0
+[[assemblies]]
+name = "squat"
+type = "drum_column"
+drums = 2
+sides = 8
+radius = 0.3
+height = 0.1
+base = [0.8, 0.0, 0.0]
+density = 2700.0
+[table_motion.x]
+type = "sine"
+amplitude = 0.6
+unit = "g"
+frequency = 2.0
+cycles = 1
+TOML
+"$bin" run "$tmp/columns.toml" --out "$tmp/columns" >"$tmp/columns.txt" 2>&1 || fail "two columns: $(cat "$tmp/columns.txt")"
+/usr/bin/python3 - "$tmp/columns/summary.json" <<'PY' || fail "the collapse groups of two columns"
+import json, sys
+c = {g["group"]: g for g in json.load(open(sys.argv[1]))["collapse"]}
+assert list(c) == ["slender", "squat", "all"], list(c)
+assert c["slender"]["blocks"] == 2 and c["squat"]["blocks"] == 2 and c["all"]["blocks"] == 4, c
+failed = lambda g: g["fell"] + g["overturned"] + g["left_model"]
+assert failed(c["slender"]) >= 1 and c["slender"]["first_to_go"].startswith("slender_"), c["slender"]
+assert failed(c["squat"]) == 0 and c["squat"]["first_to_go"] is None and c["squat"]["displaced_mass_fraction"] == 0.0, c["squat"]
+for k in ("fell", "overturned", "left_model"):
+    assert c["all"][k] == c["slender"][k] + c["squat"][k], (k, c)
+assert c["all"]["first_to_go"] == c["slender"]["first_to_go"], c
+assert 0.0 < c["all"]["displaced_mass_fraction"] < c["slender"]["displaced_mass_fraction"], c
+PY
+grep -q "^assembly slender: " "$tmp/columns.txt" && grep -q "^assembly squat: 0 of 2 blocks fell, 0 overturned" "$tmp/columns.txt" \
+    && grep -q "^all blocks: " "$tmp/columns.txt" || fail "the console's collapse lines: $(cat "$tmp/columns.txt")"
 
 [[ $failures -eq 0 ]] && echo "all 3-D outcome checks passed"
 exit $((failures > 0))
