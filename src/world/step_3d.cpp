@@ -428,8 +428,8 @@ BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     BodyTotals e;
     if (w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i)) return e;
     RigidBody3d& b = w.bodies[i];
-    update_velocity_3d(b, w.dt_s, starting);
-    const double kinetic_j = kinetic_energy(b);
+    // The pose's matrix: the orientation is still the one at t.
+    const double kinetic_j = update_velocity_3d(b, w.scratch.rotations[i], w.dt_s, starting);
     const double gravitational_j = b.mass_kg * w.gravity_m_s2 * b.position_m.z;
     if (is_outside(w.domain, w.scratch.boxes[i])) {
         e.leaving_j = kinetic_j + gravitational_j;
