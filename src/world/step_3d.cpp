@@ -1,6 +1,7 @@
 #include "world/step_3d.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #ifdef _OPENMP
@@ -81,7 +82,9 @@ Aabb3d pose_box_corners(const BoxFrame3d& frame, Vec3 centre_m, const Vec3* dire
         corners[2 * k] = along_bc[k] - a;
         corners[2 * k + 1] = along_bc[k] + a;
     }
-    for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[frame.vertex_corner[k]];
+    // A local copy: the stores below could alias the frame's bytes, which would then be read again.
+    const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
+    for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[corner_of[k]];
     const Vec3 reach{std::abs(a.x) + std::abs(b.x) + std::abs(c.x), std::abs(a.y) + std::abs(b.y) + std::abs(c.y),
                      std::abs(a.z) + std::abs(b.z) + std::abs(c.z)};
     return {centre_m - reach, centre_m + reach};
@@ -108,15 +111,26 @@ void pose_body(World3d& w, std::size_t i) {
     const Matrix3d rotation = rotation_matrix_by_products(b.orientation);
     s.rotations[i] = rotation;
     Vec3* directions = &s.world_directions[s.direction_start[i]];
-    for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k) directions[k] = rotation * w.edges[i].directions[k];
     const BoxFrame3d& frame = w.box_frames[i];
     Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
-    s.boxes[i] = frame.is_box ? pose_box_corners(frame, b.position_m, directions, vertices)
-                              : pose_vertices(rotation, b.position_m, b.shape.vertices_m, vertices);
     Vec3* normals = &s.world_normals[s.face_start[i]];
-    if (frame.is_box && frame.normals_are_directions) {
-        for (std::size_t k = 0; k < 6; ++k) normals[k] = frame.face_sign[k] * directions[frame.face_direction[k]];
+    if (frame.is_box) {
+        // Held in registers: a store through directions, vertices or normals could alias the
+        // frame or the edge directions, which the compiler would then read again.
+        const BoxFrame3d box = frame;
+        const Vec3 d[3] = {rotation * w.edges[i].directions[0], rotation * w.edges[i].directions[1],
+                           rotation * w.edges[i].directions[2]};
+        for (std::size_t k = 0; k < 3; ++k) directions[k] = d[k];
+        s.boxes[i] = pose_box_corners(box, b.position_m, d, vertices);
+        if (box.normals_are_directions) {
+            for (std::size_t k = 0; k < 6; ++k) normals[k] = box.face_sign[k] * d[box.face_direction[k]];
+        } else {
+            for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * b.shape.face_normals[k];
+        }
     } else {
+        for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
+            directions[k] = rotation * w.edges[i].directions[k];
+        s.boxes[i] = pose_vertices(rotation, b.position_m, b.shape.vertices_m, vertices);
         for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k) normals[k] = rotation * b.shape.face_normals[k];
     }
     // The drift turned the body about this axis, so its world direction is the same at both ends.
