@@ -37,7 +37,11 @@ Quaternion turn_of(Vec3 t) {
 }  // namespace
 
 Vec3 free_rotation(Quaternion& orientation, Vec3 angular_momentum_kg_m2_s, Vec3 inverse_moments_1_kg_m2, double dt_s) {
-    const Vec3 start = rotate_inverse(orientation, angular_momentum_kg_m2_s);
+    return free_rotation_of_body_momentum(orientation, rotate_inverse(orientation, angular_momentum_kg_m2_s),
+                                          inverse_moments_1_kg_m2, dt_s);
+}
+
+Vec3 free_rotation_of_body_momentum(Quaternion& orientation, Vec3 start, Vec3 inverse_moments_1_kg_m2, double dt_s) {
     Vec3 omega = hadamard(inverse_moments_1_kg_m2, start);
     // How fast the rounds contract: turning a vector L by an angle a moves it by at most |L| a,
     // so a round moves omega by at most kappa = max(1/I) |L| dt / 2 times the last change. Once a
@@ -86,6 +90,12 @@ double update_velocity_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s,
 
 double update_velocity_3d(RigidBody3d& b, double dt_s, bool starting) {
     return update_velocity_3d(b, rotation_matrix_by_products(b.orientation), dt_s, starting);
+}
+
+void update_position_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s) {
+    b.position_m += dt_s * b.velocity_m_s;
+    b.angular_velocity_body_rad_s = free_rotation_of_body_momentum(
+        b.orientation, transpose_times(rotation, b.angular_momentum_kg_m2_s), b.inverse_moments_1_kg_m2, dt_s);
 }
 
 void update_position_3d(RigidBody3d& b, double dt_s) {

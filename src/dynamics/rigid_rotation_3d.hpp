@@ -27,6 +27,9 @@ namespace blockdem {
 /// velocity [rad/s] it turned with. Throws SimulationError when the iteration does not converge
 /// (|omega| dt of order one: a time step far above any stable one).
 Vec3 free_rotation(Quaternion& orientation, Vec3 angular_momentum_kg_m2_s, Vec3 inverse_moments_1_kg_m2, double dt_s);
+/// The same from the angular momentum in the body frame at the orientation now [kg m^2/s].
+Vec3 free_rotation_of_body_momentum(Quaternion& orientation, Vec3 body_momentum_kg_m2_s, Vec3 inverse_moments_1_kg_m2,
+                                    double dt_s);
 
 /// The kick: velocity and angular momentum to t + dt/2 from the force and torque at t, and the
 /// velocities at t (the mean of the two half steps). starting: the stored velocities are those
@@ -40,5 +43,7 @@ double update_velocity_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s,
 
 /// The drift: position and orientation to t + dt from the half-step velocities.
 void update_position_3d(RigidBody3d& b, double dt_s);
+/// The same with the matrix of b's orientation before the drift at hand (the 3-D step's pose).
+void update_position_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s);
 
 }  // namespace blockdem

@@ -503,7 +503,9 @@ void step_begin(World3d& w) {
 void step_end(World3d& w) {
     const double dt = w.dt_s;
     parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
-        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i)) update_position_3d(w.bodies[i], dt);
+        // The pose's matrix: step_begin posed every body at the orientation the drift starts from.
+        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
+            update_position_3d(w.bodies[i], w.scratch.rotations[i], dt);
     });
     w.time_s += dt;
     ++w.steps;
