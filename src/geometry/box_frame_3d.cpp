@@ -32,6 +32,12 @@ BoxFrame3d box_frame(const Polyhedron& p, const PolyhedronEdges& e) {
     box.normals_are_directions = true;
     for (std::size_t f = 0; f < 6; ++f)
         if (!(p.face_normals[f] == box.face_sign[f] * d[box.face_direction[f]])) box.normals_are_directions = false;
+    for (std::size_t k = 0; k < 8; ++k) {
+        std::uint8_t corner = 0;
+        for (int i = 0; i < 3; ++i)
+            if (dot(p.vertices_m[k], d[i]) > 0.0) corner = static_cast<std::uint8_t>(corner | (1u << i));
+        box.vertex_corner[k] = corner;
+    }
     box.half_lengths_m = {half[0], half[1], half[2]};
     box.is_box = true;
     return box;

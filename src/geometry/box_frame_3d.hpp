@@ -23,6 +23,9 @@ struct BoxFrame3d {
     /// take the turned normals from the turned directions: turning -d gives exactly minus turning d
     /// (round-to-nearest is symmetric), so the result is the same bits for 6 fewer turns a box.
     bool normals_are_directions = false;
+    /// Per vertex, which corner of the box it is: bit i set when it lies on the + side of
+    /// direction i. A pose places the 8 corners as the centre +/- h_i d_i (world/step_3d.cpp).
+    std::array<std::uint8_t, 8> vertex_corner{};
 };
 
 /// The box frame of p when p is a box about its centroid (the body frame's origin): 8 vertices, 6

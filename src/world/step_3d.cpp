@@ -1,6 +1,8 @@
 #include "world/step_3d.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -56,36 +58,83 @@ void size_pose_arrays(World3d& w) {
     s.world_normals.resize(s.face_start[n]);
     s.world_directions.resize(s.direction_start[n]);
     s.angular_velocity_world_rad_s.resize(n);
+    s.rotations.resize(n);
     s.boxes.resize(n);
     s.is_static.resize(n);
 }
 
-// Step 2: each body's vertices, normals and edge directions in the world frame, and its box.
-void pose_body(World3d& w, std::size_t i) {
-    WorldScratch3d& s = w.scratch;
-    const RigidBody3d& b = w.bodies[i];
-    Aabb3d box{b.position_m, b.position_m};
-    Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
-    for (std::size_t k = 0; k < b.shape.vertices_m.size(); ++k) {
-        const Vec3 v = b.position_m + rotate(b.orientation, b.shape.vertices_m[k]);
-        vertices[k] = v;
+// A box's 8 corners, centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 with d_i its world directions,
+// written in its vertex order, and its bounding box, centre +/- sum h_i |d_i|. Why: 9 products
+// and 42 sums for the corners where turning each vertex costs 15 operations (120 a box), and
+// 15 for the box where the corners' minima and maxima cost 42. The corners are the box the
+// narrow phase tests (geometry/box_frame_3d.hpp: its separating axes use h_i and d_i), and they
+// differ from the turned vertices only by round-off and by the 1e-12 of the box's size that
+// box_frame allows a vertex off its corner.
+Aabb3d pose_box_corners(const BoxFrame3d& frame, Vec3 centre_m, const Vec3* directions, Vec3* vertices_m) {
+    const Vec3 a = frame.half_lengths_m.x * directions[0];
+    const Vec3 b = frame.half_lengths_m.y * directions[1];
+    const Vec3 c = frame.half_lengths_m.z * directions[2];
+    // Corner k: bit i of k set on the + side of direction i, as BoxFrame3d::vertex_corner.
+    const Vec3 along_c[2] = {centre_m - c, centre_m + c};
+    const Vec3 along_bc[4] = {along_c[0] - b, along_c[0] + b, along_c[1] - b, along_c[1] + b};
+    Vec3 corners[8];
+    for (std::size_t k = 0; k < 4; ++k) {
+        corners[2 * k] = along_bc[k] - a;
+        corners[2 * k + 1] = along_bc[k] + a;
+    }
+    // A local copy: the stores below could alias the frame's bytes, which would then be read again.
+    const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
+    for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[corner_of[k]];
+    const Vec3 reach{std::abs(a.x) + std::abs(b.x) + std::abs(c.x), std::abs(a.y) + std::abs(b.y) + std::abs(c.y),
+                     std::abs(a.z) + std::abs(b.z) + std::abs(c.z)};
+    return {centre_m - reach, centre_m + reach};
+}
+
+// Any other polyhedron's vertices turned by the matrix, and their bounding box.
+Aabb3d pose_vertices(const Matrix3d& rotation, Vec3 centre_m, const std::vector<Vec3>& body_vertices_m,
+                     Vec3* vertices_m) {
+    Aabb3d box{centre_m, centre_m};
+    for (std::size_t k = 0; k < body_vertices_m.size(); ++k) {
+        const Vec3 v = centre_m + rotation * body_vertices_m[k];
+        vertices_m[k] = v;
         box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y), std::min(box.lo.z, v.z)};
         box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y), std::max(box.hi.z, v.z)};
     }
+    return box;
+}
+
+// Step 2: each body's vertices, normals and edge directions in the world frame, and its box,
+// from its orientation's matrix (one a body, kept for the kick).
+void pose_body(World3d& w, std::size_t i) {
+    WorldScratch3d& s = w.scratch;
+    const RigidBody3d& b = w.bodies[i];
+    const Matrix3d rotation = rotation_matrix_by_products(b.orientation);
+    s.rotations[i] = rotation;
     Vec3* directions = &s.world_directions[s.direction_start[i]];
-    for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
-        directions[k] = rotate(b.orientation, w.edges[i].directions[k]);
     const BoxFrame3d& frame = w.box_frames[i];
+    Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
     Vec3* normals = &s.world_normals[s.face_start[i]];
-    if (frame.is_box && frame.normals_are_directions) {
-        for (std::size_t k = 0; k < 6; ++k) normals[k] = frame.face_sign[k] * directions[frame.face_direction[k]];
+    if (frame.is_box) {
+        // Held in registers: a store through directions, vertices or normals could alias the
+        // frame or the edge directions, which the compiler would then read again.
+        const BoxFrame3d box = frame;
+        const Vec3 d[3] = {rotation * w.edges[i].directions[0], rotation * w.edges[i].directions[1],
+                           rotation * w.edges[i].directions[2]};
+        for (std::size_t k = 0; k < 3; ++k) directions[k] = d[k];
+        s.boxes[i] = pose_box_corners(box, b.position_m, d, vertices);
+        if (box.normals_are_directions) {
+            for (std::size_t k = 0; k < 6; ++k) normals[k] = box.face_sign[k] * d[box.face_direction[k]];
+        } else {
+            for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * b.shape.face_normals[k];
+        }
     } else {
-        for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k)
-            normals[k] = rotate(b.orientation, b.shape.face_normals[k]);
+        for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
+            directions[k] = rotation * w.edges[i].directions[k];
+        s.boxes[i] = pose_vertices(rotation, b.position_m, b.shape.vertices_m, vertices);
+        for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k) normals[k] = rotation * b.shape.face_normals[k];
     }
     // The drift turned the body about this axis, so its world direction is the same at both ends.
-    s.angular_velocity_world_rad_s[i] = rotate(b.orientation, b.angular_velocity_body_rad_s);
-    s.boxes[i] = box;
+    s.angular_velocity_world_rad_s[i] = rotation * b.angular_velocity_body_rad_s;
     s.is_static[i] = w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i);
 }
 
@@ -393,8 +442,8 @@ BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     BodyTotals e;
     if (w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i)) return e;
     RigidBody3d& b = w.bodies[i];
-    update_velocity_3d(b, w.dt_s, starting);
-    const double kinetic_j = kinetic_energy(b);
+    // The pose's matrix: the orientation is still the one at t.
+    const double kinetic_j = update_velocity_3d(b, w.scratch.rotations[i], w.dt_s, starting);
     const double gravitational_j = b.mass_kg * w.gravity_m_s2 * b.position_m.z;
     if (is_outside(w.domain, w.scratch.boxes[i])) {
         e.leaving_j = kinetic_j + gravitational_j;
@@ -454,7 +503,9 @@ void step_begin(World3d& w) {
 void step_end(World3d& w) {
     const double dt = w.dt_s;
     parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
-        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i)) update_position_3d(w.bodies[i], dt);
+        // The pose's matrix: step_begin posed every body at the orientation the drift starts from.
+        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
+            update_position_3d(w.bodies[i], w.scratch.rotations[i], dt);
     });
     w.time_s += dt;
     ++w.steps;

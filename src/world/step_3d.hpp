@@ -19,7 +19,9 @@ namespace blockdem {
 /// monitors and writers read (world/simulation.hpp, as the 2-D step_begin).
 void step_begin(World3d& w);
 /// Second half: the drift to t + dt, and time advances. Between step_end and the next
-/// step_begin the state is whole for a state file (io/state_file_3d.hpp).
+/// step_begin the state is whole for a state file (io/state_file_3d.hpp). The drift starts from
+/// the pose's rotation matrices (WorldScratch3d::rotations): nothing may turn a body between
+/// step_begin and step_end.
 void step_end(World3d& w);
 
 /// Advances the world by one step of w.dt_s.

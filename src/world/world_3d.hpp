@@ -54,6 +54,7 @@ struct WorldScratch3d {
     std::vector<Vec3> world_normals;
     std::vector<Vec3> world_directions;
     std::vector<Vec3> angular_velocity_world_rad_s;  ///< [rad/s] per body, over the last step (the contact law's)
+    std::vector<Matrix3d> rotations;          ///< per body, its orientation's matrix at t (the pose's; the kick's)
     std::vector<Aabb3d> boxes;
     std::vector<std::uint8_t> is_static;
     std::vector<BodyPair> pairs;
