@@ -386,11 +386,26 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
         else
             face_contact(a, face_a.face, b, true, exact_pair, scratch, out);
     }
-    const auto key_less = [](const ContactGeometry3d& x, const ContactGeometry3d& y) {
-        return x.feature_a != y.feature_a ? x.feature_a < y.feature_a : x.feature_b < y.feature_b;
+    // Sorted by key by insertion, stable (a box face gives at most 8 points, mostly in order
+    // already), each key packed into one integer so that a comparison is one. Up to 16 points this
+    // is the order std::sort gave (it sorts such ranges by the same insertion); beyond, equal keys
+    // (one place found twice) keep their clip order, and which of them stands for both is a
+    // choice among points at one place.
+    const auto key = [](const ContactGeometry3d& g) {
+        return (static_cast<std::uint64_t>(g.feature_a) << 32) | g.feature_b;
     };
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
-    if (!std::is_sorted(begin, out.end(), key_less)) std::sort(begin, out.end(), key_less);
+    for (auto it = begin + (begin != out.end()); it != out.end(); ++it) {
+        const std::uint64_t k = key(*it);
+        if (key(*(it - 1)) <= k) continue;
+        const ContactGeometry3d moved = *it;
+        auto hole = it;
+        do {
+            *hole = *(hole - 1);
+            --hole;
+        } while (hole != begin && key(*(hole - 1)) > k);
+        *hole = moved;
+    }
     // A key twice (a reference corner found from both its sides, two corners at one place): the
     // first stands for it, with both shares. A point is moved only once a duplicate went before it.
     if (begin != out.end()) {
