@@ -138,43 +138,56 @@ FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, const
 // cyclic order the axis is (a_i1 (-dots[i2][j]) + a_i2 dots[i1][j]), of length l = sqrt(dots[i1][j]^2
 // + dots[i2][j]^2): its projections of the offset and of both boxes' half widths, times l, are
 // sums of the dots already taken, and the separation is their difference over l. Only the axis that
-// can be taken needs l: an edge axis replaces a face of overlap face_overlap_m only when its
-// overlap is below clearly_fraction times it, and since l <= 1 an axis whose separation times l is
-// already at or below -clearly_fraction face_overlap_m cannot (its root is not taken). Apart is
-// decided for every axis, from the sign of the separation times l.
+// can be taken needs l: an edge axis replaces a face of overlap F only when its overlap is below
+// `clearly` (0.95) times F, and since l <= 1 an axis whose separation times l is already at or
+// below -0.95 F cannot (its root is not taken). Apart is decided for every axis, from the sign of
+// the separation times l.
+struct EdgeSearch {
+    const BoxPair& pair;
+    double half_a[3];
+    double half_b[3];
+    double least_separation_m;  ///< [m] -clearly F: an axis at or below it cannot be taken
+    EdgeAxis best;
+    double best_sign = 1.0;     ///< +1 when b lies along +(a_i x b_j) from a
+
+    // Axis (I, J), its indices known when compiled so that the dots are read from fixed places.
+    // Returns true when it separates the boxes.
+    template <std::uint32_t I, std::uint32_t J>
+    bool apart_along() {
+        constexpr std::uint32_t I1 = (I + 1) % 3, I2 = (I + 2) % 3, J1 = (J + 1) % 3, J2 = (J + 2) % 3;
+        const double length2 = pair.dots[I1][J] * pair.dots[I1][J] + pair.dots[I2][J] * pair.dots[I2][J];
+        if (length2 < 1e-12) return false;  // parallel edges (|a_i x b_j| < 1e-6): a face axis already tested
+        // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index, and
+        // likewise for b: the dots already taken.
+        const double reach_a_m = half_a[I1] * pair.abs_dots[I2][J] + half_a[I2] * pair.abs_dots[I1][J];
+        const double reach_b_m = half_b[J1] * pair.abs_dots[I][J2] + half_b[J2] * pair.abs_dots[I][J1];
+        const double centre_m = pair.offset_a_m[I2] * pair.dots[I1][J] - pair.offset_a_m[I1] * pair.dots[I2][J];
+        const double separation_times_l = std::abs(centre_m) - reach_a_m - reach_b_m;
+        if (separation_times_l > 0.0) return true;
+        if (separation_times_l <= least_separation_m) return false;  // cannot be taken (l <= 1)
+        const double separation_m = separation_times_l / std::sqrt(length2);
+        if (separation_m > best.separation_m) {
+            best = {separation_m, Vec3{}, I, J};
+            best_sign = centre_m >= 0.0 ? 1.0 : -1.0;
+        }
+        return false;
+    }
+};
+
 EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair,
                        double least_separation_m, bool& apart) {
-    EdgeAxis best;
-    double best_sign = 1.0;  // +1 when b lies along +(a_i x b_j) from a
     const Vec3 ha = a.box->half_lengths_m;
     const Vec3 hb = b.box->half_lengths_m;
-    const double half_a[3] = {ha.x, ha.y, ha.z};
-    const double half_b[3] = {hb.x, hb.y, hb.z};
-    constexpr std::uint32_t next_of[3] = {1, 2, 0};  // (k + 1) % 3 without a division
-    for (std::uint32_t i = 0; i < 3; ++i) {
-        const std::uint32_t i1 = next_of[i], i2 = next_of[i1];
-        for (std::uint32_t j = 0; j < 3; ++j) {
-            const double length2 = pair.dots[i1][j] * pair.dots[i1][j] + pair.dots[i2][j] * pair.dots[i2][j];
-            if (length2 < 1e-12) continue;  // parallel edges (|a_i x b_j| < 1e-6): a face axis already tested
-            const std::uint32_t j1 = next_of[j], j2 = next_of[j1];
-            // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index,
-            // and likewise for b: the dots already taken.
-            const double reach_a_m = half_a[i1] * pair.abs_dots[i2][j] + half_a[i2] * pair.abs_dots[i1][j];
-            const double reach_b_m = half_b[j1] * pair.abs_dots[i][j2] + half_b[j2] * pair.abs_dots[i][j1];
-            const double centre_m = pair.offset_a_m[i2] * pair.dots[i1][j] - pair.offset_a_m[i1] * pair.dots[i2][j];
-            const double separation_times_l = std::abs(centre_m) - reach_a_m - reach_b_m;
-            if (separation_times_l > 0.0) { apart = true; return best; }
-            if (separation_times_l <= least_separation_m) continue;  // cannot be taken (l <= 1)
-            const double separation_m = separation_times_l / std::sqrt(length2);
-            if (separation_m > best.separation_m) {
-                best = {separation_m, Vec3{}, i, j};
-                best_sign = centre_m >= 0.0 ? 1.0 : -1.0;
-            }
-        }
-    }
-    if (best.separation_m > -std::numeric_limits<double>::infinity()) {  // the world axis, only for the one kept
+    EdgeSearch search{pair, {ha.x, ha.y, ha.z}, {hb.x, hb.y, hb.z}, least_separation_m, EdgeAxis{}};
+    // In the order (0,0), (0,1), ... (2,2), the first separating axis ending the search.
+    apart = search.apart_along<0, 0>() || search.apart_along<0, 1>() || search.apart_along<0, 2>() ||
+            search.apart_along<1, 0>() || search.apart_along<1, 1>() || search.apart_along<1, 2>() ||
+            search.apart_along<2, 0>() || search.apart_along<2, 1>() || search.apart_along<2, 2>();
+    EdgeAxis best = search.best;
+    if (!apart && best.separation_m > -std::numeric_limits<double>::infinity()) {
+        // The world axis, only for the one kept.
         const Vec3 axis = cross(a.directions[best.direction_a], b.directions[best.direction_b]);
-        best.axis = (best_sign / length(axis)) * axis;
+        best.axis = (search.best_sign / length(axis)) * axis;
     }
     return best;
 }
