@@ -281,30 +281,35 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
                                                    : most_opposed_face(inc, n);
     if (!box_face_clip_applies(ref, inc, inc_face) || !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon))
         clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
-    const auto& polygon = scratch.polygon;
+    // The polygon's size and arrays read once (the writes below could alias the vectors' own).
+    const std::size_t count = scratch.polygon.size();
+    const ClipCorner3d* polygon = scratch.polygon.data();
     const auto& ref_corners = ref.shape->faces[ref_face];
     // The shares come from the whole clipped polygon, corners above the reference plane included,
     // so that a corner crossing the plane changes no other corner's share. A corner that is still
     // one of the incident face's own keeps that face's edges as its two sides, so on a box it turns
     // by exactly a quarter.
-    scratch.corners_m.resize(polygon.size());
-    scratch.shares.resize(polygon.size());
+    scratch.corners_m.resize(count);
+    scratch.shares.resize(count);
+    Vec3* corners_m = scratch.corners_m.data();
+    const double* shares = scratch.shares.data();
     const bool incident_is_box = inc.box != nullptr && inc.box->is_box;
-    for (std::size_t i = 0; i < polygon.size(); ++i) scratch.corners_m[i] = polygon[i].point_m;
+    for (std::size_t i = 0; i < count; ++i) corners_m[i] = polygon[i].point_m;
     if (incident_is_box) {
-        scratch.quarter_turns.resize(polygon.size());
-        for (std::size_t i = 0; i < polygon.size(); ++i)
-            scratch.quarter_turns[i] = feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+        scratch.quarter_turns.resize(count);
+        std::uint8_t* quarter_turns = scratch.quarter_turns.data();
+        for (std::size_t i = 0; i < count; ++i)
+            quarter_turns[i] = feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
     }
-    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data(),
-                     incident_is_box ? scratch.quarter_turns.data() : nullptr);
+    corner_shares_3d(corners_m, count, scratch.shares.data(), incident_is_box ? scratch.quarter_turns.data() : nullptr);
     const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec3 normal = ref_is_a ? n : -n;
+    for (std::size_t i = 0; i < count; ++i) {
         const ClipCorner3d& c = polygon[i];
         const double depth_m = plane_m - dot(n, c.point_m);
         if (depth_m <= 0.0) continue;
-        ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, ref_is_a ? n : -n, depth_m, c.feature_reference,
-                            c.feature_incident, scratch.shares[i]};
+        ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, normal, depth_m, c.feature_reference, c.feature_incident,
+                            shares[i]};
         if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
         out.push_back(g);
     }
