@@ -279,7 +279,9 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     const Vec3 n = ref.face_normals[ref_face];
     const std::uint32_t inc_face = pair != nullptr ? most_opposed_box_face(ref, ref_face, inc, *pair, ref_is_a)
                                                    : most_opposed_face(inc, n);
-    if (!box_face_clip_applies(ref, inc, inc_face) || !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon))
+    // Two boxes: the rectangle clip applies (a box face has 4 corners), no need to ask.
+    if (!(pair != nullptr || box_face_clip_applies(ref, inc, inc_face)) ||
+        !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon))
         clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
     // The polygon's size and arrays read once (the writes below could alias the vectors' own).
     const std::size_t count = scratch.polygon.size();
@@ -294,12 +296,15 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     Vec3* corners_m = scratch.corners_m.data();
     const double* shares = scratch.shares.data();
     const bool incident_is_box = inc.box != nullptr && inc.box->is_box;
-    for (std::size_t i = 0; i < count; ++i) corners_m[i] = polygon[i].point_m;
     if (incident_is_box) {
         scratch.quarter_turns.resize(count);
         std::uint8_t* quarter_turns = scratch.quarter_turns.data();
-        for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t i = 0; i < count; ++i) {
+            corners_m[i] = polygon[i].point_m;
             quarter_turns[i] = feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+        }
+    } else {
+        for (std::size_t i = 0; i < count; ++i) corners_m[i] = polygon[i].point_m;
     }
     corner_shares_3d(corners_m, count, scratch.shares.data(), incident_is_box ? scratch.quarter_turns.data() : nullptr);
     const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
