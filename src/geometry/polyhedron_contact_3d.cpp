@@ -291,13 +291,15 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     // so that a corner crossing the plane changes no other corner's share. A corner that is still
     // one of the incident face's own keeps that face's edges as its two sides, so on a box it turns
     // by exactly a quarter.
-    scratch.corners_m.resize(count);
-    scratch.shares.resize(count);
+    // The scratch arrays only grow (their first count entries are used): a resize to each
+    // polygon's size would construct or drop entries at every pair whose count differs.
+    if (scratch.corners_m.size() < count) scratch.corners_m.resize(count);
+    if (scratch.shares.size() < count) scratch.shares.resize(count);
     Vec3* corners_m = scratch.corners_m.data();
     const double* shares = scratch.shares.data();
     const bool incident_is_box = inc.box != nullptr && inc.box->is_box;
     if (incident_is_box) {
-        scratch.quarter_turns.resize(count);
+        if (scratch.quarter_turns.size() < count) scratch.quarter_turns.resize(count);
         std::uint8_t* quarter_turns = scratch.quarter_turns.data();
         for (std::size_t i = 0; i < count; ++i) {
             corners_m[i] = polygon[i].point_m;
