@@ -28,6 +28,7 @@ BoxFrame3d box_frame(const Polyhedron& p, const PolyhedronEdges& e) {
         if (std::abs(std::abs(dot(n, d[along])) - 1.0) > tolerance) return box;
         box.face_direction[f] = static_cast<std::uint8_t>(along);
         box.face_sign[f] = dot(n, d[along]) > 0.0 ? 1.0 : -1.0;
+        box.face_of[along][box.face_sign[f] > 0.0 ? 0 : 1] = static_cast<std::uint8_t>(f);
     }
     box.normals_are_directions = true;
     for (std::size_t f = 0; f < 6; ++f)

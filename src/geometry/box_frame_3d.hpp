@@ -19,6 +19,9 @@ struct BoxFrame3d {
     Vec3 half_lengths_m;                  ///< [m] along the edge directions 0, 1, 2 (PolyhedronEdges::directions)
     std::array<std::uint8_t, 6> face_direction{};  ///< per face, the direction its normal lies along
     std::array<double, 6> face_sign{};             ///< per face, +1 when its normal is that direction, -1 against
+    /// face_of[i][0]: the face whose normal is +direction i; face_of[i][1]: the one along -i (the
+    /// inverse of face_direction and face_sign, so that the narrow phase picks a face per direction).
+    std::array<std::array<std::uint8_t, 2>, 3> face_of{};
     /// Every face normal is exactly (to the bit) face_sign times its direction, so that a pose may
     /// take the turned normals from the turned directions: turning -d gives exactly minus turning d
     /// (round-to-nearest is symmetric), so the result is the same bits for 6 fewer turns a box.

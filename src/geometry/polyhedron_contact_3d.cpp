@@ -77,75 +77,117 @@ EdgeAxis best_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, bool
     return best;
 }
 
-// Two boxes: the same axes in the same order as best_face_axis and best_edge_axis, projected from
-// the centres and half lengths (geometry/box_frame_3d.hpp). dots[i][j] = a's direction i . b's j.
+// Two boxes: the same axes as best_face_axis and best_edge_axis, in a's frame (geometry/
+// box_frame_3d.hpp). dots[i][j] = a's direction i . b's j, taken once; everything else is a sum of
+// their products with the half lengths and the centres' offset along each box's directions.
 struct BoxPair {
-    Vec3 offset_m;        ///< [m] b's centre minus a's
-    double dots[3][3];    ///< a.directions[i] . b.directions[j]
+    Vec3 offset_m;          ///< [m] b's centre minus a's, world frame
+    double dots[3][3];      ///< a.directions[i] . b.directions[j]
+    double abs_dots[3][3];  ///< their absolute values
+    double offset_a_m[3];   ///< [m] offset_m along a's direction i
+    double offset_b_m[3];   ///< [m] offset_m along b's direction j
 };
 
 BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
     BoxPair p;
     p.offset_m = b.centroid_m - a.centroid_m;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) p.dots[i][j] = dot(a.directions[i], b.directions[j]);
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            p.dots[i][j] = dot(a.directions[i], b.directions[j]);
+            p.abs_dots[i][j] = std::abs(p.dots[i][j]);
+        }
+        p.offset_a_m[i] = dot(a.directions[i], p.offset_m);
+        p.offset_b_m[i] = dot(b.directions[i], p.offset_m);
+    }
     return p;
 }
 
-// The faces of r against the box o: o's deepest point below face f's plane is its centre's
-// projection less sum h_j |n . o_j|, the plane is r's centre's plus h_i. r_is_a says which index
-// of dots is r's.
+// Whether (separation, face) goes before best: the larger separation, and on a tie the lower face
+// number, as a loop over the faces in order keeping the first of equals would choose.
+bool face_axis_before(double separation_m, std::uint32_t face, const FaceAxis& best) {
+    return separation_m > best.separation_m || (separation_m == best.separation_m && face < best.face);
+}
+
+// The faces of r against the box o. o's deepest point below the plane of r's face along +/- r's
+// direction i is o's centre's projection less reach_i = sum_j h_j |r_i . o_j|, and the plane is
+// r's centre's plus h_i, so that of the two faces along i the one facing o's centre (the sign of
+// centre_i) separates more: separation_i = |centre_i| - reach_i - h_i. r_is_a says which index of
+// the pair's dots is r's. Sets apart when a face plane separates them.
 FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, const BoxPair& pair, bool r_is_a,
                        bool& apart) {
     FaceAxis best;
-    const Vec3 offset_m = r_is_a ? pair.offset_m : -pair.offset_m;  // o's centre minus r's
     const Vec3 hr = r.box->half_lengths_m;
     const Vec3 ho = o.box->half_lengths_m;
-    double reach_o[3];  // o's half width along r's direction i
-    double centre[3];   // o's centre along r's direction i
-    for (int i = 0; i < 3; ++i) {
-        const auto d = [&](int j) { return std::abs(r_is_a ? pair.dots[i][j] : pair.dots[j][i]); };
-        reach_o[i] = ho.x * d(0) + ho.y * d(1) + ho.z * d(2);
-        centre[i] = dot(r.directions[i], offset_m);
-    }
     const double half_r[3] = {hr.x, hr.y, hr.z};
-    for (std::uint32_t f = 0; f < 6; ++f) {
-        const int i = r.box->face_direction[f];
-        const double separation = r.box->face_sign[f] * centre[i] - reach_o[i] - half_r[i];
-        if (separation > 0.0) { apart = true; return best; }
-        if (separation > best.separation_m) best = {separation, f};
+    for (int i = 0; i < 3; ++i) {
+        const auto d = [&](int j) { return r_is_a ? pair.abs_dots[i][j] : pair.abs_dots[j][i]; };
+        const double reach_o_m = ho.x * d(0) + ho.y * d(1) + ho.z * d(2);
+        const double centre_m = r_is_a ? pair.offset_a_m[i] : -pair.offset_b_m[i];  // o's centre minus r's
+        const double separation_m = std::abs(centre_m) - reach_o_m - half_r[i];
+        // On centre_m = 0 both faces along i separate as much: the lower number, as in a face loop.
+        const std::uint32_t face = centre_m > 0.0   ? r.box->face_of[i][0]
+                                   : centre_m < 0.0 ? r.box->face_of[i][1]
+                                                    : std::min(r.box->face_of[i][0], r.box->face_of[i][1]);
+        if (face_axis_before(separation_m, face, best)) best = {separation_m, face};
     }
+    if (best.separation_m > 0.0) apart = true;
     return best;
 }
 
-EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair, bool& apart) {
+// The edge axes a_i x b_j. In a's frame b_j is the column j of the dots, so with (i, i1, i2) a
+// cyclic order the axis is (a_i1 (-dots[i2][j]) + a_i2 dots[i1][j]), of length l = sqrt(dots[i1][j]^2
+// + dots[i2][j]^2): its projections of the offset and of both boxes' half widths, times l, are
+// sums of the dots already taken, and the separation is their difference over l. Only the axis that
+// can be taken needs l: an edge axis replaces a face of overlap F only when its overlap is below
+// `clearly` (0.95) times F, and since l <= 1 an axis whose separation times l is already at or
+// below -0.95 F cannot (its root is not taken). Apart is decided for every axis, from the sign of
+// the separation times l.
+struct EdgeSearch {
+    const BoxPair& pair;
+    double half_a[3];
+    double half_b[3];
+    double least_separation_m;  ///< [m] -clearly F: an axis at or below it cannot be taken
     EdgeAxis best;
+    double best_sign = 1.0;     ///< +1 when b lies along +(a_i x b_j) from a
+
+    // Axis (I, J), its indices known when compiled so that the dots are read from fixed places.
+    // Returns true when it separates the boxes.
+    template <std::uint32_t I, std::uint32_t J>
+    bool apart_along() {
+        constexpr std::uint32_t I1 = (I + 1) % 3, I2 = (I + 2) % 3, J1 = (J + 1) % 3, J2 = (J + 2) % 3;
+        const double length2 = pair.dots[I1][J] * pair.dots[I1][J] + pair.dots[I2][J] * pair.dots[I2][J];
+        if (length2 < 1e-12) return false;  // parallel edges (|a_i x b_j| < 1e-6): a face axis already tested
+        // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index, and
+        // likewise for b: the dots already taken.
+        const double reach_a_m = half_a[I1] * pair.abs_dots[I2][J] + half_a[I2] * pair.abs_dots[I1][J];
+        const double reach_b_m = half_b[J1] * pair.abs_dots[I][J2] + half_b[J2] * pair.abs_dots[I][J1];
+        const double centre_m = pair.offset_a_m[I2] * pair.dots[I1][J] - pair.offset_a_m[I1] * pair.dots[I2][J];
+        const double separation_times_l = std::abs(centre_m) - reach_a_m - reach_b_m;
+        if (separation_times_l > 0.0) return true;
+        if (separation_times_l <= least_separation_m) return false;  // cannot be taken (l <= 1)
+        const double separation_m = separation_times_l / std::sqrt(length2);
+        if (separation_m > best.separation_m) {
+            best = {separation_m, Vec3{}, I, J};
+            best_sign = centre_m >= 0.0 ? 1.0 : -1.0;
+        }
+        return false;
+    }
+};
+
+EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair,
+                       double least_separation_m, bool& apart) {
     const Vec3 ha = a.box->half_lengths_m;
     const Vec3 hb = b.box->half_lengths_m;
-    const double half_a[3] = {ha.x, ha.y, ha.z};
-    const double half_b[3] = {hb.x, hb.y, hb.z};
-    constexpr std::uint32_t next_of[3] = {1, 2, 0};  // (k + 1) % 3 without a division
-    for (std::uint32_t i = 0; i < 3; ++i) {
-        for (std::uint32_t j = 0; j < 3; ++j) {
-            Vec3 axis = cross(a.directions[i], b.directions[j]);
-            const double l = length(axis);
-            if (l < 1e-6) continue;  // parallel edges: their plane's normal is a face axis already tested
-            const double inverse_l = 1.0 / l;
-            axis = inverse_l * axis;
-            // a's direction k . (a_i x b_j) = b_j . (a_k x a_i) = +/- a_m . b_j, m the third index (the
-            // directions are perpendicular unit vectors), and likewise for b: the dots already taken.
-            const std::uint32_t i1 = next_of[i], i2 = next_of[i1], j1 = next_of[j], j2 = next_of[j1];
-            const double reach_a =
-                inverse_l * (half_a[i1] * std::abs(pair.dots[i2][j]) + half_a[i2] * std::abs(pair.dots[i1][j]));
-            const double reach_b =
-                inverse_l * (half_b[j1] * std::abs(pair.dots[i][j2]) + half_b[j2] * std::abs(pair.dots[i][j1]));
-            const double centre = dot(axis, pair.offset_m);
-            const double along = centre - reach_a - reach_b;     // b beyond a along +axis
-            const double against = -centre - reach_a - reach_b;  // b beyond a along -axis
-            if (along > 0.0 || against > 0.0) { apart = true; return best; }
-            const double separation = std::max(along, against);
-            if (separation > best.separation_m) best = {separation, along >= against ? axis : -axis, i, j};
-        }
+    EdgeSearch search{pair, {ha.x, ha.y, ha.z}, {hb.x, hb.y, hb.z}, least_separation_m, EdgeAxis{}};
+    // In the order (0,0), (0,1), ... (2,2), the first separating axis ending the search.
+    apart = search.apart_along<0, 0>() || search.apart_along<0, 1>() || search.apart_along<0, 2>() ||
+            search.apart_along<1, 0>() || search.apart_along<1, 1>() || search.apart_along<1, 2>() ||
+            search.apart_along<2, 0>() || search.apart_along<2, 1>() || search.apart_along<2, 2>();
+    EdgeAxis best = search.best;
+    if (!apart && best.separation_m > -std::numeric_limits<double>::infinity()) {
+        // The world axis, only for the one kept.
+        const Vec3 axis = cross(a.directions[best.direction_a], b.directions[best.direction_b]);
+        best.axis = (search.best_sign / length(axis)) * axis;
     }
     return best;
 }
@@ -195,41 +237,86 @@ bool edge_contact(const PosedPolyhedron& a, const PosedPolyhedron& b, const Edge
 // Face contact: the incident face clipped by the reference face's sides (in the reference face's
 // frame when that face is a box's rectangle, geometry/box_face_clip_3d.hpp), each clipped corner
 // below the reference plane a point.
-void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc, bool ref_is_a,
-                  ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
-    const Vec3 n = ref.face_normals[ref_face];
+// The incident face: inc's face most opposed to the reference normal n (the least n . normal, the
+// first of equals in face order).
+std::uint32_t most_opposed_face(const PosedPolyhedron& inc, Vec3 n) {
     std::uint32_t inc_face = 0;
     double most_opposed = std::numeric_limits<double>::infinity();
     for (std::uint32_t f = 0; f < inc.shape->faces.size(); ++f) {
         const double c = dot(inc.face_normals[f], n);
         if (c < most_opposed) { most_opposed = c; inc_face = f; }
     }
-    if (!box_face_clip_applies(ref, inc, inc_face) || !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon))
+    return inc_face;
+}
+
+// The same face for two boxes whose normals are their directions to the bit (BoxFrame3d::
+// normals_are_directions), from the pair's dots: the normal of inc's face along +/- its direction
+// j dotted with n is +/- the dot of the two directions, exactly (a product's rounding is symmetric
+// in sign and order), so along each j the face against the sign of that dot gives -|dot|, and the
+// least of the three, the lower face number on a tie, is the loop's choice.
+std::uint32_t most_opposed_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                                    const BoxPair& pair, bool ref_is_a) {
+    const int i = ref.box->face_direction[ref_face];
+    const double ref_sign = ref.box->face_sign[ref_face];
+    std::uint32_t inc_face = 0;
+    double most_opposed = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < 3; ++j) {
+        const double c = ref_sign * (ref_is_a ? pair.dots[i][j] : pair.dots[j][i]);  // n . inc's direction j
+        const std::uint32_t face = c > 0.0   ? inc.box->face_of[j][1]
+                                   : c < 0.0 ? inc.box->face_of[j][0]
+                                             : std::min(inc.box->face_of[j][0], inc.box->face_of[j][1]);
+        const double opposed = -std::abs(c);
+        if (opposed < most_opposed || (opposed == most_opposed && face < inc_face)) {
+            most_opposed = opposed;
+            inc_face = face;
+        }
+    }
+    return inc_face;
+}
+
+void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc, bool ref_is_a,
+                  const BoxPair* pair, ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
+    const Vec3 n = ref.face_normals[ref_face];
+    const std::uint32_t inc_face = pair != nullptr ? most_opposed_box_face(ref, ref_face, inc, *pair, ref_is_a)
+                                                   : most_opposed_face(inc, n);
+    // Two boxes: the rectangle clip applies (a box face has 4 corners), no need to ask.
+    if (!(pair != nullptr || box_face_clip_applies(ref, inc, inc_face)) ||
+        !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon))
         clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
-    const auto& polygon = scratch.polygon;
+    // The polygon's size and arrays read once (the writes below could alias the vectors' own).
+    const std::size_t count = scratch.polygon.size();
+    const ClipCorner3d* polygon = scratch.polygon.data();
     const auto& ref_corners = ref.shape->faces[ref_face];
     // The shares come from the whole clipped polygon, corners above the reference plane included,
     // so that a corner crossing the plane changes no other corner's share. A corner that is still
     // one of the incident face's own keeps that face's edges as its two sides, so on a box it turns
     // by exactly a quarter.
-    scratch.corners_m.resize(polygon.size());
-    scratch.shares.resize(polygon.size());
+    // The scratch arrays only grow (their first count entries are used): a resize to each
+    // polygon's size would construct or drop entries at every pair whose count differs.
+    if (scratch.corners_m.size() < count) scratch.corners_m.resize(count);
+    if (scratch.shares.size() < count) scratch.shares.resize(count);
+    Vec3* corners_m = scratch.corners_m.data();
+    const double* shares = scratch.shares.data();
     const bool incident_is_box = inc.box != nullptr && inc.box->is_box;
-    for (std::size_t i = 0; i < polygon.size(); ++i) scratch.corners_m[i] = polygon[i].point_m;
     if (incident_is_box) {
-        scratch.quarter_turns.resize(polygon.size());
-        for (std::size_t i = 0; i < polygon.size(); ++i)
-            scratch.quarter_turns[i] = feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+        if (scratch.quarter_turns.size() < count) scratch.quarter_turns.resize(count);
+        std::uint8_t* quarter_turns = scratch.quarter_turns.data();
+        for (std::size_t i = 0; i < count; ++i) {
+            corners_m[i] = polygon[i].point_m;
+            quarter_turns[i] = feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+        }
+    } else {
+        for (std::size_t i = 0; i < count; ++i) corners_m[i] = polygon[i].point_m;
     }
-    corner_shares_3d(scratch.corners_m.data(), polygon.size(), scratch.shares.data(),
-                     incident_is_box ? scratch.quarter_turns.data() : nullptr);
+    corner_shares_3d(corners_m, count, scratch.shares.data(), incident_is_box ? scratch.quarter_turns.data() : nullptr);
     const double plane_m = dot(n, ref.vertices_m[ref_corners[0]]);
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec3 normal = ref_is_a ? n : -n;
+    for (std::size_t i = 0; i < count; ++i) {
         const ClipCorner3d& c = polygon[i];
         const double depth_m = plane_m - dot(n, c.point_m);
         if (depth_m <= 0.0) continue;
-        ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, ref_is_a ? n : -n, depth_m, c.feature_reference,
-                            c.feature_incident, scratch.shares[i]};
+        ContactGeometry3d g{c.point_m + (0.5 * depth_m) * n, normal, depth_m, c.feature_reference, c.feature_incident,
+                            shares[i]};
         if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
         out.push_back(g);
     }
@@ -306,25 +393,44 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     if (apart) return 0;
     const FaceAxis face_b = boxes ? box_face_axis(b, a, pair, false, apart) : best_face_axis(b, a, apart);
     if (apart) return 0;
-    const EdgeAxis edge = boxes ? box_edge_axis(a, b, pair, apart) : best_edge_axis(a, b, apart);
-    if (apart) return 0;
     const std::size_t first = out.size();
     // Overlaps (>= 0); a candidate replaces the preferred one only when it is clearly smaller.
     constexpr double clearly = 0.95;
     const bool use_b = -face_b.separation_m < clearly * -face_a.separation_m;
     const double face_overlap_m = use_b ? -face_b.separation_m : -face_a.separation_m;
+    const EdgeAxis edge =
+        boxes ? box_edge_axis(a, b, pair, -clearly * face_overlap_m, apart) : best_edge_axis(a, b, apart);
+    if (apart) return 0;
     const bool use_edge = -edge.separation_m < clearly * face_overlap_m;
     if (!use_edge || !edge_contact(a, b, edge, out)) {
+        // The incident face from the dots when both boxes' normals are their directions to the bit.
+        const BoxPair* exact_pair =
+            boxes && a.box->normals_are_directions && b.box->normals_are_directions ? &pair : nullptr;
         if (use_b)
-            face_contact(b, face_b.face, a, false, scratch, out);
+            face_contact(b, face_b.face, a, false, exact_pair, scratch, out);
         else
-            face_contact(a, face_a.face, b, true, scratch, out);
+            face_contact(a, face_a.face, b, true, exact_pair, scratch, out);
     }
-    const auto key_less = [](const ContactGeometry3d& x, const ContactGeometry3d& y) {
-        return x.feature_a != y.feature_a ? x.feature_a < y.feature_a : x.feature_b < y.feature_b;
+    // Sorted by key by insertion, stable (a box face gives at most 8 points, mostly in order
+    // already), each key packed into one integer so that a comparison is one. Up to 16 points this
+    // is the order std::sort gave (it sorts such ranges by the same insertion); beyond, equal keys
+    // (one place found twice) keep their clip order, and which of them stands for both is a
+    // choice among points at one place.
+    const auto key = [](const ContactGeometry3d& g) {
+        return (static_cast<std::uint64_t>(g.feature_a) << 32) | g.feature_b;
     };
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
-    if (!std::is_sorted(begin, out.end(), key_less)) std::sort(begin, out.end(), key_less);
+    for (auto it = begin + (begin != out.end()); it != out.end(); ++it) {
+        const std::uint64_t k = key(*it);
+        if (key(*(it - 1)) <= k) continue;
+        const ContactGeometry3d moved = *it;
+        auto hole = it;
+        do {
+            *hole = *(hole - 1);
+            --hole;
+        } while (hole != begin && key(*(hole - 1)) > k);
+        *hole = moved;
+    }
     // A key twice (a reference corner found from both its sides, two corners at one place): the
     // first stands for it, with both shares. A point is moved only once a duplicate went before it.
     if (begin != out.end()) {

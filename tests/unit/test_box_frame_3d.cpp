@@ -85,7 +85,7 @@ TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
     const std::vector<Vec3> slab = box_vertices({2.0, 1.0, 0.5}, {});
-    int touching = 0, apart = 0;
+    int touching = 0, apart = 0, edge_on_edge = 0;
     for (int trial = 0; trial < 2000; ++trial) {
         // A brick on a brick or on the slab, small turns (resting, rocking) and larger ones.
         const double turn = trial % 2 == 0 ? 0.02 : 0.6;
@@ -102,6 +102,10 @@ TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
         polyhedron_contact_3d(a.view(true), b.view(true), scratch, boxes);
         ASSERT_EQ(general.size(), boxes.size()) << "trial " << trial;
         (general.empty() ? apart : touching) += 1;
+        // One point keyed (edge, edge): an edge axis was taken (a clip gives at least three).
+        if (boxes.size() == 1 && feature_kind(boxes[0].feature_a) == FeatureKind3d::edge &&
+            feature_kind(boxes[0].feature_b) == FeatureKind3d::edge)
+            ++edge_on_edge;
         for (std::size_t k = 0; k < general.size(); ++k) {
             EXPECT_EQ(general[k].feature_a, boxes[k].feature_a);
             EXPECT_EQ(general[k].feature_b, boxes[k].feature_b);
@@ -111,9 +115,57 @@ TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
             EXPECT_NEAR(length(general[k].point_m - boxes[k].point_m), 0.0, 1e-14);
         }
     }
-    // Both outcomes are exercised.
+    // Both outcomes are exercised, and the edge axes (whose root is taken only when one can win).
     EXPECT_GT(touching, 500);
     EXPECT_GT(apart, 200);
+    EXPECT_GT(edge_on_edge, 20);
+}
+
+TEST(BoxFrame3d, FacesAlongEachDirectionAreFoundBothWays) {
+    // face_of inverts face_direction and face_sign: the box-box test picks a face per direction.
+    const Polyhedron brick = convex_polyhedron(box_vertices({0.2, 0.1, 0.05}, {}, from_rotation_vector({0.3, -0.2, 0.7})));
+    const BoxFrame3d frame = box_frame(brick, polyhedron_edges(brick));
+    ASSERT_TRUE(frame.is_box);
+    for (int i = 0; i < 3; ++i) {
+        for (int side = 0; side < 2; ++side) {
+            const std::uint8_t f = frame.face_of[i][side];
+            EXPECT_EQ(frame.face_direction[f], i);
+            EXPECT_EQ(frame.face_sign[f], side == 0 ? 1.0 : -1.0);
+        }
+    }
+}
+
+TEST(BoxFrame3d, BoxBoxTestBreaksExactTiesAsTheGeneralTest) {
+    // Aligned bricks (the dots exactly 0 or 1): the centres' offset is exactly 0 along a direction
+    // when a brick sits centred, and every off-axis dot is 0, so two faces separate exactly as much
+    // and two incident faces are exactly as opposed. The box test's choice per direction must be
+    // the general loop's (the lower face number): the same points and keys, the overlaps to the bit
+    // (both clips cut at the same coordinates here), the shares to round-off: the general test
+    // measures a box corner's right angle, the box test knows it, and a cut 1e-6 m from a corner
+    // leaves a side whose direction carries 1e-16 m / 1e-6 m = 1e-10 rad of round-off (9e-13 seen).
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    int pairs = 0;
+    for (double x_m : {0.0, 0.05, -0.1, 0.2 - 1e-6}) {
+        for (double y_m : {0.0, 0.02, -0.1 + 1e-6}) {
+            for (double z_m : {0.1 - 1e-6, -0.1 + 1e-5, 0.0}) {
+                const PosedBox a(brick, Quaternion{}, {0.0, 0.0, 0.0});
+                const PosedBox b(brick, Quaternion{}, {x_m, y_m, z_m});
+                ContactScratch3d scratch;
+                std::vector<ContactGeometry3d> general, boxes;
+                polyhedron_contact_3d(a.view(false), b.view(false), scratch, general);
+                polyhedron_contact_3d(a.view(true), b.view(true), scratch, boxes);
+                ASSERT_EQ(general.size(), boxes.size()) << x_m << " " << y_m << " " << z_m;
+                for (std::size_t k = 0; k < general.size(); ++k) {
+                    EXPECT_EQ(general[k].feature_a, boxes[k].feature_a);
+                    EXPECT_EQ(general[k].feature_b, boxes[k].feature_b);
+                    EXPECT_EQ(general[k].overlap_m, boxes[k].overlap_m);
+                    EXPECT_NEAR(general[k].stiffness_share, boxes[k].stiffness_share, 1e-10);
+                }
+                pairs += general.empty() ? 0 : 1;
+            }
+        }
+    }
+    EXPECT_GT(pairs, 20);
 }
 
 }  // namespace
