@@ -7,21 +7,8 @@
 namespace blockdem {
 namespace {
 
-// A corner of the polygon being clipped, in the reference face's frame (u, v in its plane, w along
-// its outward normal, from its corner 0), with ClipCorner3d's features. No default values: the
-// clip's arrays are written before they are read, and zeroing them cost a sixth of the clip.
-struct FaceCorner {
-    double u_m;
-    double v_m;
-    double w_m;
-    std::uint32_t feature_incident;
-    std::uint32_t feature_reference;
-    std::uint32_t line_after;
-    bool line_is_reference;
-};
-
-constexpr std::size_t most_corners = box_clip_most_incident_corners + 4;
-using FacePolygon = std::array<FaceCorner, most_corners>;
+using FaceCorner = BoxClipCorner3d;
+constexpr std::size_t most_corners = BoxFaceClip3d::most_corners;
 
 // One side of the rectangle: a bound on u (axis 0) or v (axis 1). A corner's height over the side
 // plane is sign (coordinate - bound); the general clip's is that times the side's length.
@@ -48,8 +35,8 @@ bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& in
     return ref.box != nullptr && ref.box->is_box && inc.shape->faces[inc_face].size() <= box_clip_most_incident_corners;
 }
 
-bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                      std::uint32_t inc_face, std::vector<ClipCorner3d>& polygon) {
+bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                            std::uint32_t inc_face, BoxFaceClip3d& clip) {
     // The frame: origin at the face's corner 0, e_u one of the box's directions in the face's
     // plane, e_v = n x e_u, so that (e_u, e_v, n) is right-handed as the general clip's sides assume.
     const auto& ref_corners = ref.shape->faces[ref_face];
@@ -57,6 +44,9 @@ bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     const int normal_direction = ref.box->face_direction[ref_face];
     const Vec3 e_u = ref.directions[normal_direction == 0 ? 1 : 0];
     const Vec3 e_v = cross(n, e_u);
+    clip.e_u = e_u;
+    clip.e_v = e_v;
+    clip.n = n;
     const Vec3 origin_m = ref.vertices_m[ref_corners[0]];
     double corner_u[4], corner_v[4];
     for (std::size_t k = 0; k < 4; ++k) {
@@ -64,10 +54,10 @@ bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         corner_u[k] = dot(r, e_u);
         corner_v[k] = dot(r, e_v);
     }
+    clip.origin_m = origin_m;
 
-    FacePolygon buffers[2];
-    FaceCorner* here_polygon = buffers[0].data();
-    FaceCorner* next_polygon = buffers[1].data();
+    FaceCorner* here_polygon = clip.buffers[0].data();
+    FaceCorner* next_polygon = clip.buffers[1].data();
     std::size_t count = 0;
     const auto& inc_corners = inc.shape->faces[inc_face];
     for (std::size_t k = 0; k < inc_corners.size(); ++k) {
@@ -129,12 +119,21 @@ bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         std::swap(here_polygon, next_polygon);
         count = clipped;
     }
+    clip.count = count;
+    clip.corners = here_polygon;
+    return true;
+}
+
+bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                      std::uint32_t inc_face, std::vector<ClipCorner3d>& polygon) {
+    BoxFaceClip3d clip;
+    if (!clip_box_face_in_frame(ref, ref_face, inc, inc_face, clip)) return false;
     // Each corner written into its slot: no capacity check a corner (the scratch keeps its size).
-    polygon.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const FaceCorner& c = here_polygon[i];
-        polygon[i] = {origin_m + c.u_m * e_u + c.v_m * e_v + c.w_m * n, c.feature_incident, c.feature_reference,
-                      c.line_after, c.line_is_reference};
+    polygon.resize(clip.count);
+    for (std::size_t i = 0; i < clip.count; ++i) {
+        const FaceCorner& c = clip.corners[i];
+        polygon[i] = {clip.world_m(c.u_m, c.v_m, c.w_m), c.feature_incident, c.feature_reference, c.line_after,
+                      c.line_is_reference};
     }
     return true;
 }

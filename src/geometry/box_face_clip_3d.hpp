@@ -8,6 +8,7 @@
 // corner order, with the same slack, crossings and features, so it gives the general clip's
 // corners (to round-off) in the same order round the polygon and with the same keys
 // (unit/test_box_face_clip_3d checks it over random poses).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,41 @@ namespace blockdem {
 /// The largest incident face the rectangle clip takes: a face of k corners clipped by four sides
 /// has at most k + 4.
 constexpr std::size_t box_clip_most_incident_corners = 8;
+
+/// A corner of the rectangle clip's polygon in the reference face's frame (u, v in its plane, w
+/// along its outward normal, from its corner 0), with ClipCorner3d's features. No default values:
+/// the clip's arrays are written before they are read, and zeroing them cost a sixth of the clip.
+struct BoxClipCorner3d {
+    double u_m;  ///< [m]
+    double v_m;  ///< [m]
+    double w_m;  ///< [m] height over the reference plane (negative below it: the depth is -w_m)
+    std::uint32_t feature_incident;
+    std::uint32_t feature_reference;
+    std::uint32_t line_after;
+    bool line_is_reference;
+};
+
+/// The rectangle clip's polygon left in the reference face's frame. Why (docs/performance.md,
+/// "Branch clip3d"): the narrow phase needs a corner's depth (-w) and, for the shares, only turns,
+/// which a rotation keeps (to round-off), so only the points below the plane are lifted to the world.
+struct BoxFaceClip3d {
+    static constexpr std::size_t most_corners = box_clip_most_incident_corners + 4;
+    Vec3 origin_m;  ///< [m] the reference face's corner 0
+    Vec3 e_u;       ///< one of the box's directions in the face's plane
+    Vec3 e_v;       ///< n x e_u
+    Vec3 n;         ///< the face's outward normal
+    std::size_t count = 0;
+    const BoxClipCorner3d* corners = nullptr;  ///< count corners in order round the polygon (into buffers)
+    std::array<BoxClipCorner3d, most_corners> buffers[2];  ///< the clip's two polygons, one side to the next
+
+    /// The world point of (u, v, w).
+    Vec3 world_m(double u_m, double v_m, double w_m) const { return origin_m + u_m * e_u + v_m * e_v + w_m * n; }
+};
+
+/// clip_by_box_face's polygon, left in the reference face's frame (clip.corners). Returns false
+/// as clip_by_box_face does.
+bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                            std::uint32_t inc_face, BoxFaceClip3d& clip);
 
 /// Whether clip_by_box_face can clip inc's face inc_face against ref's face: ref is a box (its
 /// box frame says so) and the incident face has at most box_clip_most_incident_corners corners.

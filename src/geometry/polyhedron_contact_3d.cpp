@@ -274,15 +274,54 @@ std::uint32_t most_opposed_box_face(const PosedPolyhedron& ref, std::uint32_t re
     return inc_face;
 }
 
+// The contact points of a box face's rectangle clip, read in the face's frame: a corner's depth is
+// -w, its point the world point halfway up, lifted only when it is below the plane; the shares
+// are the turns of the polygon in that frame, which a rotation keeps to round-off (the polygon
+// lies in the incident face, tilted or not, and its turns are measured in 3-D there as in the world).
+void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_box, ContactScratch3d& scratch,
+                     std::vector<ContactGeometry3d>& out) {
+    const std::size_t count = clip.count;
+    const BoxClipCorner3d* polygon = clip.corners;
+    if (scratch.corners_m.size() < count) scratch.corners_m.resize(count);
+    if (scratch.shares.size() < count) scratch.shares.resize(count);
+    if (scratch.quarter_turns.size() < count) scratch.quarter_turns.resize(count);
+    Vec3* corners_m = scratch.corners_m.data();
+    std::uint8_t* quarter_turns = scratch.quarter_turns.data();
+    for (std::size_t i = 0; i < count; ++i) {
+        corners_m[i] = {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m};
+        quarter_turns[i] = incident_is_box && feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+    }
+    corner_shares_3d(corners_m, count, scratch.shares.data(), quarter_turns);
+    const double* shares = scratch.shares.data();
+    const Vec3 normal = ref_is_a ? clip.n : -clip.n;
+    for (std::size_t i = 0; i < count; ++i) {
+        const BoxClipCorner3d& c = polygon[i];
+        if (c.w_m >= 0.0) continue;  // depth -w <= 0
+        ContactGeometry3d g{clip.world_m(c.u_m, c.v_m, 0.5 * c.w_m), normal, -c.w_m, c.feature_reference,
+                            c.feature_incident, shares[i]};
+        if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
+        out.push_back(g);
+    }
+}
+
 void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc, bool ref_is_a,
                   const BoxPair* pair, ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
     const Vec3 n = ref.face_normals[ref_face];
     const std::uint32_t inc_face = pair != nullptr ? most_opposed_box_face(ref, ref_face, inc, *pair, ref_is_a)
                                                    : most_opposed_face(inc, n);
-    // Two boxes: the rectangle clip applies (a box face has 4 corners), no need to ask.
-    if (!(pair != nullptr || box_face_clip_applies(ref, inc, inc_face)) ||
-        !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon))
+    // Two boxes: the rectangle clip applies (a box face has 4 corners), no need to ask; its
+    // polygon is read in the face's frame.
+    if (pair != nullptr) {
+        BoxFaceClip3d clip;
+        if (clip_box_face_in_frame(ref, ref_face, inc, inc_face, clip)) {
+            box_face_points(clip, ref_is_a, true, scratch, out);
+            return;
+        }
         clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
+    } else if (!box_face_clip_applies(ref, inc, inc_face) ||
+               !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon)) {
+        clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
+    }
     // The polygon's size and arrays read once (the writes below could alias the vectors' own).
     const std::size_t count = scratch.polygon.size();
     const ClipCorner3d* polygon = scratch.polygon.data();
