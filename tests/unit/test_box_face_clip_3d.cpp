@@ -8,6 +8,7 @@
 
 #include "geometry/box_face_clip_3d.hpp"
 #include "geometry/box_frame_3d.hpp"
+#include "geometry/corner_share_3d.hpp"
 
 namespace blockdem {
 namespace {
@@ -96,6 +97,52 @@ TEST(BoxFaceClip3d, GivesTheGeneralClipsCornersInOrderOverRandomPoses) {
     EXPECT_GT(tally.corners, 10000);
     EXPECT_GT(tally.incident_edges, 2000);
     EXPECT_GT(tally.reference_corners, 1500);
+}
+
+// The polygon left in the reference face's frame, as the narrow phase reads it, against the
+// general clip's world corners: each corner's depth -w against the world depth (plane - n . p),
+// and the shares from the turns in the face's frame against the shares from the world corners.
+TEST(BoxFaceClip3d, TheFacesFrameGivesTheWorldsDepthsAndShares) {
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    int corners = 0, cut_corners = 0;
+    for (int trial = 0; trial < 600; ++trial) {
+        const double turn = trial % 2 == 0 ? 0.02 : 0.6;
+        const Posed a(brick, from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)}), {});
+        const Posed b(brick, from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)}),
+                      {0.1 * u(random), 0.05 * u(random), 0.1 + 0.01 * u(random)});
+        const PosedPolyhedron ref = a.view();
+        const PosedPolyhedron inc = b.view();
+        for (std::uint32_t f = 0; f < a.shape.faces.size(); ++f) {
+            const std::uint32_t inc_face = most_opposed_face(b, a.normals[f]);
+            ContactScratch3d general;
+            clip_by_face_sides(ref, f, inc, inc_face, general);
+            BoxFaceClip3d clip;
+            ASSERT_TRUE(clip_box_face_in_frame(ref, f, inc, inc_face, clip));
+            ASSERT_EQ(general.polygon.size(), clip.count);
+            const std::size_t count = clip.count;
+            std::vector<Vec3> world(count), in_frame(count);
+            std::vector<double> world_shares(count), frame_shares(count);
+            const double plane_m = dot(a.normals[f], a.vertices[a.shape.faces[f][0]]);
+            for (std::size_t k = 0; k < count; ++k) {
+                world[k] = general.polygon[k].point_m;
+                in_frame[k] = {clip.corners[k].u_m, clip.corners[k].v_m, clip.corners[k].w_m};
+                // Sums of products of lengths below 0.3 m: a few 1e-17 m of round-off each.
+                EXPECT_NEAR(-clip.corners[k].w_m, plane_m - dot(a.normals[f], world[k]), 1e-14);
+                EXPECT_NEAR(length(clip.world_m(in_frame[k].x, in_frame[k].y, in_frame[k].z) - world[k]), 0.0, 1e-12);
+                if (feature_kind(clip.corners[k].feature_incident) != FeatureKind3d::vertex) ++cut_corners;
+                ++corners;
+            }
+            corner_shares_3d(world.data(), count, world_shares.data());
+            corner_shares_3d(in_frame.data(), count, frame_shares.data());
+            // A turn is an arctangent of ratios of sides at least 1e-9 of the longest (shorter
+            // ones group their corners), whose round-off of 1e-16 m it divides by them: 1e-10.
+            for (std::size_t k = 0; k < count; ++k) EXPECT_NEAR(frame_shares[k], world_shares[k], 1e-10) << k;
+        }
+    }
+    EXPECT_GT(corners, 5000);
+    EXPECT_GT(cut_corners, 1000);
 }
 
 TEST(BoxFaceClip3d, FlushFacesKeepTheCornersOnTheSidePlanes) {
