@@ -458,21 +458,32 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     const auto key = [](const ContactGeometry3d& g) {
         return (static_cast<std::uint64_t>(g.feature_a) << 32) | g.feature_b;
     };
+    // A key found twice (a reference corner found from both its sides, two corners at one place)
+    // is seen by the sort itself: after a stable insertion equal keys are neighbours, and each
+    // point's final left neighbour is the one it was last compared with (the point it stopped at,
+    // or its predecessor when already in order), so comparing for equality there finds every
+    // duplicate. Without one the points are final as sorted, and the merge pass is skipped.
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
+    bool duplicate = false;
     for (auto it = begin + (begin != out.end()); it != out.end(); ++it) {
         const std::uint64_t k = key(*it);
-        if (key(*(it - 1)) <= k) continue;
+        const std::uint64_t before = key(*(it - 1));
+        if (before <= k) {
+            duplicate |= before == k;
+            continue;
+        }
         const ContactGeometry3d moved = *it;
         auto hole = it;
         do {
             *hole = *(hole - 1);
             --hole;
         } while (hole != begin && key(*(hole - 1)) > k);
+        duplicate |= hole != begin && key(*(hole - 1)) == k;
         *hole = moved;
     }
-    // A key twice (a reference corner found from both its sides, two corners at one place): the
-    // first stands for it, with both shares. A point is moved only once a duplicate went before it.
-    if (begin != out.end()) {
+    // The first of equal keys stands for them, with all their shares. A point is moved only once a
+    // duplicate went before it.
+    if (duplicate) {
         auto kept = begin;
         for (auto it = begin + 1; it != out.end(); ++it) {
             if (it->feature_a == kept->feature_a && it->feature_b == kept->feature_b)
