@@ -124,6 +124,8 @@ FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, const
         const double reach_o_m = ho.x * d(0) + ho.y * d(1) + ho.z * d(2);
         const double centre_m = r_is_a ? pair.offset_a_m[i] : -pair.offset_b_m[i];  // o's centre minus r's
         const double separation_m = std::abs(centre_m) - reach_o_m - half_r[i];
+        // The face is looked up only for a direction that can go first (most lose).
+        if (separation_m < best.separation_m) continue;
         // On centre_m = 0 both faces along i separate as much: the lower number, as in a face loop.
         const std::uint32_t face = centre_m > 0.0   ? r.box->face_of[i][0]
                                    : centre_m < 0.0 ? r.box->face_of[i][1]
