@@ -226,10 +226,14 @@ void find_contacts(World3d& w) {
         });
     if (s.pair_points.size() < s.pairs.size()) s.pair_points.resize(s.pairs.size());
     if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
+    // Each body posed for the narrow phase once, not once for each pair side it is in.
+    s.posed.resize(w.bodies.size());
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
+                 [&](std::ptrdiff_t i) { s.posed[i] = posed(w, static_cast<std::uint32_t>(i)); });
     parallel_for(static_cast<std::ptrdiff_t>(s.pairs.size()), [&](std::ptrdiff_t k) {
         auto& points = s.pair_points[k];
         points.clear();
-        polyhedron_contact_3d(posed(w, s.pairs[k].first), posed(w, s.pairs[k].second), s.clipping[thread_index()],
+        polyhedron_contact_3d(s.posed[s.pairs[k].first], s.posed[s.pairs[k].second], s.clipping[thread_index()],
                               points);
     });
     // The table's layout first: each pair's run of points (a prefix sum over the pairs, the only
