@@ -429,6 +429,9 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
                                   std::vector<ContactGeometry3d>& out) {
     bool apart = false;
     const bool boxes = a.box != nullptr && a.box->is_box && b.box != nullptr && b.box->is_box;
+    // The incident face from the dots when both boxes' normals are their directions to the bit
+    // (read here, with is_box, while the frames are at hand).
+    const bool exact_boxes = boxes && a.box->normals_are_directions && b.box->normals_are_directions;
     const BoxPair pair = boxes ? box_pair(a, b) : BoxPair{};
     const FaceAxis face_a = boxes ? box_face_axis(a, b, pair, true, apart) : best_face_axis(a, b, apart);
     if (apart) return 0;
@@ -444,9 +447,7 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     if (apart) return 0;
     const bool use_edge = -edge.separation_m < clearly * face_overlap_m;
     if (!use_edge || !edge_contact(a, b, edge, out)) {
-        // The incident face from the dots when both boxes' normals are their directions to the bit.
-        const BoxPair* exact_pair =
-            boxes && a.box->normals_are_directions && b.box->normals_are_directions ? &pair : nullptr;
+        const BoxPair* exact_pair = exact_boxes ? &pair : nullptr;
         if (use_b)
             face_contact(b, face_b.face, a, false, exact_pair, scratch, out);
         else
