@@ -468,11 +468,13 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     // duplicate. Without one the points are final as sorted, and the merge pass is skipped.
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
     bool duplicate = false;
+    // The largest key so far, the last point's (an insertion leaves it last): read once a point.
+    std::uint64_t before = begin != out.end() ? key(*begin) : 0;
     for (auto it = begin + (begin != out.end()); it != out.end(); ++it) {
         const std::uint64_t k = key(*it);
-        const std::uint64_t before = key(*(it - 1));
         if (before <= k) {
             duplicate |= before == k;
+            before = k;
             continue;
         }
         const ContactGeometry3d moved = *it;
