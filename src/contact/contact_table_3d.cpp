@@ -47,6 +47,9 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
             const double before = previous[j].stiffness_share;
             if (p.stiffness_share != before)
                 p.shear.spring_n = before > 0.0 ? (p.stiffness_share / before) * p.shear.spring_n : Vec3{};
+        } else {
+            p.normal_dashpot_n = 0.0;
+            p.shear = {};
         }
     }
 }

@@ -45,8 +45,9 @@ inline ContactParameters point_parameters(const ContactParameters& p, double sti
     return q;
 }
 
-/// Gives each point of current (sorted by key, fresh from the narrow phase, history zero) the
-/// history of the point of previous (sorted by key) with the same key, by one merge pass. The
+/// Gives each point of current (sorted by key, fresh from the narrow phase) the history of the
+/// point of previous (sorted by key) with the same key, by one merge pass, and a point with no
+/// such key a zero history (whatever it held: the step's table fill leaves it unwritten). The
 /// shear spring is the point's tangential displacement times its stiffness w ks: when w changes
 /// it is scaled by w_now / w_before, so that the displacement is what is carried.
 void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current);

@@ -41,6 +41,7 @@ struct ContactPairSums3d {
     std::uint32_t candidate = 0;    ///< index in WorldScratch3d::pairs
     std::uint32_t first_point = 0;  ///< index in World3d::contacts
     std::uint32_t points = 0;
+    double dashpot_mass_per_share_kg = 0.0;  ///< [kg] M / S: a point's dashpot mass is its share w times this
     Vec3 force_n;                   ///< [N] the sum of the points' forces on b (minus it on a)
     Vec3 torque_about_a_n_m;        ///< [N m] their moment about a's centroid
 };
