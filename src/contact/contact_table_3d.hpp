@@ -52,9 +52,10 @@ inline ContactParameters point_parameters(const ContactParameters& p, double sti
 /// it is scaled by w_now / w_before, so that the displacement is what is carried.
 void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current);
 
-/// The same for a run of count points of current (sorted by key), found in previous by galloping
-/// from hint (where the run is expected in previous: its index in current) and then merged: runs of
-/// one table can be carried in parallel, with the whole table's result.
+/// The same for a run of count points of current (sorted by key), all of one pair of bodies: last
+/// step's run of that pair is found in previous by galloping from hint (where the run is expected
+/// in previous: its index in current) and then merged by features: runs of one table can be
+/// carried in parallel, with the whole table's result.
 void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
                    std::size_t hint);
 
