@@ -259,63 +259,75 @@ PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
             ba.position_m};
 }
 
+// What the law at a pair's points shares besides the motion: the parameters, and the dashpot
+// coefficients per unit of a point's stiffness share. A point of share w has kn w and ks w, and
+// its dashpot mass is w M / S (find_contacts), so its coefficient 2 h sqrt(w M / S k w) is w
+// times 2 h sqrt(M k / S): one root a pair for each dashpot, not one a point (where S = 0 every
+// w is 0, and so is every coefficient).
+struct PairLaw {
+    double kn_N_m = 0.0;              ///< [N/m] a point's at share 1
+    double ks_N_m = 0.0;              ///< [N/m]
+    double cn_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_n sqrt(M kn / S)
+    double cs_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_s sqrt(M ks / S)
+    double mu = 0.0;
+    double dt_s = 0.0;                ///< [s]
+    ContactTermination termination = ContactTermination::no_tension;
+};
+
+PairLaw pair_law_parameters(const World3d& w, const ContactPairSums3d& pair) {
+    const ContactParameters& p = w.contact;
+    const double mass_per_share_kg = pair.dashpot_mass_per_share_kg;
+    return {p.kn_N_m,
+            p.ks_N_m,
+            2.0 * p.h_n * std::sqrt(mass_per_share_kg * p.kn_N_m),
+            2.0 * p.h_s * std::sqrt(mass_per_share_kg * p.ks_N_m),
+            p.mu,
+            w.dt_s,
+            p.termination};
+}
+
+// The law at one point: its force into its own slot, its energy terms added to t. The normal
+// half of the 2-D law (linear_spring_dashpot.hpp), then the vector slider (coulomb_slider_3d.hpp):
+// the scalar shear of the 2-D law is not worked out for nothing. The energy terms are
+// contact_elastic_energy's with no scalar shear.
+void contact_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& c, LawTotals& t) {
+    const double share = c.stiffness_share;
+    const double kn_N_m = law.kn_N_m * share;
+    const double ks_N_m = law.ks_N_m * share;
+    const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, c.point_m - m.centroid_a_m);
+    const double normal_speed = dot(relative, c.normal);
+    const Vec3 tangential = relative - normal_speed * c.normal;
+    ContactForce f;
+    normal_spring_dashpot(kn_N_m, law.cn_per_share_N_s_m * share, law.termination, c.overlap_m, normal_speed,
+                          c.normal_dashpot_n, law.dt_s, f);
+    const ShearForce3d s = coulomb_slider_3d(ks_N_m, law.cs_per_share_N_s_m * share, law.mu * std::max(0.0, f.normal_n),
+                                             tangential, carry_to_normal(c.shear, c.normal), law.dt_s);
+    c.normal_dashpot_n = f.normal_dashpot_n;
+    c.shear = {s.spring_n, s.dashpot_n};
+    c.sliding = s.sliding;
+    c.force_n = f.normal_n * c.normal + s.total_n;
+    t.elastic_j += 0.5 * kn_N_m * c.overlap_m * c.overlap_m +
+                   (ks_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / ks_N_m : 0.0);
+    t.normal_dashpot_j += f.normal_dashpot_work_j;
+    t.shear_dashpot_j += s.shear_dashpot_work_j;
+    t.friction_j += s.friction_work_j;
+}
+
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
-// moment about a's centroid), the pair's energy terms returned. A point of stiffness share w has
-// kn w and ks w, and its dashpot mass is w M / S (find_contacts), so its dashpot coefficient
-// 2 h sqrt(w M / S k w) is w times 2 h sqrt(M k / S): one root a pair for each dashpot, not one a
-// point (where S = 0 every w is 0, and so is every coefficient). Each point then takes the normal
-// half of the 2-D law (linear_spring_dashpot.hpp) and the vector slider (coulomb_slider_3d.hpp),
-// its force into its own slot; the energy terms are contact_elastic_energy's with no scalar shear.
+// moment about a's centroid), the pair's energy terms returned.
 LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
-    // The parameters as locals: the points' slots are written in the loop, and the compiler
-    // cannot tell that they do not alias w.contact (it read them again at every point).
-    const ContactParameters& p = w.contact;
-    const double kn_N_m = p.kn_N_m;
-    const double ks_N_m = p.ks_N_m;
-    const double mu = p.mu;
-    const ContactTermination termination = p.termination;
-    const double mass_per_share_kg = pair.dashpot_mass_per_share_kg;
-    const double cn_per_share_N_s_m = 2.0 * p.h_n * std::sqrt(mass_per_share_kg * kn_N_m);
-    const double cs_per_share_N_s_m = 2.0 * p.h_s * std::sqrt(mass_per_share_kg * ks_N_m);
-    const double dt_s = w.dt_s;
+    const PairLaw law = pair_law_parameters(w, pair);
     LawTotals t;
-    for (std::uint32_t k = 0; k < pair.points; ++k) {
-        ContactPoint3d& c = points[k];
-        const double share = c.stiffness_share;
-        const double kn_point_N_m = kn_N_m * share;
-        const double ks_point_N_m = ks_N_m * share;
-        const Vec3 normal = c.normal;
-        const double overlap_m = c.overlap_m;
-        const Vec3 arm_m = c.point_m - m.centroid_a_m;
-        const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, arm_m);
-        const double normal_speed = dot(relative, normal);
-        const Vec3 tangential = relative - normal_speed * normal;
-        ContactForce f;
-        normal_spring_dashpot(kn_point_N_m, cn_per_share_N_s_m * share, termination, overlap_m, normal_speed,
-                              c.normal_dashpot_n, dt_s, f);
-        const ShearForce3d s = coulomb_slider_3d(ks_point_N_m, cs_per_share_N_s_m * share, mu * std::max(0.0, f.normal_n),
-                                                 tangential, carry_to_normal(c.shear, normal), dt_s);
-        const Vec3 point_force_n = f.normal_n * normal + s.total_n;
-        c.normal_dashpot_n = f.normal_dashpot_n;
-        c.shear = {s.spring_n, s.dashpot_n};
-        c.sliding = s.sliding;
-        c.force_n = point_force_n;
-        t.elastic_j += 0.5 * kn_point_N_m * overlap_m * overlap_m +
-                       (ks_point_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / ks_point_N_m : 0.0);
-        t.normal_dashpot_j += f.normal_dashpot_work_j;
-        t.shear_dashpot_j += s.shear_dashpot_work_j;
-        t.friction_j += s.friction_work_j;
-    }
-    // The sums in a loop of their own: in the law's loop their six accumulators, with the
-    // pair's motion and parameters, were more live values than registers, and were spilled.
     Vec3 force_n, torque_n_m;
     for (std::uint32_t k = 0; k < pair.points; ++k) {
-        force_n += points[k].force_n;
-        torque_n_m += cross(points[k].point_m - m.centroid_a_m, points[k].force_n);
+        ContactPoint3d& c = points[k];
+        contact_law(m, law, c, t);
+        force_n += c.force_n;
+        torque_n_m += cross(c.point_m - m.centroid_a_m, c.force_n);
     }
     pair.force_n = force_n;
     pair.torque_about_a_n_m = torque_n_m;
