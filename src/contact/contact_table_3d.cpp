@@ -31,7 +31,9 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
     const std::size_t n = previous.size();
     std::size_t lo = 0, hi = n;  // below(i) for i < lo, not for i >= hi
     const std::size_t start = std::min(hint, n);
-    if (start < n && below(start)) {
+    if (start < n && bodies(previous[start].key) == first_bodies && (start == 0 || below(start - 1))) {
+        lo = hi = start;  // the hint is the run's first point: no search
+    } else if (start < n && below(start)) {
         lo = start + 1;
         for (std::size_t step = 1; lo + step - 1 < n; step *= 2) {
             if (!below(lo + step - 1)) { hi = lo + step - 1; break; }

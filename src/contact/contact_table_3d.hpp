@@ -53,9 +53,10 @@ inline ContactParameters point_parameters(const ContactParameters& p, double sti
 void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current);
 
 /// The same for a run of count points of current (sorted by key), all of one pair of bodies: last
-/// step's run of that pair is found in previous by galloping from hint (where the run is expected
-/// in previous: its index in current) and then merged by features: runs of one table can be
-/// carried in parallel, with the whole table's result.
+/// step's run of that pair is found in previous at hint (where the run is expected in previous:
+/// where last step's pair of the same rank began, or the run's index in current), or by galloping
+/// from it, and then merged: runs of one table can be carried in parallel, with the whole
+/// table's result, whatever the hints.
 void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
                    std::size_t hint);
 

@@ -186,6 +186,7 @@ void find_contacts(World3d& w) {
     // The table's layout first: each pair's run of points (a prefix sum over the pairs, the only
     // serial part), then the runs filled with last step's history pair by pair in parallel.
     std::swap(s.previous, w.contacts);
+    std::swap(s.previous_contact_pairs, s.contact_pairs);
     w.contacts.resize(lay_out_table(s));
     parallel_for(static_cast<std::ptrdiff_t>(s.contact_pairs.size()), [&](std::ptrdiff_t i) {
         ContactPairSums3d& pair = s.contact_pairs[i];
@@ -214,7 +215,12 @@ void find_contacts(World3d& w) {
             p.stiffness_share = g.stiffness_share;
             p.dashpot_mass_kg = by_share ? g.stiffness_share * mass_per_share_kg : mass_per_share_kg;
         }
-        carry_history(s.previous, run, pair.points, pair.first_point);
+        // Where last step's run of the pair is looked for first: where last step's pair of the
+        // same rank began (exact while the set of pairs in contact holds; a hint only).
+        const std::size_t hint = static_cast<std::size_t>(i) < s.previous_contact_pairs.size()
+                                     ? s.previous_contact_pairs[i].first_point
+                                     : pair.first_point;
+        carry_history(s.previous, run, pair.points, hint);
     });
 }
 
