@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "laws/coulomb_slider_3d.hpp"
 
@@ -71,6 +72,62 @@ TEST(CoulombSlider3d, HistoryCarriedIntoATurnedFrame) {
     const ShearHistory3d carried = carry_to_normal(h, {0.0, 0.0, 1.0});
     expect_vec_near(carried.spring_n, {5.0, 0.0, 0.0}, 1e-12);
     expect_vec_near(carried.dashpot_n, {0.0, 2.0, 0.0}, 0.0);
+}
+
+
+// The carry's length ratio is one root of |v|^2 / (|v|^2 - (v.n)^2) (none where the ratio's
+// argument rounds to 1): against the two-length form it replaced, over turns from 1e-12 rad (the
+// root skipped) to 1 rad (taken), lengths from 1e-6 to 1e6 N. The result keeps |v| and lies in the
+// new plane to a few units of round-off (4e-16 relative: a dot, a square root and a product each
+// round once, with |v.n| <= |v|), and differs from the two-length form by no more.
+TEST(CoulombSlider3d, CarriedIntoPlaneKeepsTheLengthWithOneRoot) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto random_unit = [&] {
+        for (;;) {
+            const Vec3 v{unit(random), unit(random), unit(random)};
+            if (dot(v, v) > 0.01 && dot(v, v) < 1.0) return (1.0 / length(v)) * v;
+        }
+    };
+    const auto two_lengths = [](Vec3 v, Vec3 n) {
+        const Vec3 in_plane = v - dot(v, n) * n;
+        const double l = length(in_plane);
+        return l > 0.0 ? (length(v) / l) * in_plane : Vec3{};
+    };
+    int skipped = 0, taken = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const Vec3 old_normal = random_unit();
+        const Vec3 across = random_unit();
+        const Vec3 in_old = across - dot(across, old_normal) * old_normal;
+        const double magnitude_n = std::pow(10.0, -6.0 + 12.0 * (trial % 13) / 12.0);
+        const Vec3 v = (magnitude_n / length(in_old)) * in_old;
+        // The new normal: the old one turned by angle about a random axis (Rodrigues).
+        const double angle = std::pow(10.0, -12.0 + 12.0 * (trial % 7) / 6.0);
+        const Vec3 axis = random_unit();
+        const Vec3 turned = std::cos(angle) * old_normal + std::sin(angle) * cross(axis, old_normal) +
+                            (1.0 - std::cos(angle)) * dot(axis, old_normal) * axis;
+        const Vec3 normal = (1.0 / length(turned)) * turned;
+        const Vec3 carried = carried_into_plane(v, normal);
+        const double l = length(v);
+        ASSERT_NEAR(length(carried), l, 4e-16 * l * 4) << trial;
+        ASSERT_LE(std::abs(dot(carried, normal)), 4e-16 * l * 4) << trial;
+        const Vec3 before = two_lengths(v, normal);
+        ASSERT_LE(length(carried - before), 4e-16 * l * 4) << trial;
+        const double along = dot(v, normal);
+        (dot(v, v) - along * along == dot(v, v) ? skipped : taken) += 1;
+    }
+    // Both branches were taken: small turns skip the root, large ones take it.
+    EXPECT_GT(skipped, 2000);
+    EXPECT_GT(taken, 2000);
+}
+
+TEST(CoulombSlider3d, CarriedIntoPlaneDropsAVectorWithNoPartInThePlane) {
+    const Vec3 n{0.0, 0.6, 0.8};
+    EXPECT_EQ(carried_into_plane(Vec3{}, n), (Vec3{}));
+    EXPECT_EQ(carried_into_plane(2.5 * n, n), (Vec3{}));
+    // A vector already in the plane exactly (v.n = 0) comes back as it was, bit for bit.
+    const Vec3 in_plane{1.0, 0.0, 0.0};
+    EXPECT_EQ(carried_into_plane(in_plane, n), in_plane);
 }
 
 }  // namespace
