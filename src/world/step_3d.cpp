@@ -307,7 +307,7 @@ void contact_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& c, Law
     normal_spring_dashpot(kn_N_m, law.cn_per_share_N_s_m * share, law.termination, c.overlap_m, normal_speed,
                           c.normal_dashpot_n, law.dt_s, f);
     const ShearForce3d s = coulomb_slider_3d(ks_N_m, law.cs_per_share_N_s_m * share, law.mu * std::max(0.0, f.normal_n),
-                                             tangential, carry_to_normal(c.shear, c.normal), law.dt_s);
+                                             tangential, carry_to_normal_for_slider(c.shear, c.normal), law.dt_s);
     c.normal_dashpot_n = f.normal_dashpot_n;
     c.shear = {s.spring_n, s.dashpot_n};
     c.sliding = s.sliding;

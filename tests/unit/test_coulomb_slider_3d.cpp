@@ -2,6 +2,7 @@
 // falling cap against hand-computed forces; and the history carried into a turned contact frame.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -128,6 +129,52 @@ TEST(CoulombSlider3d, CarriedIntoPlaneDropsAVectorWithNoPartInThePlane) {
     // A vector already in the plane exactly (v.n = 0) comes back as it was, bit for bit.
     const Vec3 in_plane{1.0, 0.0, 0.0};
     EXPECT_EQ(carried_into_plane(in_plane, n), in_plane);
+}
+
+
+// The law takes the history through carry_to_normal_for_slider: the spring as carry_to_normal
+// lays it (the same bits), last step's dashpot force only scaled. The slider's forces are then the
+// same bits, and its dashpot work differs by round-off: at most 8 u |d| |v| dt (v the relative
+// velocity, normal part included, whose removal leaves n . increment of a few u |v| dt).
+TEST(CoulombSlider3d, TheLawsCarryGivesTheSlidersResultToRoundOff) {
+    std::mt19937 random(12);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto random_unit = [&] {
+        for (;;) {
+            const Vec3 v{unit(random), unit(random), unit(random)};
+            if (dot(v, v) > 0.01 && dot(v, v) < 1.0) return (1.0 / length(v)) * v;
+        }
+    };
+    const double u = 0x1p-53, dt = 1e-4, ks = 1e6, cs = 300.0;
+    double largest = 0.0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const Vec3 old_normal = random_unit();
+        const auto in_old_plane = [&](double size) {
+            const Vec3 a = random_unit();
+            const Vec3 p = a - dot(a, old_normal) * old_normal;
+            return (size / length(p)) * p;
+        };
+        const ShearHistory3d h{in_old_plane(std::pow(10.0, unit(random) * 3.0)),
+                               in_old_plane(std::pow(10.0, unit(random) * 3.0))};
+        const double angle = std::pow(10.0, -10.0 + 10.0 * (trial % 6) / 5.0);
+        const Vec3 turned = old_normal + angle * cross(random_unit(), old_normal);
+        const Vec3 normal = (1.0 / length(turned)) * turned;
+        // A relative velocity mostly along the normal (an impact) or across it.
+        const Vec3 relative = std::pow(10.0, unit(random) * 2.0) * random_unit() + 10.0 * unit(random) * normal;
+        const Vec3 tangential = relative - dot(relative, normal) * normal;
+        const double limit = trial % 3 == 0 ? 1e-3 : 1e4;  // sliding and sticking
+        const ShearForce3d carried = coulomb_slider_3d(ks, cs, limit, tangential, carry_to_normal(h, normal), dt);
+        const ShearForce3d law = coulomb_slider_3d(ks, cs, limit, tangential, carry_to_normal_for_slider(h, normal), dt);
+        ASSERT_EQ(law.spring_n, carried.spring_n);
+        ASSERT_EQ(law.total_n, carried.total_n);
+        ASSERT_EQ(law.sliding, carried.sliding);
+        ASSERT_EQ(law.friction_work_j, carried.friction_work_j);
+        const double bound = 8.0 * u * (length(h.dashpot_n) + length(law.dashpot_n)) * length(relative) * dt;
+        const double difference = std::abs(law.shear_dashpot_work_j - carried.shear_dashpot_work_j);
+        ASSERT_LE(difference, bound) << trial;
+        largest = std::max(largest, difference / bound);
+    }
+    EXPECT_GT(largest, 0.0);  // the two forms do differ in their last bits
 }
 
 }  // namespace
