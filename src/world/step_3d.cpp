@@ -186,8 +186,9 @@ void find_contacts(World3d& w) {
     // The table's layout first: each pair's run of points (a prefix sum over the pairs, the only
     // serial part), then the runs filled with last step's history pair by pair in parallel.
     std::swap(s.previous, w.contacts);
-    std::swap(s.previous_contact_pairs, s.contact_pairs);
+    std::swap(s.previous_run_starts, s.run_starts);
     w.contacts.resize(lay_out_table(s));
+    s.run_starts.resize(s.contact_pairs.size());
     parallel_for(static_cast<std::ptrdiff_t>(s.contact_pairs.size()), [&](std::ptrdiff_t i) {
         ContactPairSums3d& pair = s.contact_pairs[i];
         const auto [a, b] = s.pairs[pair.candidate];
@@ -217,9 +218,10 @@ void find_contacts(World3d& w) {
         }
         // Where last step's run of the pair is looked for first: where last step's pair of the
         // same rank began (exact while the set of pairs in contact holds; a hint only).
-        const std::size_t hint = static_cast<std::size_t>(i) < s.previous_contact_pairs.size()
-                                     ? s.previous_contact_pairs[i].first_point
+        const std::size_t hint = static_cast<std::size_t>(i) < s.previous_run_starts.size()
+                                     ? s.previous_run_starts[i]
                                      : pair.first_point;
+        s.run_starts[i] = pair.first_point;
         carry_history(s.previous, run, pair.points, hint);
     });
 }

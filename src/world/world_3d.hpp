@@ -61,7 +61,8 @@ struct WorldScratch3d {
     std::vector<std::vector<ContactGeometry3d>> pair_points;  ///< per candidate pair, its points (kept: no allocation)
     std::vector<ContactPoint3d> previous;
     std::vector<ContactPairSums3d> contact_pairs;             ///< this step's pairs in contact, in table order
-    std::vector<ContactPairSums3d> previous_contact_pairs;    ///< last step's: where a pair's run in previous is looked for first
+    std::vector<std::uint32_t> run_starts;                    ///< per pair in contact, its first point in World3d::contacts
+    std::vector<std::uint32_t> previous_run_starts;           ///< last step's: where a pair's run in previous is looked for first
     std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
     std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
     std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
