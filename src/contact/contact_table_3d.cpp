@@ -2,8 +2,21 @@
 
 #include <algorithm>
 #include <compare>
+#include <cstring>
 
 namespace blockdem {
+namespace {
+
+// a == b as two 64-bit comparisons (the defaulted == compares the four fields one by one).
+bool same_key(const ContactKey3d& a, const ContactKey3d& b) {
+    static_assert(sizeof(ContactKey3d) == 2 * sizeof(std::uint64_t));
+    std::uint64_t x[2], y[2];
+    std::memcpy(x, &a, sizeof x);
+    std::memcpy(y, &b, sizeof y);
+    return ((x[0] ^ y[0]) | (x[1] ^ y[1])) == 0;
+}
+
+}  // namespace
 
 void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
                    std::size_t hint) {
@@ -18,7 +31,9 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
     const std::size_t n = previous.size();
     std::size_t lo = 0, hi = n;  // below(i) for i < lo, not for i >= hi
     const std::size_t start = std::min(hint, n);
-    if (start < n && below(start)) {
+    if (start < n && bodies(previous[start].key) == first_bodies && (start == 0 || below(start - 1))) {
+        lo = hi = start;  // the hint is the run's first point: no search
+    } else if (start < n && below(start)) {
         lo = start + 1;
         for (std::size_t step = 1; lo + step - 1 < n; step *= 2) {
             if (!below(lo + step - 1)) { hi = lo + step - 1; break; }
@@ -36,23 +51,40 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
                              previous.begin() + static_cast<std::ptrdiff_t>(hi),
                              [&](const ContactPoint3d& p) { return bodies(p.key) < first_bodies; }) -
         previous.begin());
-    // One three-way comparison a probe: the probe that stops the walk also says whether it matched.
+    // The usual point kept its key, and last step's point at j is its own: one 16-byte
+    // comparison says so. Otherwise the walk passes last step's smaller keys (points gone), one
+    // three-way comparison a probe, the probe that stops it saying whether it matched.
     for (std::size_t i = 0; i < count; ++i) {
         ContactPoint3d& p = run[i];
-        std::strong_ordering order = std::strong_ordering::less;
-        while (j < n && (order = previous[j].key <=> p.key) < 0) ++j;
-        if (j < n && order == 0) {
-            p.normal_dashpot_n = previous[j].normal_dashpot_n;
-            p.shear = previous[j].shear;
-            const double before = previous[j].stiffness_share;
+        bool found = j < n && same_key(previous[j].key, p.key);
+        if (!found) {
+            std::strong_ordering order = std::strong_ordering::less;
+            while (j < n && (order = previous[j].key <=> p.key) < 0) ++j;
+            found = j < n && order == 0;
+        }
+        if (found) {
+            const ContactPoint3d& q = previous[j++];
+            p.normal_dashpot_n = q.normal_dashpot_n;
+            p.shear = q.shear;
+            const double before = q.stiffness_share;
             if (p.stiffness_share != before)
                 p.shear.spring_n = before > 0.0 ? (p.stiffness_share / before) * p.shear.spring_n : Vec3{};
+        } else {
+            p.normal_dashpot_n = 0.0;
+            p.shear = {};
         }
     }
 }
 
 void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current) {
-    carry_history(previous, current.data(), current.size(), 0);
+    for (std::size_t first = 0; first < current.size();) {
+        std::size_t end = first + 1;
+        while (end < current.size() && current[end].key.body_a == current[first].key.body_a &&
+               current[end].key.body_b == current[first].key.body_b)
+            ++end;
+        carry_history(previous, &current[first], end - first, first);
+        first = end;
+    }
 }
 
 }  // namespace blockdem

@@ -45,15 +45,18 @@ inline ContactParameters point_parameters(const ContactParameters& p, double sti
     return q;
 }
 
-/// Gives each point of current (sorted by key, fresh from the narrow phase, history zero) the
-/// history of the point of previous (sorted by key) with the same key, by one merge pass. The
+/// Gives each point of current (sorted by key, fresh from the narrow phase) the history of the
+/// point of previous (sorted by key) with the same key, by one merge pass, and a point with no
+/// such key a zero history (whatever it held: the step's table fill leaves it unwritten). The
 /// shear spring is the point's tangential displacement times its stiffness w ks: when w changes
 /// it is scaled by w_now / w_before, so that the displacement is what is carried.
 void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<ContactPoint3d>& current);
 
-/// The same for a run of count points of current (sorted by key), found in previous by galloping
-/// from hint (where the run is expected in previous: its index in current) and then merged: runs of
-/// one table can be carried in parallel, with the whole table's result.
+/// The same for a run of count points of current (sorted by key), all of one pair of bodies: last
+/// step's run of that pair is found in previous at hint (where the run is expected in previous:
+/// where last step's pair of the same rank began, or the run's index in current), or by galloping
+/// from it, and then merged: runs of one table can be carried in parallel, with the whole
+/// table's result, whatever the hints.
 void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
                    std::size_t hint);
 

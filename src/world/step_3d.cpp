@@ -239,22 +239,27 @@ void find_contacts(World3d& w) {
     // The table's layout first: each pair's run of points (a prefix sum over the pairs, the only
     // serial part), then the runs filled with last step's history pair by pair in parallel.
     std::swap(s.previous, w.contacts);
+    std::swap(s.previous_run_starts, s.run_starts);
     w.contacts.resize(lay_out_table(s));
+    s.run_starts.resize(s.contact_pairs.size());
     parallel_for(static_cast<std::ptrdiff_t>(s.contact_pairs.size()), [&](std::ptrdiff_t i) {
-        const ContactPairSums3d& pair = s.contact_pairs[i];
+        ContactPairSums3d& pair = s.contact_pairs[i];
         const auto [a, b] = s.pairs[pair.candidate];
         const auto& points = s.pair_points[pair.candidate];
-        // The dashpots take the pair's reduced mass in proportion to the points' stiffness shares
-        // (the 2-D per-length rule), so that every point has the requested damping ratio and a box
-        // landing flat keeps its restitution.
+        // The dashpots take the pair's reduced mass M in proportion to the points' stiffness
+        // shares w (the 2-D per-length rule), M w / S, so that every point has the requested
+        // damping ratio and a box landing flat keeps its restitution. M / S is taken once a pair;
+        // where no point has stiffness (S = 0) each takes M / n.
         double shares = 0.0;
         for (const ContactGeometry3d& g : points) shares += g.stiffness_share;
-        const double mass_kg = reduced_mass(w, a, b);
+        const bool by_share = shares > 0.0;
+        const double mass_per_share_kg = reduced_mass(w, a, b) / (by_share ? shares : static_cast<double>(points.size()));
+        pair.dashpot_mass_per_share_kg = by_share ? mass_per_share_kg : 0.0;
         ContactPoint3d* run = &w.contacts[pair.first_point];
         for (std::uint32_t k = 0; k < pair.points; ++k) {
             // Written field by field into the table's slot (a default point built and copied in
-            // cost 0.3 M instructions a step on the 1000-brick wall); the history starts at zero
-            // and this step's state (force, sliding) is the law's to write.
+            // cost 0.3 M instructions a step on the 1000-brick wall). The history is
+            // carry_history's to write, this step's state (force, sliding) the law's.
             const ContactGeometry3d& g = points[k];
             ContactPoint3d& p = run[k];
             p.key = {a, b, g.feature_a, g.feature_b};
@@ -262,14 +267,15 @@ void find_contacts(World3d& w) {
             p.normal = g.normal;
             p.overlap_m = g.overlap_m;
             p.stiffness_share = g.stiffness_share;
-            p.dashpot_mass_kg = shares > 0.0 ? mass_kg * g.stiffness_share / shares
-                                             : mass_kg / static_cast<double>(points.size());
-            p.normal_dashpot_n = 0.0;
-            p.shear = {};
-            p.sliding = false;
-            p.force_n = {};
+            p.dashpot_mass_kg = by_share ? g.stiffness_share * mass_per_share_kg : mass_per_share_kg;
         }
-        carry_history(s.previous, run, pair.points, pair.first_point);
+        // Where last step's run of the pair is looked for first: where last step's pair of the
+        // same rank began (exact while the set of pairs in contact holds; a hint only).
+        const std::size_t hint = static_cast<std::size_t>(i) < s.previous_run_starts.size()
+                                     ? s.previous_run_starts[i]
+                                     : pair.first_point;
+        s.run_starts[i] = pair.first_point;
+        carry_history(s.previous, run, pair.points, hint);
     });
 }
 
@@ -314,29 +320,55 @@ PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
             ba.position_m};
 }
 
-// The law at one point: its force into its own slot, its energy terms added to t. p is the
-// pair's copy of the law's parameters, whose kn and ks are set here to the point's
-// (point_parameters' values, without copying the whole set a point). The normal half of the
-// law alone, then the vector slider: the scalar shear of the 2-D law is not worked out for
-// nothing. The same bits as linear_spring_dashpot and contact_elastic_energy with no scalar shear.
-void contact_law(const World3d& w, const PairMotion& m, ContactParameters& p, ContactPoint3d& c, LawTotals& t) {
-    p.kn_N_m = w.contact.kn_N_m * c.stiffness_share;
-    p.ks_N_m = w.contact.ks_N_m * c.stiffness_share;
-    const DashpotCoefficients k = dashpot_coefficients(p, c.dashpot_mass_kg);
+// What the law at a pair's points shares besides the motion: the parameters, and the dashpot
+// coefficients per unit of a point's stiffness share. A point of share w has kn w and ks w, and
+// its dashpot mass is w M / S (find_contacts), so its coefficient 2 h sqrt(w M / S k w) is w
+// times 2 h sqrt(M k / S): one root a pair for each dashpot, not one a point (where S = 0 every
+// w is 0, and so is every coefficient).
+struct PairLaw {
+    double kn_N_m = 0.0;              ///< [N/m] a point's at share 1
+    double ks_N_m = 0.0;              ///< [N/m]
+    double cn_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_n sqrt(M kn / S)
+    double cs_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_s sqrt(M ks / S)
+    double mu = 0.0;
+    double dt_s = 0.0;                ///< [s]
+    ContactTermination termination = ContactTermination::no_tension;
+};
+
+PairLaw pair_law_parameters(const World3d& w, const ContactPairSums3d& pair) {
+    const ContactParameters& p = w.contact;
+    const double mass_per_share_kg = pair.dashpot_mass_per_share_kg;
+    return {p.kn_N_m,
+            p.ks_N_m,
+            2.0 * p.h_n * std::sqrt(mass_per_share_kg * p.kn_N_m),
+            2.0 * p.h_s * std::sqrt(mass_per_share_kg * p.ks_N_m),
+            p.mu,
+            w.dt_s,
+            p.termination};
+}
+
+// The law at one point: its force into its own slot, its energy terms added to t. The normal
+// half of the 2-D law (linear_spring_dashpot.hpp), then the vector slider (coulomb_slider_3d.hpp):
+// the scalar shear of the 2-D law is not worked out for nothing. The energy terms are
+// contact_elastic_energy's with no scalar shear.
+void contact_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& c, LawTotals& t) {
+    const double share = c.stiffness_share;
+    const double kn_N_m = law.kn_N_m * share;
+    const double ks_N_m = law.ks_N_m * share;
     const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, c.point_m - m.centroid_a_m);
     const double normal_speed = dot(relative, c.normal);
     const Vec3 tangential = relative - normal_speed * c.normal;
     ContactForce f;
-    normal_spring_dashpot(p.kn_N_m, k.cn_N_s_m, p.termination, c.overlap_m, normal_speed, c.normal_dashpot_n, w.dt_s,
-                          f);
-    const ShearForce3d s = coulomb_slider_3d(p.ks_N_m, k.cs_N_s_m, p.mu * std::max(0.0, f.normal_n),
-                                             tangential, carry_to_normal(c.shear, c.normal), w.dt_s);
+    normal_spring_dashpot(kn_N_m, law.cn_per_share_N_s_m * share, law.termination, c.overlap_m, normal_speed,
+                          c.normal_dashpot_n, law.dt_s, f);
+    const ShearForce3d s = coulomb_slider_3d(ks_N_m, law.cs_per_share_N_s_m * share, law.mu * std::max(0.0, f.normal_n),
+                                             tangential, carry_to_normal_for_slider(c.shear, c.normal), law.dt_s);
     c.normal_dashpot_n = f.normal_dashpot_n;
     c.shear = {s.spring_n, s.dashpot_n};
     c.sliding = s.sliding;
     c.force_n = f.normal_n * c.normal + s.total_n;
-    t.elastic_j += 0.5 * p.kn_N_m * c.overlap_m * c.overlap_m +
-                   (p.ks_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / p.ks_N_m : 0.0);
+    t.elastic_j += 0.5 * kn_N_m * c.overlap_m * c.overlap_m +
+                   (ks_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / ks_N_m : 0.0);
     t.normal_dashpot_j += f.normal_dashpot_work_j;
     t.shear_dashpot_j += s.shear_dashpot_work_j;
     t.friction_j += s.friction_work_j;
@@ -349,12 +381,12 @@ LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
+    const PairLaw law = pair_law_parameters(w, pair);
     LawTotals t;
-    ContactParameters p = w.contact;
     Vec3 force_n, torque_n_m;
     for (std::uint32_t k = 0; k < pair.points; ++k) {
         ContactPoint3d& c = points[k];
-        contact_law(w, m, p, c, t);
+        contact_law(m, law, c, t);
         force_n += c.force_n;
         torque_n_m += cross(c.point_m - m.centroid_a_m, c.force_n);
     }

@@ -41,6 +41,7 @@ struct ContactPairSums3d {
     std::uint32_t candidate = 0;    ///< index in WorldScratch3d::pairs
     std::uint32_t first_point = 0;  ///< index in World3d::contacts
     std::uint32_t points = 0;
+    double dashpot_mass_per_share_kg = 0.0;  ///< [kg] M / S: a point's dashpot mass is its share w times this
     Vec3 force_n;                   ///< [N] the sum of the points' forces on b (minus it on a)
     Vec3 torque_about_a_n_m;        ///< [N m] their moment about a's centroid
 };
@@ -61,6 +62,8 @@ struct WorldScratch3d {
     std::vector<std::vector<ContactGeometry3d>> pair_points;  ///< per candidate pair, its points (kept: no allocation)
     std::vector<ContactPoint3d> previous;
     std::vector<ContactPairSums3d> contact_pairs;             ///< this step's pairs in contact, in table order
+    std::vector<std::uint32_t> run_starts;                    ///< per pair in contact, its first point in World3d::contacts
+    std::vector<std::uint32_t> previous_run_starts;           ///< last step's: where a pair's run in previous is looked for first
     std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
     std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
     std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
