@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 
 namespace blockdem {
@@ -29,14 +30,17 @@ RectangleSide rectangle_side(double u0, double v0, double u1, double v1) {
     return {1, du < 0.0 ? 1.0 : -1.0, v0, 1e-9 * std::abs(du)};
 }
 
-}  // namespace
+// The reference rectangle in the frame: its corners (u, v) and its four sides, in its corner order.
+struct RectangleInFrame {
+    double corner_u_m[4];  ///< [m]
+    double corner_v_m[4];  ///< [m]
+    RectangleSide sides[4];
+};
 
-bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& inc, std::uint32_t inc_face) {
-    return ref.box != nullptr && ref.box->is_box && inc.shape->faces[inc_face].size() <= box_clip_most_incident_corners;
-}
-
-bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                            std::uint32_t inc_face, BoxFaceClip3d& clip) {
+// The frame, the rectangle in it and the polygon's first form, the incident face's corners in
+// clip.buffers[0]: what both clips start from. Returns the incident face's corner count.
+std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                               std::uint32_t inc_face, BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
     // The frame: origin at the face's corner 0, e_u one of the box's directions in the face's
     // plane, e_v = n x e_u, so that (e_u, e_v, n) is right-handed as the general clip's sides assume.
     const auto& ref_corners = ref.shape->faces[ref_face];
@@ -48,31 +52,52 @@ bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, 
     clip.e_v = e_v;
     clip.n = n;
     const Vec3 origin_m = ref.vertices_m[ref_corners[0]];
-    double corner_u[4], corner_v[4];
     for (std::size_t k = 0; k < 4; ++k) {
         const Vec3 r = ref.vertices_m[ref_corners[k]] - origin_m;
-        corner_u[k] = dot(r, e_u);
-        corner_v[k] = dot(r, e_v);
+        rectangle.corner_u_m[k] = dot(r, e_u);
+        rectangle.corner_v_m[k] = dot(r, e_v);
+    }
+    for (std::size_t k = 0; k < 4; ++k) {
+        const std::size_t k_next = (k + 1) % 4;
+        rectangle.sides[k] = rectangle_side(rectangle.corner_u_m[k], rectangle.corner_v_m[k],
+                                            rectangle.corner_u_m[k_next], rectangle.corner_v_m[k_next]);
     }
     clip.origin_m = origin_m;
+    FaceCorner* polygon = clip.buffers[0].data();
+    const auto& inc_corners = inc.shape->faces[inc_face];
+    const std::size_t count = inc_corners.size();
+    for (std::size_t k = 0; k < count; ++k) {
+        const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
+        polygon[k] = {dot(r, e_u),
+                      dot(r, e_v),
+                      dot(r, n),
+                      feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(inc_corners[k])),
+                      feature_3d(FeatureKind3d::face, ref_face),
+                      feature_3d(FeatureKind3d::edge, inc.edges->face_edges[inc_face][k]),
+                      false};
+    }
+    return count;
+}
 
+// The crossing of the polygon's side from here to next with a side plane, here's height dh and
+// next's dn on either side of the slack: one formula for both clips, so that they agree to the bit.
+void set_crossing(const FaceCorner& here, const FaceCorner& next, double dh, double dn, FaceCorner& c) {
+    // On the plane itself: the slack decides in or out, not where the crossing is.
+    const double t = std::clamp(dh / (dh - dn), 0.0, 1.0);
+    c.u_m = here.u_m + t * (next.u_m - here.u_m);
+    c.v_m = here.v_m + t * (next.v_m - here.v_m);
+    c.w_m = here.w_m + t * (next.w_m - here.w_m);
+}
+
+// The Sutherland-Hodgman clip of the loaded face (clip.buffers[0], count corners), side by side.
+bool clip_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, std::uint32_t inc_face,
+                    const RectangleInFrame& rectangle, std::size_t count, BoxFaceClip3d& clip) {
+    const auto& ref_corners = ref.shape->faces[ref_face];
     FaceCorner* here_polygon = clip.buffers[0].data();
     FaceCorner* next_polygon = clip.buffers[1].data();
-    std::size_t count = 0;
-    const auto& inc_corners = inc.shape->faces[inc_face];
-    for (std::size_t k = 0; k < inc_corners.size(); ++k) {
-        const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
-        here_polygon[count++] = {dot(r, e_u),
-                                 dot(r, e_v),
-                                 dot(r, n),
-                                 feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(inc_corners[k])),
-                                 feature_3d(FeatureKind3d::face, ref_face),
-                                 feature_3d(FeatureKind3d::edge, inc.edges->face_edges[inc_face][k]),
-                                 false};
-    }
     for (std::size_t k = 0; k < 4 && count > 0; ++k) {
         const std::size_t k_next = (k + 1) % 4;
-        const RectangleSide side = rectangle_side(corner_u[k], corner_v[k], corner_u[k_next], corner_v[k_next]);
+        const RectangleSide& side = rectangle.sides[k];
         const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
         double heights_m[most_corners];
         bool all_in = true;
@@ -95,15 +120,13 @@ bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, 
             if (here_in) next_polygon[clipped++] = here;
             if (here_in == (dn <= side.slack_m)) continue;
             FaceCorner c;  // every field set below
-            // On the plane itself: the slack decides in or out, not where the crossing is.
-            const double t = std::clamp(dh / (dh - dn), 0.0, 1.0);
-            c.u_m = here.u_m + t * (next.u_m - here.u_m);
-            c.v_m = here.v_m + t * (next.v_m - here.v_m);
-            c.w_m = here.w_m + t * (next.w_m - here.w_m);
+            set_crossing(here, next, dh, dn, c);
             if (!here.line_is_reference) {  // an incident edge crossing this reference edge
                 c.feature_incident = here.line_after;
                 c.feature_reference = ref_edge;
             } else {  // two reference sides meet: a corner of the reference face inside the incident face
+                const double* corner_u = rectangle.corner_u_m;
+                const double* corner_v = rectangle.corner_v_m;
                 const double to_u = (c.u_m - corner_u[k]) * (c.u_m - corner_u[k]) +
                                     (c.v_m - corner_v[k]) * (c.v_m - corner_v[k]);
                 const double to_v = (c.u_m - corner_u[k_next]) * (c.u_m - corner_u[k_next]) +
@@ -122,6 +145,107 @@ bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, 
     clip.count = count;
     clip.corners = here_polygon;
     return true;
+}
+
+// The clip in one pass, where it gives the passes' polygon to the bit: when at most one side
+// cuts the loaded face (has a corner beyond its slack). The sides before it then skip, as the
+// passes do (the same heights, the same test); the cut is the passes' own cut of the incident
+// face's corners (the same formula on the same heights); the sides after it skip only if the
+// cut's new corners are inside them, which is decided without computing their heights there:
+// a new corner lies on a side of the face between two of its corners, to round-off (a few
+// 1e-16 of the largest coordinate), so if every corner is inside those sides by half their slack
+// and that half exceeds 1e-12 of the coordinates, so is every new corner. Returns false, clip
+// untouched but for its frame and buffers[0], when it cannot say: the passes then decide (a cut
+// by two sides, a corner within half a slack of a side that does not cut).
+template <std::size_t count>
+bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const RectangleInFrame& rectangle,
+                      BoxFaceClip3d& clip) {
+    const FaceCorner* polygon = clip.buffers[0].data();
+    // A corner's height over a side, sign (coordinate - bound), rounds monotonically with the
+    // coordinate, so the face's highest corner over a side is its least or greatest coordinate
+    // along the side's axis, to the bit: one height a side says whether the side cuts.
+    double least_m[2] = {polygon[0].u_m, polygon[0].v_m};
+    double greatest_m[2] = {polygon[0].u_m, polygon[0].v_m};
+    for (std::size_t i = 1; i < count; ++i) {
+        least_m[0] = std::min(least_m[0], polygon[i].u_m);
+        greatest_m[0] = std::max(greatest_m[0], polygon[i].u_m);
+        least_m[1] = std::min(least_m[1], polygon[i].v_m);
+        greatest_m[1] = std::max(greatest_m[1], polygon[i].v_m);
+    }
+    double highest_m[4];  // [m] the highest corner's height over each side
+    unsigned cutting_sides = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const RectangleSide& side = rectangle.sides[k];
+        const double extreme_m = side.sign > 0.0 ? greatest_m[side.axis] : least_m[side.axis];
+        highest_m[k] = side.sign * (extreme_m - side.bound_m);
+        cutting_sides |= static_cast<unsigned>(!(highest_m[k] <= side.slack_m)) << k;
+    }
+    if (cutting_sides == 0) {  // every side skips: the face as it is
+        clip.count = count;
+        clip.corners = polygon;
+        return true;
+    }
+    if ((cutting_sides & (cutting_sides - 1)) != 0) return false;  // two sides or more cut
+    const std::size_t k = static_cast<std::size_t>(std::countr_zero(cutting_sides));
+    const double reach_m = std::max(std::max(-least_m[0], greatest_m[0]), std::max(-least_m[1], greatest_m[1]));
+    for (std::size_t j = k + 1; j < 4; ++j) {
+        const double half_slack_m = 0.5 * rectangle.sides[j].slack_m;
+        if (!(highest_m[j] <= half_slack_m && 1e-12 * (std::abs(reach_m) + std::abs(rectangle.sides[j].bound_m)) < half_slack_m))
+            return false;
+    }
+    const RectangleSide& side = rectangle.sides[k];
+    double heights[count];
+    for (std::size_t i = 0; i < count; ++i) heights[i] = side.sign * (coordinate(polygon[i], side.axis) - side.bound_m);
+    // The one cut, as the passes make it on the face's own corners (none lies on a reference side).
+    const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
+    FaceCorner* cut = clip.buffers[1].data();
+    std::size_t clipped = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t i_next = i + 1 == count ? 0 : i + 1;
+        const FaceCorner& here = polygon[i];
+        const double dh = heights[i];
+        const double dn = heights[i_next];
+        const bool here_in = dh <= side.slack_m;
+        if (here_in) cut[clipped++] = here;
+        if (here_in == (dn <= side.slack_m)) continue;
+        FaceCorner& c = cut[clipped++];
+        set_crossing(here, polygon[i_next], dh, dn, c);
+        c.feature_incident = here.line_after;
+        c.feature_reference = ref_edge;
+        c.line_after = here_in ? ref_edge : here.line_after;
+        c.line_is_reference = here_in;
+    }
+    clip.count = clipped;
+    clip.corners = cut;
+    return true;
+}
+
+}  // namespace
+
+bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& inc, std::uint32_t inc_face) {
+    return ref.box != nullptr && ref.box->is_box && inc.shape->faces[inc_face].size() <= box_clip_most_incident_corners;
+}
+
+bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                            std::uint32_t inc_face, BoxFaceClip3d& clip) {
+    RectangleInFrame rectangle;
+    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
+    if (count == 4 && clip_in_one_pass<4>(ref, ref_face, rectangle, clip)) return true;
+    return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
+}
+
+bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                             std::uint32_t inc_face, BoxFaceClip3d& clip) {
+    RectangleInFrame rectangle;
+    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
+    return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
+}
+
+bool clip_box_face_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                               std::uint32_t inc_face, BoxFaceClip3d& clip) {
+    RectangleInFrame rectangle;
+    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
+    return count == 4 && clip_in_one_pass<4>(ref, ref_face, rectangle, clip);
 }
 
 bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,

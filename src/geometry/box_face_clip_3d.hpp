@@ -51,9 +51,20 @@ struct BoxFaceClip3d {
 };
 
 /// clip_by_box_face's polygon, left in the reference face's frame (clip.corners). Returns false
-/// as clip_by_box_face does.
+/// as clip_by_box_face does. It is the one-pass clip where that one can decide (at most one side
+/// cuts the face, docs/performance.md "Branch clip1p"), the passes otherwise: the passes' polygon
+/// to the bit either way (unit/test_box_face_clip_3d checks it).
 bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                             std::uint32_t inc_face, BoxFaceClip3d& clip);
+
+/// The Sutherland-Hodgman passes alone, side by side (what clip_box_face_in_frame stands for).
+bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                             std::uint32_t inc_face, BoxFaceClip3d& clip);
+
+/// The one-pass clip alone: false when it cannot decide as the passes would (two sides or more
+/// cut the face, or a corner lies within half a slack of a side that does not cut it).
+bool clip_box_face_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                               std::uint32_t inc_face, BoxFaceClip3d& clip);
 
 /// Whether clip_by_box_face can clip inc's face inc_face against ref's face: ref is a box (its
 /// box frame says so) and the incident face has at most box_clip_most_incident_corners corners.

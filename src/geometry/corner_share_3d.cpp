@@ -50,14 +50,24 @@ void corner_shares_3d(const Vec3* corners_m, std::size_t count, double* shares, 
     constexpr double quarter_turn_rad = 0.5 * std::numbers::pi;
     if (shortest_m2 > short_m2) {
         // No short side (the usual case): each corner is its own group, turning from the side that
-        // arrives to the side that leaves, each side taken once.
+        // arrives to the side that leaves, each side taken once. A convex polygon's turns sum to a
+        // whole turn, its shares to 4: the last corner not known to be a right angle takes what
+        // the others leave (one turn fewer, the same share to round-off; never below 0).
+        const auto known = [&](std::size_t i) { return quarter_turns != nullptr && quarter_turns[i] != 0; };
+        std::size_t last_measured = count - 1;
+        while (last_measured > 0 && known(last_measured)) --last_measured;
+        const bool all_known = known(last_measured);
+        double others = 0.0;
         Vec3 arriving = side(count - 1);
         for (std::size_t i = 0; i < count; ++i) {
             const Vec3 leaving = side(i);
-            shares[i] = quarter_turns != nullptr && quarter_turns[i] != 0 ? 1.0
-                                                                          : turn_rad(arriving, leaving) / quarter_turn_rad;
+            if (i != last_measured || all_known) {
+                shares[i] = known(i) ? 1.0 : turn_rad(arriving, leaving) / quarter_turn_rad;
+                others += shares[i];
+            }
             arriving = leaving;
         }
+        if (!all_known) shares[last_measured] = std::max(0.0, 4.0 - others);
         return;
     }
     const auto is_long = [&](std::size_t i) { return dot(side(i), side(i)) > short_m2; };

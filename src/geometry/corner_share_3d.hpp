@@ -24,7 +24,9 @@
 // polygon from any clip (the general one, a box face's rectangle clip) gets the same shares.
 // Cost (docs/performance.md, "Branch np3d"): a corner the caller knows to be a right angle (a box
 // face's own corner, kept by the clip) is given 1 without a turn; a turn near a quarter or near
-// zero, as a brick wall's cuts are, takes the arctangent's series rather than atan2.
+// zero, as a brick wall's cuts are, takes the arctangent's series rather than atan2; the last
+// corner not known to be a right angle is not measured but takes what the others leave of 4
+// (branch clip1p: the same share to round-off, one turn fewer a polygon).
 #include <cstddef>
 #include <cstdint>
 

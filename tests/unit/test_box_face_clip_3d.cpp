@@ -160,3 +160,97 @@ TEST(BoxFaceClip3d, FlushFacesKeepTheCornersOnTheSidePlanes) {
 
 }  // namespace
 }  // namespace blockdem
+
+namespace blockdem {
+namespace {
+
+// The one-pass clip (clip_box_face_in_one_pass) against the passes it stands in for
+// (clip_box_face_by_passes): where it answers, the same corners in the same order with the same
+// keys, the points to 1e-14 m and the shares to 1e-10 (it makes them with the passes' own
+// formula, so they agree to the bit; the tolerances are the ones asked of any faster clip).
+struct OnePassTally {
+    int answered = 0;   // faces the one pass clipped
+    int declined = 0;   // faces it left to the passes
+    int cut = 0;        // answered with a cut (a new corner)
+};
+
+void expect_one_pass_as_passes(const Posed& a, const Posed& b, OnePassTally& tally) {
+    const PosedPolyhedron ref = a.view();
+    const PosedPolyhedron inc = b.view();
+    for (std::uint32_t f = 0; f < a.shape.faces.size(); ++f) {
+        const std::uint32_t inc_face = most_opposed_face(b, a.normals[f]);
+        BoxFaceClip3d passes, one_pass, either;
+        ASSERT_TRUE(clip_box_face_by_passes(ref, f, inc, inc_face, passes));
+        ASSERT_TRUE(clip_box_face_in_frame(ref, f, inc, inc_face, either));
+        const bool answered = clip_box_face_in_one_pass(ref, f, inc, inc_face, one_pass);
+        // What the narrow phase takes is the passes' polygon whether or not the one pass answered.
+        const BoxFaceClip3d* clips[2] = {&either, answered ? &one_pass : &either};
+        if (answered) ++tally.answered; else ++tally.declined;
+        for (const BoxFaceClip3d* clip : clips) {
+            ASSERT_EQ(clip->count, passes.count) << "face " << f;
+            std::vector<Vec3> mine(clip->count), theirs(clip->count);
+            for (std::size_t k = 0; k < clip->count; ++k) {
+                const BoxClipCorner3d& m = clip->corners[k];
+                const BoxClipCorner3d& p = passes.corners[k];
+                EXPECT_EQ(m.feature_incident, p.feature_incident) << "face " << f << " corner " << k;
+                EXPECT_EQ(m.feature_reference, p.feature_reference) << "face " << f << " corner " << k;
+                EXPECT_EQ(m.line_after, p.line_after);
+                EXPECT_EQ(m.line_is_reference, p.line_is_reference);
+                mine[k] = {m.u_m, m.v_m, m.w_m};
+                theirs[k] = {p.u_m, p.v_m, p.w_m};
+                EXPECT_NEAR(length(mine[k] - theirs[k]), 0.0, 1e-14);
+                if (clip == &one_pass && feature_kind(m.feature_incident) != FeatureKind3d::vertex) ++tally.cut;
+            }
+            std::vector<double> my_shares(clip->count), their_shares(clip->count);
+            corner_shares_3d(mine.data(), mine.size(), my_shares.data());
+            corner_shares_3d(theirs.data(), theirs.size(), their_shares.data());
+            for (std::size_t k = 0; k < clip->count; ++k) EXPECT_NEAR(my_shares[k], their_shares[k], 1e-10) << k;
+        }
+    }
+}
+
+TEST(BoxFaceClip3d, OnePassGivesThePassesPolygonOverRandomPoses) {
+    std::mt19937 random(23);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    const std::vector<Vec3> slab = box_vertices({2.0, 1.0, 0.5}, {});
+    OnePassTally tally;
+    for (int trial = 0; trial < 600; ++trial) {
+        const double turn = trial % 3 == 0 ? 0.6 : trial % 3 == 1 ? 0.02 : 1e-7;
+        const bool on_slab = trial % 4 == 0;
+        const Posed a(on_slab ? slab : brick, from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)}), {});
+        const Posed b(brick, from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)}),
+                      {0.15 * u(random), 0.08 * u(random), (on_slab ? 0.3 : 0.1) + 0.01 * u(random)});
+        expect_one_pass_as_passes(a, b, tally);
+    }
+    // Both ways are taken, many times, and the one pass makes new corners.
+    EXPECT_GT(tally.answered, 600);
+    EXPECT_GT(tally.declined, 600);
+    EXPECT_GT(tally.cut, 600);
+}
+
+// The brick wall's exact cases: faces flush along one side (equal widths) with their corners on
+// the side planes to round-off, half-brick and other offsets along the other, a turn of 1e-7 rad
+// or none, the bricks placed far from the origin (coordinates of a long wall).
+TEST(BoxFaceClip3d, OnePassGivesThePassesPolygonOnFlushFaces) {
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    OnePassTally tally;
+    for (double far_m : {0.0, 7.3, 123.4})
+        for (double turn_rad : {0.0, 1e-7, -3e-8})
+            for (double shift_m : {0.0, 0.1, -0.1, 0.05, 0.2, 1e-12, -1e-17, 0.19999999999}) {
+                const Quaternion q = from_rotation_vector({turn_rad, 0.5 * turn_rad, -turn_rad});
+                const Vec3 base{far_m, 0.3 * far_m, 0.0};
+                const Posed a(brick, Quaternion{}, base);
+                const Posed b(brick, q, base + Vec3{shift_m, 0.0, 0.1 - 1e-6});
+                const Posed side_by_side(brick, q, base + Vec3{0.2 - 1e-6, shift_m * 0.5, 0.0});
+                expect_one_pass_as_passes(a, b, tally);
+                expect_one_pass_as_passes(a, side_by_side, tally);
+            }
+    // Of the 864 faces, the one pass answers 228 (the faces in contact and the far ones that
+    // a single side cuts), making 384 new corners; the others have two sides cutting them.
+    EXPECT_GT(tally.answered, 200);
+    EXPECT_GT(tally.cut, 300);
+}
+
+}  // namespace
+}  // namespace blockdem
