@@ -150,7 +150,6 @@ struct EdgeSearch {
     double half_b[3];
     double least_separation_m;  ///< [m] -clearly F: an axis at or below it cannot be taken
     EdgeAxis best;
-    double best_sign = 1.0;     ///< +1 when b lies along +(a_i x b_j) from a
 
     // Axis (I, J), its indices known when compiled so that the dots are read from fixed places.
     // Returns true when it separates the boxes.
@@ -168,10 +167,7 @@ struct EdgeSearch {
         if (separation_times_l > 0.0) return true;
         if (separation_times_l <= least_separation_m) return false;  // cannot be taken (l <= 1)
         const double separation_m = separation_times_l / std::sqrt(length2);
-        if (separation_m > best.separation_m) {
-            best = {separation_m, Vec3{}, I, J};
-            best_sign = centre_m >= 0.0 ? 1.0 : -1.0;
-        }
+        if (separation_m > best.separation_m) best = {separation_m, Vec3{}, I, J};
         return false;
     }
 };
@@ -187,9 +183,14 @@ EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const
             search.apart_along<2, 0>() || search.apart_along<2, 1>() || search.apart_along<2, 2>();
     EdgeAxis best = search.best;
     if (!apart && best.separation_m > -std::numeric_limits<double>::infinity()) {
-        // The world axis, only for the one kept.
-        const Vec3 axis = cross(a.directions[best.direction_a], b.directions[best.direction_b]);
-        best.axis = (search.best_sign / length(axis)) * axis;
+        // The world axis, only for the one kept, turned towards b by the world offset. Not by the
+        // sign of centre_m: that is the offset along a_i x b_j only when a's directions are
+        // right-handed, which a box whose corners are listed in another order is not (its edge
+        // directions run from the lower vertex number to the higher); |centre_m| is the same
+        // either way. As the general test: b beyond a along +axis when centre >= 0.
+        Vec3 axis = cross(a.directions[best.direction_a], b.directions[best.direction_b]);
+        axis = (1.0 / length(axis)) * axis;
+        best.axis = dot(axis, pair.offset_m) >= 0.0 ? axis : -axis;
     }
     return best;
 }
@@ -236,9 +237,6 @@ bool edge_contact(const PosedPolyhedron& a, const PosedPolyhedron& b, const Edge
 }
 
 
-// Face contact: the incident face clipped by the reference face's sides (in the reference face's
-// frame when that face is a box's rectangle, geometry/box_face_clip_3d.hpp), each clipped corner
-// below the reference plane a point.
 // The incident face: inc's face most opposed to the reference normal n (the least n . normal, the
 // first of equals in face order).
 std::uint32_t most_opposed_face(const PosedPolyhedron& inc, Vec3 n) {
@@ -306,6 +304,9 @@ void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_
     }
 }
 
+// Face contact: the incident face clipped by the reference face's sides (in the reference face's
+// frame when that face is a box's rectangle, geometry/box_face_clip_3d.hpp), each clipped corner
+// below the reference plane a point.
 void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc, bool ref_is_a,
                   const BoxPair* pair, ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
     const Vec3 n = ref.face_normals[ref_face];

@@ -214,13 +214,24 @@ SettlingSettings read_settling(TableReader t) {
     return s;
 }
 
+void check_assembly_name(const TableReader& t, const std::string& name, std::set<std::string>& seen) {
+    if (name == "all")
+        t.fail("name", "'all' names the collapse summary of every block (summary.json, collapse); choose another name");
+    if (!seen.insert(name).second)
+        t.fail("name", fmt::format("another assembly is named '{}' (each assembly is its own collapse group); choose another name",
+                                   name));
+}
+
 void read_assemblies(TableReader& top, Model& model) {
+    std::set<std::string> assemblies;
     std::set<std::string> names;
     for (const BodyDef& b : model.bodies) names.insert(b.name);
     // Bond groups: 1 for the [[bodies]] with bonded = true, 2, 3, ... for the assemblies.
     std::uint32_t group = 1;
     for (const TableReader& t : top.table_array("assemblies")) {
-        for (BodyDef& b : read_assembly(t, ++group)) {
+        std::vector<BodyDef> bodies = read_assembly(t, ++group);
+        check_assembly_name(t, bodies.front().assembly, assemblies);  // (an assembly with no block is refused)
+        for (BodyDef& b : bodies) {
             if (!names.insert(b.name).second)
                 t.fail("name", fmt::format("the generated block '{}' has the name of another body; choose another name", b.name));
             model.bodies.push_back(std::move(b));

@@ -354,8 +354,12 @@ World3d build_world_3d(TableReader& top, const std::filesystem::path& file, cons
     World3d w;
     std::vector<BodyDef3d> defs;
     for (TableReader bt : top.table_array("bodies")) defs.push_back(read_body_3d(bt));
-    for (TableReader at : top.table_array("assemblies"))
-        for (BodyDef3d& b : read_assembly_3d(at, notes)) defs.push_back(std::move(b));
+    std::set<std::string> assemblies;
+    for (TableReader at : top.table_array("assemblies")) {
+        std::vector<BodyDef3d> bodies = read_assembly_3d(at, notes);
+        if (!bodies.empty()) check_assembly_name(at, bodies.front().assembly, assemblies);
+        for (BodyDef3d& b : bodies) defs.push_back(std::move(b));
+    }
     if (defs.empty()) top.fail("", "the scenario has no [[bodies]] or [[assemblies]]");
     std::set<std::string> names;
     for (const BodyDef3d& d : defs) {

@@ -29,9 +29,9 @@ struct RunInfo {
 nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, const RunInfo& info);
 void write_summary(const std::filesystem::path& file, const nlohmann::json& summary);
 /// summary.json's "settling": what settling did before t = 0, or null (both dimensions).
+nlohmann::json settling_summary(const std::optional<SettlingRecord>& settled);
 /// summary.json's "collapse" (both dimensions): one entry per group of
 /// summarize_collapse_by_group, its first block to go named from body_names.
 nlohmann::json collapse_json(const std::vector<CollapseSummary>& groups, const std::vector<std::string>& body_names);
-nlohmann::json settling_summary(const std::optional<SettlingRecord>& settled);
 
 }  // namespace blockdem

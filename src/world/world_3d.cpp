@@ -31,7 +31,8 @@ std::size_t held(const std::vector<T>& v) { return v.capacity() * sizeof(T); }
 
 std::size_t memory_bytes(const World3d& w) {
     std::size_t bytes = sizeof(World3d) + held(w.bodies) + held(w.kinds) + held(w.edges) + held(w.box_frames) + held(w.rest_positions_m) +
-                        held(w.contacts);
+                        held(w.assembly) + held(w.contacts);
+    for (const std::string& a : w.assembly) bytes += a.capacity();
     for (const RigidBody3d& b : w.bodies) {
         bytes += b.name.capacity() + held(b.shape.vertices_m) + held(b.shape.faces) + held(b.shape.face_normals);
         for (const auto& f : b.shape.faces) bytes += held(f);
@@ -44,7 +45,8 @@ std::size_t memory_bytes(const World3d& w) {
     bytes += held(s.vertex_start) + held(s.face_start) + held(s.direction_start) + held(s.world_vertices_m) +
              held(s.world_normals) + held(s.world_directions) + held(s.angular_velocity_world_rad_s) + held(s.boxes) + held(s.is_static) + held(s.pairs) +
              held(s.pair_points) + held(s.previous) + held(s.contact_pairs) + held(s.run_starts) + held(s.previous_run_starts) + held(s.clipping) + s.broad_phase.memory_bytes() +
-             held(s.chunk_pairs) + held(s.chunk_points) + held(s.body_pair_start) + held(s.body_pairs);
+             held(s.chunk_pairs) + held(s.chunk_points) + held(s.body_pair_start) + held(s.body_pairs) +
+             held(s.rotations) + held(s.posed);
     for (const auto& points : s.pair_points) bytes += held(points);
     for (const ContactScratch3d& c : s.clipping) bytes += held(c.polygon) + held(c.clipped) + held(c.heights_m2);
     return bytes;

@@ -287,7 +287,8 @@ unit = "g"
 frequency = 2.0
 cycles = 1
 TOML
-"$bin" run "$tmp/columns.toml" --out "$tmp/columns" >"$tmp/columns.txt" 2>&1 || fail "two columns: $(cat "$tmp/columns.txt")"
+"$bin" run "$tmp/columns.toml" --out "$tmp/columns" --save-state 1.0 >"$tmp/columns.txt" 2>&1 \
+    || fail "two columns: $(cat "$tmp/columns.txt")"
 /usr/bin/python3 - "$tmp/columns/summary.json" <<'PY' || fail "the collapse groups of two columns"
 import json, sys
 c = {g["group"]: g for g in json.load(open(sys.argv[1]))["collapse"]}
@@ -303,6 +304,24 @@ assert 0.0 < c["all"]["displaced_mass_fraction"] < c["slender"]["displaced_mass_
 PY
 grep -q "^assembly slender: " "$tmp/columns.txt" && grep -q "^assembly squat: 0 of 2 blocks fell, 0 overturned" "$tmp/columns.txt" \
     && grep -q "^all blocks: " "$tmp/columns.txt" || fail "the console's collapse lines: $(cat "$tmp/columns.txt")"
+
+# An assembly named "all" (the group of every block) or two named alike are refused by name.
+sed 's/name = "squat"/name = "all"/' "$tmp/columns.toml" > "$tmp/all.toml"
+"$bin" run "$tmp/all.toml" --out "$tmp/all" -q >"$tmp/all.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "'all' names the collapse summary of every block" "$tmp/all.txt" \
+    || fail "an assembly named all: $(cat "$tmp/all.txt")"
+sed 's/name = "squat"/name = "slender"/' "$tmp/columns.toml" > "$tmp/twice.toml"
+"$bin" run "$tmp/twice.toml" --out "$tmp/twice" -q >"$tmp/twice.txt" 2>&1
+[[ $? -eq 2 ]] && grep -q "another assembly is named 'slender'" "$tmp/twice.txt" \
+    || fail "two assemblies named alike: $(cat "$tmp/twice.txt")"
+# Restarted at 1 s (the assemblies come back from the scenario), the same collapse groups.
+"$bin" run --restart "$tmp/columns/state/t_1.000000s.h5" --out "$tmp/columns_restart" -q >"$tmp/restart.txt" 2>&1 \
+    || fail "the columns' restart: $(cat "$tmp/restart.txt")"
+/usr/bin/python3 -c "
+import json
+a, b = (json.load(open(f'$tmp/{d}/summary.json'))['collapse'] for d in ('columns', 'columns_restart'))
+assert a == b, (a, b)
+" || fail "the collapse groups after a restart differ"
 
 [[ $failures -eq 0 ]] && echo "all 3-D outcome checks passed"
 exit $((failures > 0))

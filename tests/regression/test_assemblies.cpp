@@ -173,4 +173,47 @@ cell_sise = 0.2
 }
 
 }  // namespace
+// Each assembly is its own collapse group and "all" is every block's: an assembly named "all", or
+// two with one name (a column "d" and a column "d" elsewhere make blocks d0, d1 and d0, d1: the
+// body names refuse that, but a wall "d" and a column "d" would not clash), are refused by name.
+TEST(Assemblies, AssemblyNamedAllOrTwiceIsRefusedByName) {
+    const auto read_with = [](const std::string& first, const std::string& second) {
+        const std::string text = R"(
+[simulation]
+duration = 0.1
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.6
+[[assemblies]]
+type = "column"
+name = ")" + first + R"("
+density = 2500.0
+base_center = [0.0, 0.0]
+count = 2
+width = 0.4
+height = 0.5
+[[assemblies]]
+type = "wall"
+name = ")" + second + R"("
+density = 2000.0
+length = 1.0
+courses = 1
+origin = [3.0, 0.0]
+)";
+        try {
+            read_model(toml::parse(text), "test.toml", ".");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_EQ(read_with("drum", "wall"), "");
+    const std::string all = read_with("all", "wall");
+    EXPECT_NE(all.find("assemblies"), std::string::npos) << all;
+    EXPECT_NE(all.find("'all' names the collapse summary"), std::string::npos) << all;
+    const std::string twice = read_with("d", "d");
+    EXPECT_NE(twice.find("another assembly is named 'd'"), std::string::npos) << twice;
+}
+
 }  // namespace blockdem::scenes

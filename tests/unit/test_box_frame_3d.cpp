@@ -3,6 +3,7 @@
 // overlaps and normals to round-off, over random poses near contact.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "geometry/box_frame_3d.hpp"
@@ -80,11 +81,35 @@ TEST(BoxFrame3d, TurnedNormalsAreTheTurnedDirectionsToTheBit) {
     EXPECT_EQ(turned_frame.normals_are_directions, exact);
 }
 
-TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
+// The corners listed backwards: each edge direction (from the lower vertex number to the higher,
+// geometry/polyhedron_edges_3d.hpp) turns over, so the three directions make a left-handed set, as
+// a `polyhedron` or a rock block's corners listed in any order may.
+std::vector<Vec3> listed_backwards(std::vector<Vec3> v) {
+    std::reverse(v.begin(), v.end());
+    return v;
+}
+
+// d0 . (d1 x d2) of a box's three edge directions: +1 right-handed, -1 left-handed.
+double handedness(const std::vector<Vec3>& body_vertices) {
+    const PolyhedronEdges e = polyhedron_edges(convex_polyhedron(body_vertices));
+    return dot(e.directions[0], cross(e.directions[1], e.directions[2]));
+}
+
+// The box-box test against the general one over random poses, a's and b's corners listed as given.
+void expect_general_points_over_random_poses(bool a_backwards, bool b_backwards) {
     std::mt19937 random(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
-    const std::vector<Vec3> slab = box_vertices({2.0, 1.0, 0.5}, {});
+    std::vector<Vec3> brick_b = box_vertices({0.2, 0.1, 0.1}, {});
+    std::vector<Vec3> brick = brick_b;
+    std::vector<Vec3> slab = box_vertices({2.0, 1.0, 0.5}, {});
+    if (a_backwards) {
+        brick = listed_backwards(brick);
+        slab = listed_backwards(slab);
+    }
+    if (b_backwards) brick_b = listed_backwards(brick_b);
+    ASSERT_NEAR(handedness(brick), a_backwards ? -1.0 : 1.0, 1e-12);
+    ASSERT_NEAR(handedness(slab), a_backwards ? -1.0 : 1.0, 1e-12);
+    ASSERT_NEAR(handedness(brick_b), b_backwards ? -1.0 : 1.0, 1e-12);
     int touching = 0, apart = 0, edge_on_edge = 0;
     for (int trial = 0; trial < 2000; ++trial) {
         // A brick on a brick or on the slab, small turns (resting, rocking) and larger ones.
@@ -94,7 +119,7 @@ TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
         const Quaternion qb = from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)});
         const double gap = on_slab ? 0.3 : 0.1;
         const PosedBox a(on_slab ? slab : brick, qa, {0.0, 0.0, 0.0});
-        const PosedBox b(brick, qb, {0.1 * u(random), 0.05 * u(random), gap + 0.01 * u(random)});
+        const PosedBox b(brick_b, qb, {0.1 * u(random), 0.05 * u(random), gap + 0.01 * u(random)});
         ASSERT_TRUE(a.frame.is_box && b.frame.is_box);
         ContactScratch3d scratch;
         std::vector<ContactGeometry3d> general, boxes;
@@ -119,6 +144,17 @@ TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) {
     EXPECT_GT(touching, 500);
     EXPECT_GT(apart, 200);
     EXPECT_GT(edge_on_edge, 20);
+}
+
+TEST(BoxFrame3d, BoxBoxTestGivesTheGeneralTestsPointsToRoundOff) { expect_general_points_over_random_poses(false, false); }
+
+// The edge axes' sign comes from the world, not from the directions' handedness: a box whose
+// corners are listed in another order takes the same points (an edge-on-edge normal pointing
+// from b to a would drop the point or hand it to a face).
+TEST(BoxFrame3d, BoxBoxTestIsTheGeneralTestForLeftHandedBoxes) {
+    expect_general_points_over_random_poses(true, false);
+    expect_general_points_over_random_poses(false, true);
+    expect_general_points_over_random_poses(true, true);
 }
 
 TEST(BoxFrame3d, FacesAlongEachDirectionAreFoundBothWays) {
