@@ -95,7 +95,9 @@ void set_body_velocity(World3d& w, std::uint32_t i, Vec3 velocity_m_s, Vec3 angu
     const double before_j = stored_kinetic_energy(b);
     b.velocity_m_s = velocity_m_s;
     b.angular_momentum_kg_m2_s = angular_momentum_of(b, angular_velocity_rad_s);
-    w.ledger.external_work_j += stored_kinetic_energy(b) - before_j;
+    // Before the first step the velocity is part of the initial state, which the first step
+    // books as the initial energy (its ledger has no scale yet): it is not work then.
+    if (w.ledger.peak_scale_j > 0.0) w.ledger.external_work_j += stored_kinetic_energy(b) - before_j;
 }
 
 }  // namespace blockdem

@@ -53,7 +53,7 @@ void hold_body_velocity(World3d& w, std::uint32_t i, Vec3 velocity_m_s, Vec3 ang
 void release_body_velocity(World3d& w, std::uint32_t i);
 /// Sets body i's velocity [m/s] and angular velocity [rad/s, world frame] for the coming step (the
 /// state at t is complete: the change acts from t on); the kinetic energy it adds is booked as
-/// external work.
+/// external work (before the first step it is the initial state, in the ledger's initial energy).
 void set_body_velocity(World3d& w, std::uint32_t i, Vec3 velocity_m_s, Vec3 angular_velocity_rad_s);
 
 }  // namespace blockdem
