@@ -16,7 +16,7 @@ I_ZZ = MASS * (0.4 ** 2 + 0.4 ** 2) / 12.0   # [kg m^2] about the vertical axis
 DT = 2e-5      # [s]
 
 
-def box_on_table(mu=MU, hovering=False):
+def box_on_table(mu=MU, hovering=False, slab="fixed"):
     """A flat 16 kg box resting on a fixed slab (low, so that a push at its centroid slides it
     rather than tips it), and with hovering a second box in the air, far from everything."""
     text = f"""dimension = 3
@@ -31,7 +31,7 @@ mu = {mu}
 e = 0.5
 [[bodies]]
 name = "slab"
-kind = "fixed"
+kind = "{slab}"
 shape = "box"
 size = [4.0, 4.0, 0.2]
 position = [0.0, 0.0, -0.1]
@@ -145,6 +145,9 @@ def test_loads_are_refused_for_a_fixed_body_a_wrong_vector_and_an_unknown_name()
         sim.set_external_force("statue", [1.0, 0.0, 0.0])
     with pytest.raises(IndexError):
         sim.release_velocity(7)
+    driven = box_on_table(slab="driven")
+    with pytest.raises(ValueError, match="'slab' is not dynamic"):
+        driven.set_velocity("slab", [0.1, 0.0, 0.0])
 
 
 def test_set_velocity_books_the_kinetic_energy_it_adds_as_external_work():
