@@ -2,11 +2,14 @@
 // with the 2-D Simulation's API where the concept is the same (python/bind_simulation.cpp):
 //   sim = blockdem.Simulation3d(scenario, threads=2, out_dir=None)
 //   sim.step(n); sim.t; sim.positions (N x 3); sim.quaternions (N x 4); sim.summary(); sim.finish()
+//   sim.set_external_force(body, force, torque); sim.hold_velocity(body, velocity, angular_velocity) ...
 // A 3-D body is a struct of its own (dynamics/rigid_body_3d.hpp), not an array per quantity, so
 // the state comes as numpy copies taken when read, not as views. The GIL is released while
 // stepping, and Ctrl-C (KeyboardInterrupt) is seen between chunks of steps, as in 2-D.
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -24,6 +27,7 @@
 #include "python/scenario_source.hpp"
 #include "python/stepping.hpp"
 #include "run/scenario_run_3d.hpp"
+#include "world/external_loads_3d.hpp"
 
 namespace py = pybind11;
 namespace fs = std::filesystem;
@@ -70,6 +74,56 @@ public:
     py::object finish() { return json_to_python(run().finish()); }
 
     const World3d& world() const { return run_->world(); }
+    // What changes the world waits for no thread: it refuses while another thread steps.
+    World3d& world_to_change() {
+        run();
+        return run_->world();
+    }
+
+    // A body by name or id; only a dynamic body (not taken out of the model) takes loads and velocities.
+    std::uint32_t dynamic_body(const py::handle& body) const {
+        const World3d& w = world();
+        std::uint32_t i = 0;
+        if (py::isinstance<py::str>(body)) {
+            const auto name = body.cast<std::string>();
+            const auto found = std::find_if(w.bodies.begin(), w.bodies.end(), [&](const RigidBody3d& b) { return b.name == name; });
+            if (found == w.bodies.end()) throw py::key_error(fmt::format("no body is named '{}'", name));
+            i = static_cast<std::uint32_t>(found - w.bodies.begin());
+        } else {
+            const auto id = body.cast<std::int64_t>();
+            if (id < 0 || static_cast<std::size_t>(id) >= w.bodies.size())
+                throw py::index_error(fmt::format("body id {} is not in 0 to {}", id, w.bodies.size() - 1));
+            i = static_cast<std::uint32_t>(id);
+        }
+        if (w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i))
+            throw py::value_error(fmt::format("body '{}' is not dynamic (or has left the model): it takes no loads", w.bodies[i].name));
+        return i;
+    }
+
+    void set_external_force(const py::handle& body, const std::vector<double>& force_n, const std::vector<double>& torque_n_m) {
+        const std::uint32_t i = dynamic_body(body);
+        set_external_load(world_to_change(), i, finite_vector(force_n, "force"), finite_vector(torque_n_m, "torque"));
+    }
+
+    void set_velocity(const py::handle& body, const std::vector<double>& velocity_m_s, const std::vector<double>& angular_velocity_rad_s) {
+        const std::uint32_t i = dynamic_body(body);
+        set_body_velocity(world_to_change(), i, finite_vector(velocity_m_s, "velocity"),
+                          finite_vector(angular_velocity_rad_s, "angular_velocity"));
+    }
+
+    void hold_velocity(const py::handle& body, const std::vector<double>& velocity_m_s, const std::vector<double>& angular_velocity_rad_s) {
+        const std::uint32_t i = dynamic_body(body);
+        hold_body_velocity(world_to_change(), i, finite_vector(velocity_m_s, "velocity"),
+                           finite_vector(angular_velocity_rad_s, "angular_velocity"));
+    }
+
+    // (A vector of any other length is refused by name, not cut or padded.)
+    static Vec3 finite_vector(const std::vector<double>& v, const char* what) {
+        if (v.size() != 3) throw py::value_error(fmt::format("{} must have 3 components (x, y, z), got {}", what, v.size()));
+        if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+            throw py::value_error(fmt::format("{} must be finite numbers", what));
+        return {v[0], v[1], v[2]};
+    }
     ScenarioRun3d& run() {
         if (stepping_) throw std::logic_error("the simulation is being stepped in another thread: wait for step() to return");
         return *run_;
@@ -151,6 +205,38 @@ void bind_simulation_3d(py::module_& m) {
              "(from a to b), fx, fy, fz [N] (on b), normal_force, shear_force [N], overlap [m], sliding.")
         .def("history", [](Simulation3d& s) { return history_dict_3d(s.run()); },
              "The output rows so far as numpy arrays (rows x recorded bodies), without CSV.")
+        .def("set_external_force", &Simulation3d::set_external_force, py::arg("body"), py::arg("force"),
+             py::arg("torque") = std::vector<double>{0.0, 0.0, 0.0},
+             "Applies a force [N] (fx, fy, fz) at a dynamic body's centroid and a torque [N m] (tx, ty, tz), world frame, "
+             "from the next step on, until changed; its work is booked in the energy balance (external_work_J). body: name or id.")
+        .def("clear_external_forces", [](Simulation3d& s) { clear_external_loads(s.world_to_change()); },
+             "Removes every external force and held velocity.")
+        .def("set_velocity", &Simulation3d::set_velocity, py::arg("body"), py::arg("velocity"),
+             py::arg("angular_velocity") = std::vector<double>{0.0, 0.0, 0.0},
+             "Sets a dynamic body's velocity [m/s] and angular velocity [rad/s] (world frame) for the next step; the "
+             "kinetic energy it adds is booked as external work.")
+        .def("hold_velocity", &Simulation3d::hold_velocity, py::arg("body"), py::arg("velocity"),
+             py::arg("angular_velocity") = std::vector<double>{0.0, 0.0, 0.0},
+             "Drives a dynamic body at the velocity [m/s] and angular velocity [rad/s] (world frame) from the next step "
+             "on, until release_velocity(body): each step the force and torque that hold it are its external load "
+             "(replacing set_external_force's), their work booked as external_work_J. body: name or id.")
+        .def(
+            "release_velocity",
+            [](Simulation3d& s, const py::handle& body) { release_body_velocity(s.world_to_change(), s.dynamic_body(body)); },
+            py::arg("body"), "Ends hold_velocity: the body moves freely from the next step on, with no external load.")
+        .def(
+            "external_force",
+            [](Simulation3d& s, const py::handle& body) {
+                const std::uint32_t i = s.dynamic_body(body);
+                const ExternalLoads3d& loads = s.world_to_change().external_loads;
+                if (!loads.any()) return py::make_tuple(0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+                const Vec3 f = loads.force_n[i];
+                const Vec3 t = loads.torque_n_m[i];
+                return py::make_tuple(f.x, f.y, f.z, t.x, t.y, t.z);
+            },
+            py::arg("body"),
+            "The external load (fx, fy, fz [N], tx, ty, tz [N m], world frame) of the last step: a held body's is the "
+            "force that held it.")
         .def("energy", [](Simulation3d& s) { return energy_dict(s.run().world().ledger); },
              "The energy balance at t [J] and its relative error.")
         .def("summary", [](Simulation3d& s) { return json_to_python(s.run().summary("running")); },

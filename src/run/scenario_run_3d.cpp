@@ -437,6 +437,7 @@ nlohmann::json ScenarioRun3d::summary(const std::string& status) const {
     return summary_of(parts_->loaded, parts_->state_info.scenario, parts_->loaded.world, *parts_->monitor, status, "");
 }
 const World3d& ScenarioRun3d::world() const { return parts_->loaded.world; }
+World3d& ScenarioRun3d::world() { return parts_->loaded.world; }
 const LoadedScenario3d& ScenarioRun3d::scenario() const { return parts_->loaded; }
 const ResponseMonitor3d& ScenarioRun3d::monitor() const { return *parts_->monitor; }
 const RunTrace3d* ScenarioRun3d::trace() const { return parts_->trace ? &*parts_->trace : nullptr; }

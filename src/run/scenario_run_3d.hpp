@@ -52,6 +52,8 @@ public:
     /// The summary as it would be written now, with this status.
     nlohmann::json summary(const std::string& status) const;
     const World3d& world() const;
+    /// The world to change between steps (a caller's loads and velocities, world/external_loads_3d.hpp).
+    World3d& world();
     const LoadedScenario3d& scenario() const;
     const ResponseMonitor3d& monitor() const;
     /// The rows kept in memory, or null when the run keeps none.

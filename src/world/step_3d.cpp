@@ -518,6 +518,9 @@ void step_begin(World3d& w) {
     find_contacts(w);
     // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
     apply_contact_law(w, 0.5 * (d_after - d_before));
+    // A caller's loads (world/external_loads_3d.hpp): one branch a step when there are none.
+    if (w.external_loads.any())
+        parallel_for(n, [&](std::ptrdiff_t i) { add_external_load(w, static_cast<std::size_t>(i)); });
 
     const bool starting = w.steps == 0;
     const BodyTotals totals =
@@ -543,6 +546,7 @@ void step_end(World3d& w) {
         if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
             update_position_3d(w.bodies[i], w.scratch.rotations[i], dt);
     });
+    if (w.external_loads.any()) w.ledger.external_work_j += external_load_work(w);
     w.time_s += dt;
     ++w.steps;
 }

@@ -16,6 +16,7 @@
 #include "laws/contact_parameters.hpp"
 #include "motion/table_motion.hpp"
 #include "world/energy_ledger.hpp"
+#include "world/external_loads_3d.hpp"
 #include "world/model_domain_3d.hpp"
 
 namespace blockdem {
@@ -103,6 +104,7 @@ struct World3d {
     StabilityWatch3d stability;
     ModelDomain3d domain;                   ///< the model's extent and the bodies that left it
     std::vector<ContactPoint3d> contacts;   ///< this step's points, sorted by key
+    ExternalLoads3d external_loads;         ///< loads a caller applies (the Python module); none by default
     WorldScratch3d scratch;
 };
 
