@@ -57,15 +57,17 @@ void corner_shares_3d(const Vec3* corners_m, std::size_t count, double* shares, 
         std::size_t last_measured = count - 1;
         while (last_measured > 0 && known(last_measured)) --last_measured;
         const bool all_known = known(last_measured);
+        // A known corner needs no side; a measured one the two at it (the same differences of the
+        // same corners as a walk round the polygon would carry, so the same bits).
         double others = 0.0;
-        Vec3 arriving = side(count - 1);
         for (std::size_t i = 0; i < count; ++i) {
-            const Vec3 leaving = side(i);
-            if (i != last_measured || all_known) {
-                shares[i] = known(i) ? 1.0 : turn_rad(arriving, leaving) / quarter_turn_rad;
+            if (known(i)) {
+                shares[i] = 1.0;
+                others += 1.0;
+            } else if (i != last_measured) {
+                shares[i] = turn_rad(side(i == 0 ? count - 1 : i - 1), side(i)) / quarter_turn_rad;
                 others += shares[i];
             }
-            arriving = leaving;
         }
         if (!all_known) shares[last_measured] = std::max(0.0, 4.0 - others);
         return;
