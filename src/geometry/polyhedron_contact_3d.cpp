@@ -278,19 +278,26 @@ std::uint32_t most_opposed_box_face(const PosedPolyhedron& ref, std::uint32_t re
 // -w, its point the world point halfway up, lifted only when it is below the plane; the shares
 // are the turns of the polygon in that frame, which a rotation keeps to round-off (the polygon
 // lies in the incident face, tilted or not, and its turns are measured in 3-D there as in the world).
-// The shares' arrays are the clip's size at most, on the stack: no scratch vector to size a pair.
+// The shares are read from the clip's own corners (corner_shares_without_groups), not from a copy;
+// only a polygon with a short side, which groups its corners, is copied for corner_shares_3d.
 void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_box,
                      std::vector<ContactGeometry3d>& out) {
     const std::size_t count = clip.count;
     const BoxClipCorner3d* polygon = clip.corners;
-    Vec3 corners_m[BoxFaceClip3d::most_corners];
-    std::uint8_t quarter_turns[BoxFaceClip3d::most_corners];
+    struct ClipCorners {
+        const BoxClipCorner3d* polygon;
+        bool incident_is_box;
+        Vec3 at(std::size_t i) const { return {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m}; }
+        bool known(std::size_t i) const {
+            return incident_is_box && feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+        }
+    };
     double shares[BoxFaceClip3d::most_corners];
-    for (std::size_t i = 0; i < count; ++i) {
-        corners_m[i] = {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m};
-        quarter_turns[i] = incident_is_box && feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+    if (!corner_shares_without_groups(ClipCorners{polygon, incident_is_box}, count, shares)) {
+        Vec3 corners_m[BoxFaceClip3d::most_corners];
+        for (std::size_t i = 0; i < count; ++i) corners_m[i] = {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m};
+        corner_shares_3d(corners_m, count, shares);
     }
-    corner_shares_3d(corners_m, count, shares, quarter_turns);
     const Vec3 normal = ref_is_a ? clip.n : -clip.n;
     for (std::size_t i = 0; i < count; ++i) {
         const BoxClipCorner3d& c = polygon[i];
