@@ -13,11 +13,13 @@ constexpr std::size_t most_corners = BoxFaceClip3d::most_corners;
 
 // One side of the rectangle: a bound on u (axis 0) or v (axis 1). A corner's height over the side
 // plane is sign (coordinate - bound); the general clip's is that times the side's length.
+// No default values: each side is written once before it is read (RectangleInFrame's four were
+// zeroed at every clip, for nothing).
 struct RectangleSide {
-    int axis = 0;
-    double sign = 1.0;
-    double bound_m = 0.0;  ///< [m] the side's start corner's coordinate along axis
-    double slack_m = 0.0;  ///< [m] 1e-9 of the side's length: the general clip's 1e-9 |side|^2 over |side|
+    int axis;
+    double sign;
+    double bound_m;  ///< [m] the side's start corner's coordinate along axis
+    double slack_m;  ///< [m] 1e-9 of the side's length: the general clip's 1e-9 |side|^2 over |side|
 };
 
 double coordinate(const FaceCorner& c, int axis) { return axis == 0 ? c.u_m : c.v_m; }
