@@ -41,6 +41,9 @@ struct RectangleInFrame {
 
 // The frame, the rectangle in it and the polygon's first form, the incident face's corners in
 // clip.buffers[0]: what both clips start from. Returns the incident face's corner count.
+// fixed_count: the incident face's corner count when known at compile time (a box face's 4, for
+// a loop the compiler unrolls), 0 when read from the face.
+template <std::size_t fixed_count>
 std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                                std::uint32_t inc_face, BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
     // The frame: origin at the face's corner 0, e_u one of the box's directions in the face's
@@ -67,7 +70,7 @@ std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_fac
     clip.origin_m = origin_m;
     FaceCorner* polygon = clip.buffers[0].data();
     const auto& inc_corners = inc.shape->faces[inc_face];
-    const std::size_t count = inc_corners.size();
+    const std::size_t count = fixed_count != 0 ? fixed_count : inc_corners.size();
     for (std::size_t k = 0; k < count; ++k) {
         const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
         polygon[k] = {dot(r, e_u),
@@ -231,22 +234,26 @@ bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& in
 bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                             std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
-    if (count == 4 && clip_in_one_pass<4>(ref, ref_face, rectangle, clip)) return true;
+    if (inc.shape->faces[inc_face].size() == 4) {  // a box's face: the loading unrolled, the one pass tried
+        load_incident_face<4>(ref, ref_face, inc, inc_face, clip, rectangle);
+        if (clip_in_one_pass<4>(ref, ref_face, rectangle, clip)) return true;
+        return clip_by_passes(ref, ref_face, inc_face, rectangle, 4, clip);
+    }
+    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
 }
 
 bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                              std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
+    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
 }
 
 bool clip_box_face_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                                std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
+    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
     return count == 4 && clip_in_one_pass<4>(ref, ref_face, rectangle, clip);
 }
 
