@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <type_traits>  // std::integral_constant, the count a caller may fix
 
 #include "geometry/vec3.hpp"
 
@@ -70,9 +71,10 @@ inline double turn_rad(Vec3 a, Vec3 b) {
 /// caller then takes corner_shares_3d, which groups). Why a template: the narrow phase's box clip
 /// keeps its polygon in its own records, and copying them into an array of Vec3 and flags for
 /// the shares cost a tenth of the shares (docs/performance.md, "Branch face4"). The same
-/// arithmetic as corner_shares_3d, so the same bits.
-template <class Corners>
-bool corner_shares_without_groups(const Corners& corners, std::size_t count, double* shares) {
+/// arithmetic as corner_shares_3d, so the same bits. count is a std::size_t, or a
+/// std::integral_constant where the caller knows it, so that the loops unroll.
+template <class Corners, class Count>
+bool corner_shares_without_groups(const Corners& corners, Count count, double* shares) {
     if (count == 0) return true;
     const auto side = [&](std::size_t i) { return corners.at(i + 1 == count ? 0 : i + 1) - corners.at(i); };
     // A side shorter than 1e-9 of the longest has a direction made of round-off: its ends count

@@ -293,7 +293,13 @@ void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_
         }
     };
     double shares[BoxFaceClip3d::most_corners];
-    if (!corner_shares_without_groups(ClipCorners{polygon, incident_is_box}, count, shares)) {
+    const ClipCorners corners{polygon, incident_is_box};
+    // A box face cut by one side has 4 corners (cut across) or 5 (a corner cut off): loops of a
+    // length known when compiled, unrolled.
+    const bool ungrouped = count == 4   ? corner_shares_without_groups(corners, std::integral_constant<std::size_t, 4>{}, shares)
+                           : count == 5 ? corner_shares_without_groups(corners, std::integral_constant<std::size_t, 5>{}, shares)
+                                        : corner_shares_without_groups(corners, count, shares);
+    if (!ungrouped) {
         Vec3 corners_m[BoxFaceClip3d::most_corners];
         for (std::size_t i = 0; i < count; ++i) corners_m[i] = {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m};
         corner_shares_3d(corners_m, count, shares);
