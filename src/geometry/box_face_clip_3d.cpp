@@ -24,11 +24,12 @@ struct RectangleSide {
 
 double coordinate(const FaceCorner& c, int axis) { return axis == 0 ? c.u_m : c.v_m; }
 
-// The side from corner p0 to p1 (u, v). Its outward normal in the plane is (p1 - p0) x n, which in
-// the right-handed frame (e_u, e_v, n) is (dv, -du): along u when the side runs along v.
-RectangleSide rectangle_side(double u0, double v0, double u1, double v1) {
+// The side from corner p0 to p1 (u, v), running along v (a bound on u) or along u. Its outward
+// normal in the plane is (p1 - p0) x n, which in the right-handed frame (e_u, e_v, n) is (dv, -du):
+// along u when the side runs along v.
+RectangleSide rectangle_side(bool along_v, double u0, double v0, double u1, double v1) {
     const double du = u1 - u0, dv = v1 - v0;
-    if (std::abs(dv) >= std::abs(du)) return {0, dv > 0.0 ? 1.0 : -1.0, u0, 1e-9 * std::abs(dv)};
+    if (along_v) return {0, dv > 0.0 ? 1.0 : -1.0, u0, 1e-9 * std::abs(dv)};
     return {1, du < 0.0 ? 1.0 : -1.0, v0, 1e-9 * std::abs(du)};
 }
 
@@ -62,10 +63,15 @@ std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_fac
         rectangle.corner_u_m[k] = dot(r, e_u);
         rectangle.corner_v_m[k] = dot(r, e_v);
     }
+    // The sides run along v and u in turn (box edges, along e_v or e_u to round-off and to
+    // box_frame's 1e-12 of the box's size): the first side's longer coordinate says which.
+    const double* corner_u = rectangle.corner_u_m;
+    const double* corner_v = rectangle.corner_v_m;
+    const bool first_along_v = std::abs(corner_v[1] - corner_v[0]) >= std::abs(corner_u[1] - corner_u[0]);
     for (std::size_t k = 0; k < 4; ++k) {
         const std::size_t k_next = (k + 1) % 4;
-        rectangle.sides[k] = rectangle_side(rectangle.corner_u_m[k], rectangle.corner_v_m[k],
-                                            rectangle.corner_u_m[k_next], rectangle.corner_v_m[k_next]);
+        rectangle.sides[k] = rectangle_side(first_along_v == (k % 2 == 0), corner_u[k], corner_v[k], corner_u[k_next],
+                                            corner_v[k_next]);
     }
     clip.origin_m = origin_m;
     FaceCorner* polygon = clip.buffers[0].data();
