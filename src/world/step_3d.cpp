@@ -330,6 +330,7 @@ struct PairLaw {
     double ks_N_m = 0.0;              ///< [N/m]
     double cn_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_n sqrt(M kn / S)
     double cs_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_s sqrt(M ks / S)
+    double ks_dt_N = 0.0;             ///< [N] ks dt: the trial's increment is ks w dt v_t
     double mu = 0.0;
     double dt_s = 0.0;                ///< [s]
     ContactTermination termination = ContactTermination::no_tension;
@@ -342,36 +343,76 @@ PairLaw pair_law_parameters(const World3d& w, const ContactPairSums3d& pair) {
             p.ks_N_m,
             2.0 * p.h_n * std::sqrt(mass_per_share_kg * p.kn_N_m),
             2.0 * p.h_s * std::sqrt(mass_per_share_kg * p.ks_N_m),
+            p.ks_N_m * w.dt_s,
             p.mu,
             w.dt_s,
             p.termination};
 }
 
-// The law at one point: its force into its own slot, its energy terms added to t. The normal
-// half of the 2-D law (linear_spring_dashpot.hpp), then the vector slider (coulomb_slider_3d.hpp):
-// the scalar shear of the 2-D law is not worked out for nothing. The energy terms are
-// contact_elastic_energy's with no scalar shear.
-void contact_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& c, LawTotals& t) {
+// A pair's energy terms before their common factors: each point adds its own products, and the
+// pair multiplies them by 0.5 kn, 0.5 / ks and -0.5 dt once (a point's term
+// 0.5 (kn w) o^2 is 0.5 kn (w o^2), its spring's 0.5 |F_s|^2 / (ks w) is (0.5 / ks) (|F_s|^2 / w),
+// its dashpots' trapezoids -0.5 (D_before + D_now) . v dt: the same terms to round-off, fewer
+// operations a point).
+struct PairEnergySums {
+    double share_overlap_squared_m2 = 0.0;     ///< [m^2] sum of w o^2
+    double spring_squared_per_share_n2 = 0.0;  ///< [N^2] sum of |F_s|^2 / w over the points with w > 0
+    double normal_dashpot_power_w = 0.0;       ///< [W] sum of (D_n before + D_n now) v_n
+    double shear_dashpot_power_w = 0.0;        ///< [W] sum of (D_s before + D_s now) . v_t
+    double friction_j = 0.0;                   ///< [J] the sliding points' own (coulomb_slider_3d)
+};
+
+// The law at one point of a pair: its force and history into its own slot, its energy terms
+// added to e, its force returned (r: the point from a's centroid). The normal half of the 2-D law
+// (linear_spring_dashpot.hpp) and the vector slider (coulomb_slider_3d.hpp), term by term. The
+// common case, a point sticking well inside its cap (the spring carried, the trial and the total
+// all with squares below surely_within_below), is one straight line of arithmetic; any other
+// point takes coulomb_slider_3d itself. On the straight line the dashpot is -c_s w v_t and the
+// total trial plus it (the slider forms the total first and the dashpot as total minus trial:
+// the same to round-off).
+[[gnu::always_inline]] inline Vec3 point_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& c, Vec3 r,
+                                             PairEnergySums& e) {
     const double share = c.stiffness_share;
-    const double kn_N_m = law.kn_N_m * share;
-    const double ks_N_m = law.ks_N_m * share;
-    const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, c.point_m - m.centroid_a_m);
-    const double normal_speed = dot(relative, c.normal);
-    const Vec3 tangential = relative - normal_speed * c.normal;
+    const double overlap_m = c.overlap_m;
+    const Vec3 normal = c.normal;
+    const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, r);
+    const double normal_speed = dot(relative, normal);
+    const Vec3 tangential = relative - normal_speed * normal;
+    // The normal half's own work term is left unused (the compiler drops it): e sums its factors.
     ContactForce f;
-    normal_spring_dashpot(kn_N_m, law.cn_per_share_N_s_m * share, law.termination, c.overlap_m, normal_speed,
+    normal_spring_dashpot(law.kn_N_m * share, law.cn_per_share_N_s_m * share, law.termination, overlap_m, normal_speed,
                           c.normal_dashpot_n, law.dt_s, f);
-    const ShearForce3d s = coulomb_slider_3d(ks_N_m, law.cs_per_share_N_s_m * share, law.mu * std::max(0.0, f.normal_n),
-                                             tangential, carry_to_normal_for_slider(c.shear, c.normal), law.dt_s);
-    c.normal_dashpot_n = f.normal_dashpot_n;
-    c.shear = {s.spring_n, s.dashpot_n};
-    c.sliding = s.sliding;
-    c.force_n = f.normal_n * c.normal + s.total_n;
-    t.elastic_j += 0.5 * kn_N_m * c.overlap_m * c.overlap_m +
-                   (ks_N_m > 0.0 ? 0.5 * dot(s.spring_n, s.spring_n) / ks_N_m : 0.0);
-    t.normal_dashpot_j += f.normal_dashpot_work_j;
-    t.shear_dashpot_j += s.shear_dashpot_work_j;
-    t.friction_j += s.friction_work_j;
+    const double normal_n = f.normal_n;
+    const double normal_dashpot_n = f.normal_dashpot_n;
+    e.normal_dashpot_power_w += (c.normal_dashpot_n + normal_dashpot_n) * normal_speed;
+    const ShearHistory3d carried = carry_to_normal_for_slider(c.shear, normal);
+    const double limit_n = law.mu * std::max(0.0, normal_n);
+    const double within_below = surely_within_below(limit_n);
+    const double ks_N_m = law.ks_N_m * share;
+    const Vec3 trial = carried.spring_n - (law.ks_dt_N * share) * tangential;
+    Vec3 dashpot = (-law.cs_per_share_N_s_m * share) * tangential;
+    Vec3 total = trial + dashpot;
+    Vec3 spring = trial;
+    bool sliding = false;
+    if (!(dot(carried.spring_n, carried.spring_n) < within_below && dot(trial, trial) < within_below &&
+          dot(total, total) < within_below)) {
+        const ShearForce3d s = coulomb_slider_3d(ks_N_m, law.cs_per_share_N_s_m * share, limit_n, tangential, carried,
+                                                 law.dt_s);
+        spring = s.spring_n;
+        total = s.total_n;
+        dashpot = s.dashpot_n;
+        sliding = s.sliding;
+        e.friction_j += s.friction_work_j;
+    }
+    e.shear_dashpot_power_w += dot(carried.dashpot_n + dashpot, tangential);
+    e.share_overlap_squared_m2 += share * overlap_m * overlap_m;
+    if (share > 0.0) e.spring_squared_per_share_n2 += dot(spring, spring) / share;
+    const Vec3 force_n = normal_n * normal + total;
+    c.normal_dashpot_n = normal_dashpot_n;
+    c.shear = {spring, dashpot};
+    c.sliding = sliding;
+    c.force_n = force_n;
+    return force_n;
 }
 
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
@@ -382,16 +423,22 @@ LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
     const PairLaw law = pair_law_parameters(w, pair);
-    LawTotals t;
+    PairEnergySums e;
     Vec3 force_n, torque_n_m;
     for (std::uint32_t k = 0; k < pair.points; ++k) {
-        ContactPoint3d& c = points[k];
-        contact_law(m, law, c, t);
-        force_n += c.force_n;
-        torque_n_m += cross(c.point_m - m.centroid_a_m, c.force_n);
+        const Vec3 r = points[k].point_m - m.centroid_a_m;
+        const Vec3 f = point_law(m, law, points[k], r, e);
+        force_n += f;
+        torque_n_m += cross(r, f);
     }
     pair.force_n = force_n;
     pair.torque_about_a_n_m = torque_n_m;
+    LawTotals t;
+    t.elastic_j = 0.5 * law.kn_N_m * e.share_overlap_squared_m2 +
+                  (law.ks_N_m > 0.0 ? (0.5 / law.ks_N_m) * e.spring_squared_per_share_n2 : 0.0);
+    t.normal_dashpot_j = -0.5 * law.dt_s * e.normal_dashpot_power_w;
+    t.shear_dashpot_j = -0.5 * law.dt_s * e.shear_dashpot_power_w;
+    t.friction_j = e.friction_j;
     // The table's work: a driven body's force on the other, times the centred displacement.
     if (w.kinds[a] == BodyKind3d::driven) t.table_work_j += dot(force_n, table_step_m);
     if (w.kinds[b] == BodyKind3d::driven) t.table_work_j -= dot(force_n, table_step_m);
