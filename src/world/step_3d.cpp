@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #ifdef _OPENMP
 #include <omp.h>
 #endif
 
 #include "dynamics/rigid_rotation_3d.hpp"
+#include "laws/double_lanes.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 #include "world/parallel.hpp"
 
@@ -415,22 +417,119 @@ struct PairEnergySums {
     return force_n;
 }
 
+// The sums of pair_law taken two points at a time, one lane a point: added up at the pair's end.
+struct PairLaneSums {
+    Vec3Lanes force_n;                               ///< [N]
+    Vec3Lanes torque_n_m;                            ///< [N m] about a's centroid
+    DoubleLanes share_overlap_squared_m2;            ///< [m^2] as PairEnergySums
+    DoubleLanes spring_squared_per_share_n2;         ///< [N^2]
+    DoubleLanes normal_dashpot_power_w;              ///< [W]
+    DoubleLanes shear_dashpot_power_w;               ///< [W]
+};
+
+// point_law's straight line at two points p and q of a pair at once, one lane each (the same
+// operations in the same order, so each lane's result is its point's own): the carries into the
+// normal's plane (carried_into_plane, carry_to_normal_for_slider, their roots taken in both lanes
+// and kept where their rule takes them), the normal half (normal_spring_dashpot), the cap's test
+// (surely_within_below). Writes both points and adds to l only where both stick inside their
+// caps; returns false, with nothing written, otherwise (point_law then takes each).
+[[gnu::always_inline]] inline bool two_point_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& p,
+                                                 ContactPoint3d& q, PairLaneSums& l) {
+    const DoubleLanes zero = lanes(0.0);
+    const DoubleLanes one = lanes(1.0);
+    const DoubleLanes share = lanes(p.stiffness_share, q.stiffness_share);
+    const DoubleLanes overlap_m = lanes(p.overlap_m, q.overlap_m);
+    const Vec3Lanes normal = lanes(p.normal, q.normal);
+    const Vec3Lanes r = lanes(p.point_m, q.point_m) - lanes(m.centroid_a_m);
+    const Vec3Lanes relative = lanes(m.base_velocity_m_s) + cross(lanes(m.turn_rate_rad_s), r);
+    const DoubleLanes normal_speed = dot(relative, normal);
+    const Vec3Lanes tangential = relative - normal_speed * normal;
+    // normal_spring_dashpot
+    const DoubleLanes spring_n = (lanes(law.kn_N_m) * share) * overlap_m;
+    const DoubleLanes spring_and_dashpot_n = spring_n - (lanes(law.cn_per_share_N_s_m) * share) * normal_speed;
+    const DoubleLanes normal_n = law.termination == ContactTermination::zero_overlap
+                                     ? spring_and_dashpot_n
+                                     : lane_max(zero, spring_and_dashpot_n);
+    const DoubleLanes normal_dashpot_n = normal_n - spring_n;
+    // carry_to_normal_for_slider: the spring laid into the plane, the dashpot scaled alike
+    const Vec3Lanes last_spring = lanes(p.shear.spring_n, q.shear.spring_n);
+    const DoubleLanes spring_along = dot(last_spring, normal);
+    const Vec3Lanes spring_in_plane = last_spring - spring_along * normal;
+    const DoubleLanes spring_squared = dot(last_spring, last_spring);
+    const DoubleLanes spring_in_plane_squared = spring_squared - spring_along * spring_along;
+    const Vec3Lanes carried_spring =
+        select(spring_in_plane_squared == spring_squared, one,
+               select(spring_in_plane_squared > zero, lane_sqrt(spring_squared / spring_in_plane_squared), zero)) *
+        spring_in_plane;
+    const Vec3Lanes last_dashpot = lanes(p.shear.dashpot_n, q.shear.dashpot_n);
+    const DoubleLanes dashpot_along = dot(last_dashpot, normal);
+    const DoubleLanes dashpot_squared = dot(last_dashpot, last_dashpot);
+    const DoubleLanes dashpot_in_plane_squared = dashpot_squared - dashpot_along * dashpot_along;
+    const Vec3Lanes carried_dashpot =
+        select(dashpot_in_plane_squared == dashpot_squared, one,
+               select(dashpot_in_plane_squared > zero, lane_sqrt(dashpot_squared / dashpot_in_plane_squared), zero)) *
+        last_dashpot;
+    // the slider, sticking
+    const DoubleLanes limit_n = lanes(law.mu) * lane_max(zero, normal_n);
+    const DoubleLanes limit_squared = limit_n * limit_n;
+    const DoubleLanes within_below = select(limit_squared >= lanes(std::numeric_limits<double>::min()),
+                                            limit_squared * lanes(1.0 - 1e-15), lanes(-1.0));
+    const Vec3Lanes trial = carried_spring - (lanes(law.ks_dt_N) * share) * tangential;
+    const Vec3Lanes dashpot = (lanes(-law.cs_per_share_N_s_m) * share) * tangential;
+    const Vec3Lanes total = trial + dashpot;
+    const DoubleLanes trial_squared = dot(trial, trial);
+    if (!both((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
+              (dot(total, total) < within_below)))
+        return false;
+    l.normal_dashpot_power_w += (lanes(p.normal_dashpot_n, q.normal_dashpot_n) + normal_dashpot_n) * normal_speed;
+    l.shear_dashpot_power_w += dot(carried_dashpot + dashpot, tangential);
+    l.share_overlap_squared_m2 += share * overlap_m * overlap_m;
+    l.spring_squared_per_share_n2 += select(share > zero, trial_squared / share, zero);
+    const Vec3Lanes force_n = normal_n * normal + total;
+    l.force_n += force_n;
+    l.torque_n_m += cross(r, force_n);
+    ContactPoint3d* const point[2] = {&p, &q};
+    for (int i = 0; i < 2; ++i) {
+        ContactPoint3d& c = *point[i];
+        c.normal_dashpot_n = normal_dashpot_n[i];
+        c.shear = {lane(trial, i), lane(dashpot, i)};
+        c.sliding = false;
+        c.force_n = lane(force_n, i);
+    }
+    return true;
+}
+
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
-// moment about a's centroid), the pair's energy terms returned.
+// moment about a's centroid), the pair's energy terms returned. Two points at a time where both
+// stick inside their caps (two_point_law), one at a time otherwise.
 LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
     const PairLaw law = pair_law_parameters(w, pair);
+    PairLaneSums l{};
     PairEnergySums e;
     Vec3 force_n, torque_n_m;
-    for (std::uint32_t k = 0; k < pair.points; ++k) {
-        const Vec3 r = points[k].point_m - m.centroid_a_m;
-        const Vec3 f = point_law(m, law, points[k], r, e);
+    const auto one_point = [&](ContactPoint3d& c) {
+        const Vec3 r = c.point_m - m.centroid_a_m;
+        const Vec3 f = point_law(m, law, c, r, e);
         force_n += f;
         torque_n_m += cross(r, f);
+    };
+    std::uint32_t k = 0;
+    for (; k + 1 < pair.points; k += 2) {
+        if (two_point_law(m, law, points[k], points[k + 1], l)) continue;
+        one_point(points[k]);
+        one_point(points[k + 1]);
     }
+    if (k < pair.points) one_point(points[k]);
+    force_n += lane_sum(l.force_n);
+    torque_n_m += lane_sum(l.torque_n_m);
+    e.share_overlap_squared_m2 += lane_sum(l.share_overlap_squared_m2);
+    e.spring_squared_per_share_n2 += lane_sum(l.spring_squared_per_share_n2);
+    e.normal_dashpot_power_w += lane_sum(l.normal_dashpot_power_w);
+    e.shear_dashpot_power_w += lane_sum(l.shear_dashpot_power_w);
     pair.force_n = force_n;
     pair.torque_about_a_n_m = torque_n_m;
     LawTotals t;
