@@ -427,27 +427,44 @@ struct PairLaneSums {
     DoubleLanes shear_dashpot_power_w;               ///< [W]
 };
 
+// A pair's motion and law in both lanes, made once a pair (a lane made from a double is a copy
+// and a shuffle: made a point, they were 19 instructions an iteration).
+struct PairLanes {
+    Vec3Lanes base_velocity_m_s;        ///< [m/s] PairMotion's
+    Vec3Lanes turn_rate_rad_s;          ///< [rad/s]
+    Vec3Lanes centroid_a_m;             ///< [m]
+    DoubleLanes kn_N_m;                 ///< [N/m] PairLaw's
+    DoubleLanes cn_per_share_N_s_m;     ///< [N s/m]
+    DoubleLanes ks_dt_N;                ///< [N]
+    DoubleLanes minus_cs_per_share_N_s_m;  ///< [N s/m]
+    DoubleLanes mu;
+};
+
+PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
+    return {lanes(m.base_velocity_m_s), lanes(m.turn_rate_rad_s), lanes(m.centroid_a_m),   lanes(law.kn_N_m),
+            lanes(law.cn_per_share_N_s_m), lanes(law.ks_dt_N),  lanes(-law.cs_per_share_N_s_m), lanes(law.mu)};
+}
+
 // point_law's straight line at two points p and q of a pair at once, one lane each (the same
 // operations in the same order, so each lane's result is its point's own): the carries into the
 // normal's plane (carried_into_plane, carry_to_normal_for_slider, their roots taken in both lanes
 // and kept where their rule takes them), the normal half (normal_spring_dashpot), the cap's test
 // (surely_within_below). Writes both points and adds to l only where both stick inside their
 // caps; returns false, with nothing written, otherwise (point_law then takes each).
-[[gnu::always_inline]] inline bool two_point_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& p,
-                                                 ContactPoint3d& q, PairLaneSums& l) {
+[[gnu::always_inline]] inline bool two_point_law(const PairLanes& m, ContactTermination termination,
+                                                 ContactPoint3d& p, ContactPoint3d& q, PairLaneSums& l) {
     const DoubleLanes zero = lanes(0.0);
-    const DoubleLanes one = lanes(1.0);
     const DoubleLanes share = lanes(p.stiffness_share, q.stiffness_share);
     const DoubleLanes overlap_m = lanes(p.overlap_m, q.overlap_m);
     const Vec3Lanes normal = lanes(p.normal, q.normal);
-    const Vec3Lanes r = lanes(p.point_m, q.point_m) - lanes(m.centroid_a_m);
-    const Vec3Lanes relative = lanes(m.base_velocity_m_s) + cross(lanes(m.turn_rate_rad_s), r);
+    const Vec3Lanes r = lanes(p.point_m, q.point_m) - m.centroid_a_m;
+    const Vec3Lanes relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, r);
     const DoubleLanes normal_speed = dot(relative, normal);
     const Vec3Lanes tangential = relative - normal_speed * normal;
     // normal_spring_dashpot
-    const DoubleLanes spring_n = (lanes(law.kn_N_m) * share) * overlap_m;
-    const DoubleLanes spring_and_dashpot_n = spring_n - (lanes(law.cn_per_share_N_s_m) * share) * normal_speed;
-    const DoubleLanes normal_n = law.termination == ContactTermination::zero_overlap
+    const DoubleLanes spring_n = (m.kn_N_m * share) * overlap_m;
+    const DoubleLanes spring_and_dashpot_n = spring_n - (m.cn_per_share_N_s_m * share) * normal_speed;
+    const DoubleLanes normal_n = termination == ContactTermination::zero_overlap
                                      ? spring_and_dashpot_n
                                      : lane_max(zero, spring_and_dashpot_n);
     const DoubleLanes normal_dashpot_n = normal_n - spring_n;
@@ -457,25 +474,25 @@ struct PairLaneSums {
     const Vec3Lanes spring_in_plane = last_spring - spring_along * normal;
     const DoubleLanes spring_squared = dot(last_spring, last_spring);
     const DoubleLanes spring_in_plane_squared = spring_squared - spring_along * spring_along;
+    // carried_into_plane's ratio, 1 where the square in the plane is the whole square (its rule
+    // skips the root there, and sqrt(1) is 1), 0 where nothing is left in the plane.
     const Vec3Lanes carried_spring =
-        select(spring_in_plane_squared == spring_squared, one,
-               select(spring_in_plane_squared > zero, lane_sqrt(spring_squared / spring_in_plane_squared), zero)) *
+        select(spring_in_plane_squared > zero, lane_sqrt(spring_squared / spring_in_plane_squared), zero) *
         spring_in_plane;
     const Vec3Lanes last_dashpot = lanes(p.shear.dashpot_n, q.shear.dashpot_n);
     const DoubleLanes dashpot_along = dot(last_dashpot, normal);
     const DoubleLanes dashpot_squared = dot(last_dashpot, last_dashpot);
     const DoubleLanes dashpot_in_plane_squared = dashpot_squared - dashpot_along * dashpot_along;
     const Vec3Lanes carried_dashpot =
-        select(dashpot_in_plane_squared == dashpot_squared, one,
-               select(dashpot_in_plane_squared > zero, lane_sqrt(dashpot_squared / dashpot_in_plane_squared), zero)) *
+        select(dashpot_in_plane_squared > zero, lane_sqrt(dashpot_squared / dashpot_in_plane_squared), zero) *
         last_dashpot;
     // the slider, sticking
-    const DoubleLanes limit_n = lanes(law.mu) * lane_max(zero, normal_n);
+    const DoubleLanes limit_n = m.mu * lane_max(zero, normal_n);
     const DoubleLanes limit_squared = limit_n * limit_n;
     const DoubleLanes within_below = select(limit_squared >= lanes(std::numeric_limits<double>::min()),
                                             limit_squared * lanes(1.0 - 1e-15), lanes(-1.0));
-    const Vec3Lanes trial = carried_spring - (lanes(law.ks_dt_N) * share) * tangential;
-    const Vec3Lanes dashpot = (lanes(-law.cs_per_share_N_s_m) * share) * tangential;
+    const Vec3Lanes trial = carried_spring - (m.ks_dt_N * share) * tangential;
+    const Vec3Lanes dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
     const Vec3Lanes total = trial + dashpot;
     const DoubleLanes trial_squared = dot(trial, trial);
     if (!both((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
@@ -488,14 +505,14 @@ struct PairLaneSums {
     const Vec3Lanes force_n = normal_n * normal + total;
     l.force_n += force_n;
     l.torque_n_m += cross(r, force_n);
-    ContactPoint3d* const point[2] = {&p, &q};
-    for (int i = 0; i < 2; ++i) {
-        ContactPoint3d& c = *point[i];
-        c.normal_dashpot_n = normal_dashpot_n[i];
-        c.shear = {lane(trial, i), lane(dashpot, i)};
-        c.sliding = false;
-        c.force_n = lane(force_n, i);
-    }
+    p.normal_dashpot_n = normal_dashpot_n[0];
+    q.normal_dashpot_n = normal_dashpot_n[1];
+    p.shear = {lane(trial, 0), lane(dashpot, 0)};
+    q.shear = {lane(trial, 1), lane(dashpot, 1)};
+    p.sliding = false;
+    q.sliding = false;
+    p.force_n = lane(force_n, 0);
+    q.force_n = lane(force_n, 1);
     return true;
 }
 
@@ -508,6 +525,7 @@ LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
     const PairLaw law = pair_law_parameters(w, pair);
+    const PairLanes both_lanes = pair_lanes(m, law);
     PairLaneSums l{};
     PairEnergySums e;
     Vec3 force_n, torque_n_m;
@@ -519,7 +537,7 @@ LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
     };
     std::uint32_t k = 0;
     for (; k + 1 < pair.points; k += 2) {
-        if (two_point_law(m, law, points[k], points[k + 1], l)) continue;
+        if (two_point_law(both_lanes, law.termination, points[k], points[k + 1], l)) continue;
         one_point(points[k]);
         one_point(points[k + 1]);
     }
