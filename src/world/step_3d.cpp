@@ -325,8 +325,8 @@ PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
 // What the law at a pair's points shares besides the motion: the parameters, and the dashpot
 // coefficients per unit of a point's stiffness share. A point of share w has kn w and ks w, and
 // its dashpot mass is w M / S (find_contacts), so its coefficient 2 h sqrt(w M / S k w) is w
-// times 2 h sqrt(M k / S): one root a pair for each dashpot, not one a point (where S = 0 every
-// w is 0, and so is every coefficient).
+// times 2 h sqrt(k) sqrt(M / S): one root a pair for both dashpots, not two a point (where S = 0
+// every w is 0, and so is every coefficient).
 struct PairLaw {
     double kn_N_m = 0.0;              ///< [N/m] a point's at share 1
     double ks_N_m = 0.0;              ///< [N/m]
@@ -338,17 +338,27 @@ struct PairLaw {
     ContactTermination termination = ContactTermination::no_tension;
 };
 
-PairLaw pair_law_parameters(const World3d& w, const ContactPairSums3d& pair) {
+// What the law's parameters give every pair, taken once a step: 2 h sqrt(k), so that a pair's
+// dashpot coefficient per share 2 h sqrt(M k / S) is it times sqrt(M / S), one root a pair.
+struct LawConstants {
+    PairLaw law;                     ///< its cn and cs per share not yet set
+    double cn_per_root_mass = 0.0;   ///< [N s/m / kg^0.5] 2 h_n sqrt(kn)
+    double cs_per_root_mass = 0.0;   ///< [N s/m / kg^0.5] 2 h_s sqrt(ks)
+};
+
+LawConstants law_constants(const World3d& w) {
     const ContactParameters& p = w.contact;
-    const double mass_per_share_kg = pair.dashpot_mass_per_share_kg;
-    return {p.kn_N_m,
-            p.ks_N_m,
-            2.0 * p.h_n * std::sqrt(mass_per_share_kg * p.kn_N_m),
-            2.0 * p.h_s * std::sqrt(mass_per_share_kg * p.ks_N_m),
-            p.ks_N_m * w.dt_s,
-            p.mu,
-            w.dt_s,
-            p.termination};
+    return {{p.kn_N_m, p.ks_N_m, 0.0, 0.0, p.ks_N_m * w.dt_s, p.mu, w.dt_s, p.termination},
+            2.0 * p.h_n * std::sqrt(p.kn_N_m),
+            2.0 * p.h_s * std::sqrt(p.ks_N_m)};
+}
+
+PairLaw pair_law_parameters(const LawConstants& k, const ContactPairSums3d& pair) {
+    PairLaw law = k.law;
+    const double root_mass = std::sqrt(pair.dashpot_mass_per_share_kg);
+    law.cn_per_share_N_s_m = k.cn_per_root_mass * root_mass;
+    law.cs_per_share_N_s_m = k.cs_per_root_mass * root_mass;
+    return law;
 }
 
 // A pair's energy terms before their common factors: each point adds its own products, and the
@@ -519,12 +529,12 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
 // moment about a's centroid), the pair's energy terms returned. Two points at a time where both
 // stick inside their caps (two_point_law), one at a time otherwise.
-LawTotals pair_law(World3d& w, ContactPairSums3d& pair, Vec3 table_step_m) {
+LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair, Vec3 table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
-    const PairLaw law = pair_law_parameters(w, pair);
+    const PairLaw law = pair_law_parameters(constants, pair);
     const PairLanes both_lanes = pair_lanes(m, law);
     PairLaneSums l{};
     PairEnergySums e;
@@ -608,8 +618,10 @@ void gather_pair_sums(World3d& w, std::uint32_t i) {
 // terms in the same order whatever the thread count.
 void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
-    const LawTotals t = deterministic_sum(static_cast<std::ptrdiff_t>(pairs.size()),
-                                          [&](std::ptrdiff_t i) { return pair_law(w, pairs[i], table_step_m); });
+    const LawConstants constants = law_constants(w);
+    const LawTotals t = deterministic_sum(static_cast<std::ptrdiff_t>(pairs.size()), [&](std::ptrdiff_t i) {
+        return pair_law(w, constants, pairs[i], table_step_m);
+    });
     index_pairs_by_body(w.scratch, w.bodies.size());
     parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
                  [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::uint32_t>(i)); });
