@@ -534,7 +534,8 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
 // moment about a's centroid), the pair's energy terms returned. Two points at a time where both
 // stick inside their caps (two_point_law), one at a time otherwise.
-LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair, Vec3 table_step_m) {
+[[gnu::always_inline]] inline LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
+                                                  Vec3 table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
