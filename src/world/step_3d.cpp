@@ -593,35 +593,30 @@ void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
     s.body_pairs.resize(2 * s.contact_pairs.size());
     for (std::uint32_t p = 0; p < s.contact_pairs.size(); ++p) {
         const BodyPair& ab = s.pairs[s.contact_pairs[p].candidate];
-        s.body_pairs[start[ab.first + 1]++] = 2 * p;
-        s.body_pairs[start[ab.second + 1]++] = 2 * p + 1;
+        s.body_pairs[start[ab.first + 1]++] = p;
+        s.body_pairs[start[ab.second + 1]++] = p;
     }
     start.pop_back();
 }
 
 // Body i takes its pairs' sums in table order, as one serial pass over the table adding each
 // pair onto its two bodies did: the same terms in the same order, so the same bits at any thread
-// count. An entry of body_pairs is 2 p + 1 where the body is pair p's b, 2 p where it is its a.
+// count. About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
 void gather_pair_sums(World3d& w, std::uint32_t i) {
     const WorldScratch3d& s = w.scratch;
     RigidBody3d& body = w.bodies[i];
-    Vec3 force_n = body.force_n;
-    Vec3 torque_n_m = body.torque_n_m;
     for (std::uint32_t e = s.body_pair_start[i]; e < s.body_pair_start[i + 1]; ++e) {
-        const std::uint32_t entry = s.body_pairs[e];
-        const ContactPairSums3d& pair = s.contact_pairs[entry >> 1];
-        if (entry & 1u) {
-            // About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
-            const Vec3 a_from_b_m = w.bodies[s.pairs[pair.candidate].first].position_m - body.position_m;
-            force_n += pair.force_n;
-            torque_n_m += pair.torque_about_a_n_m + cross(a_from_b_m, pair.force_n);
+        const ContactPairSums3d& pair = s.contact_pairs[s.body_pairs[e]];
+        const BodyPair& ab = s.pairs[pair.candidate];
+        if (ab.second == i) {
+            body.force_n += pair.force_n;
+            body.torque_n_m +=
+                pair.torque_about_a_n_m + cross(w.bodies[ab.first].position_m - body.position_m, pair.force_n);
         } else {
-            force_n -= pair.force_n;
-            torque_n_m -= pair.torque_about_a_n_m;
+            body.force_n -= pair.force_n;
+            body.torque_n_m -= pair.torque_about_a_n_m;
         }
     }
-    body.force_n = force_n;
-    body.torque_n_m = torque_n_m;
 }
 
 // Step 5: the law at every pair in contact (in parallel), each pair's sums then gathered by its

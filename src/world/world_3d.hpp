@@ -68,7 +68,7 @@ struct WorldScratch3d {
     std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
     std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
     std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
-    std::vector<std::uint32_t> body_pairs;                    ///< per body, its pairs in contact in table order: 2 p + 1 where it is pair p's b, 2 p where its a
+    std::vector<std::uint32_t> body_pairs;                    ///< per body, its pairs in contact (indices in contact_pairs), in table order
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
     std::vector<PosedPolyhedron> posed;                       ///< per body, as the narrow phase reads it (once a step, not once a pair side)
     SkinPairList3d broad_phase;                               ///< the grid, searched again only when a body left its skin
