@@ -344,13 +344,19 @@ struct LawConstants {
     PairLaw law;                     ///< its cn and cs per share not yet set
     double cn_per_root_mass = 0.0;   ///< [N s/m / kg^0.5] 2 h_n sqrt(kn)
     double cs_per_root_mass = 0.0;   ///< [N s/m / kg^0.5] 2 h_s sqrt(ks)
+    DoubleLanes kn_N_m{};            ///< [N/m] law's, in both lanes (two_point_law)
+    DoubleLanes ks_dt_N{};           ///< [N]
+    DoubleLanes mu{};
 };
 
 LawConstants law_constants(const World3d& w) {
     const ContactParameters& p = w.contact;
     return {{p.kn_N_m, p.ks_N_m, 0.0, 0.0, p.ks_N_m * w.dt_s, p.mu, w.dt_s, p.termination},
             2.0 * p.h_n * std::sqrt(p.kn_N_m),
-            2.0 * p.h_s * std::sqrt(p.ks_N_m)};
+            2.0 * p.h_s * std::sqrt(p.ks_N_m),
+            lanes(p.kn_N_m),
+            lanes(p.ks_N_m * w.dt_s),
+            lanes(p.mu)};
 }
 
 PairLaw pair_law_parameters(const LawConstants& k, const ContactPairSums3d& pair) {
@@ -437,22 +443,19 @@ struct PairLaneSums {
     DoubleLanes shear_dashpot_power_w;               ///< [W]
 };
 
-// A pair's motion and law in both lanes, made once a pair (a lane made from a double is a copy
+// A pair's motion and dashpots in both lanes, made once a pair (a lane made from a double is a copy
 // and a shuffle: made a point, they were 19 instructions an iteration).
 struct PairLanes {
     Vec3Lanes base_velocity_m_s;        ///< [m/s] PairMotion's
     Vec3Lanes turn_rate_rad_s;          ///< [rad/s]
     Vec3Lanes centroid_a_m;             ///< [m]
-    DoubleLanes kn_N_m;                 ///< [N/m] PairLaw's
-    DoubleLanes cn_per_share_N_s_m;     ///< [N s/m]
-    DoubleLanes ks_dt_N;                ///< [N]
+    DoubleLanes cn_per_share_N_s_m;     ///< [N s/m] PairLaw's
     DoubleLanes minus_cs_per_share_N_s_m;  ///< [N s/m]
-    DoubleLanes mu;
 };
 
 PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
-    return {lanes(m.base_velocity_m_s), lanes(m.turn_rate_rad_s), lanes(m.centroid_a_m),   lanes(law.kn_N_m),
-            lanes(law.cn_per_share_N_s_m), lanes(law.ks_dt_N),  lanes(-law.cs_per_share_N_s_m), lanes(law.mu)};
+    return {lanes(m.base_velocity_m_s), lanes(m.turn_rate_rad_s), lanes(m.centroid_a_m),
+            lanes(law.cn_per_share_N_s_m), lanes(-law.cs_per_share_N_s_m)};
 }
 
 // point_law's straight line at two points p and q of a pair at once, one lane each (the same
@@ -461,7 +464,7 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
 // and kept where their rule takes them), the normal half (normal_spring_dashpot), the cap's test
 // (surely_within_below). Writes both points and adds to l only where both stick inside their
 // caps; returns false, with nothing written, otherwise (point_law then takes each).
-[[gnu::always_inline]] inline bool two_point_law(const PairLanes& m, ContactTermination termination,
+[[gnu::always_inline]] inline bool two_point_law(const LawConstants& constants, const PairLanes& m,
                                                  ContactPoint3d& p, ContactPoint3d& q, PairLaneSums& l) {
     const DoubleLanes zero = lanes(0.0);
     const DoubleLanes share = lanes(p.stiffness_share, q.stiffness_share);
@@ -472,9 +475,9 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
     const DoubleLanes normal_speed = dot(relative, normal);
     const Vec3Lanes tangential = relative - normal_speed * normal;
     // normal_spring_dashpot
-    const DoubleLanes spring_n = (m.kn_N_m * share) * overlap_m;
+    const DoubleLanes spring_n = (constants.kn_N_m * share) * overlap_m;
     const DoubleLanes spring_and_dashpot_n = spring_n - (m.cn_per_share_N_s_m * share) * normal_speed;
-    const DoubleLanes normal_n = termination == ContactTermination::zero_overlap
+    const DoubleLanes normal_n = constants.law.termination == ContactTermination::zero_overlap
                                      ? spring_and_dashpot_n
                                      : lane_max(zero, spring_and_dashpot_n);
     const DoubleLanes normal_dashpot_n = normal_n - spring_n;
@@ -497,11 +500,11 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
         select(dashpot_in_plane_squared > zero, lane_sqrt(dashpot_squared / dashpot_in_plane_squared), zero) *
         last_dashpot;
     // the slider, sticking
-    const DoubleLanes limit_n = m.mu * lane_max(zero, normal_n);
+    const DoubleLanes limit_n = constants.mu * lane_max(zero, normal_n);
     const DoubleLanes limit_squared = limit_n * limit_n;
     const DoubleLanes within_below = select(limit_squared >= lanes(std::numeric_limits<double>::min()),
                                             limit_squared * lanes(1.0 - 1e-15), lanes(-1.0));
-    const Vec3Lanes trial = carried_spring - (m.ks_dt_N * share) * tangential;
+    const Vec3Lanes trial = carried_spring - (constants.ks_dt_N * share) * tangential;
     const Vec3Lanes dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
     const Vec3Lanes total = trial + dashpot;
     const DoubleLanes trial_squared = dot(trial, trial);
@@ -553,7 +556,7 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
     };
     std::uint32_t k = 0;
     for (; k + 1 < pair.points; k += 2) {
-        if (two_point_law(both_lanes, law.termination, points[k], points[k + 1], l)) continue;
+        if (two_point_law(constants, both_lanes, points[k], points[k + 1], l)) continue;
         one_point(points[k]);
         one_point(points[k + 1]);
     }
