@@ -15,7 +15,7 @@ namespace blockdem {
 using DoubleLanes = double __attribute__((vector_size(16)));  ///< two doubles, one a point
 using LaneMask = long long __attribute__((vector_size(16)));  ///< all bits set in a lane where true
 
-inline DoubleLanes lanes(double both) { return DoubleLanes{both, both}; }
+inline DoubleLanes lanes(double value) { return DoubleLanes{value, value}; }
 inline DoubleLanes lanes(double first, double second) { return DoubleLanes{first, second}; }
 inline DoubleLanes select(LaneMask where, DoubleLanes yes, DoubleLanes no) { return where ? yes : no; }
 /// std::max(a, b) in each lane: (a < b) ? b : a. On x86-64 one maxpd, (b > a) ? b : a (the
@@ -39,7 +39,7 @@ struct Vec3Lanes {
 inline Vec3Lanes lanes(Vec3 first, Vec3 second) {
     return {DoubleLanes{first.x, second.x}, DoubleLanes{first.y, second.y}, DoubleLanes{first.z, second.z}};
 }
-inline Vec3Lanes lanes(Vec3 both) { return {lanes(both.x), lanes(both.y), lanes(both.z)}; }
+inline Vec3Lanes lanes(Vec3 value) { return {lanes(value.x), lanes(value.y), lanes(value.z)}; }
 inline Vec3 lane(const Vec3Lanes& v, int i) { return {v.x[i], v.y[i], v.z[i]}; }
 inline Vec3 lane_sum(const Vec3Lanes& v) { return {lane_sum(v.x), lane_sum(v.y), lane_sum(v.z)}; }
 
