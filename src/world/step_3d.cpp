@@ -347,6 +347,10 @@ struct LawConstants {
     DoubleLanes kn_N_m{};            ///< [N/m] law's, in both lanes (two_point_law)
     DoubleLanes ks_dt_N{};           ///< [N]
     DoubleLanes mu{};
+    // The energy terms' common factors (pair_law), the same products a pair took, once a step.
+    double half_kn_N_m = 0.0;        ///< [N/m] 0.5 kn
+    double half_per_ks_m_N = 0.0;    ///< [m/N] 0.5 / ks, 0 where ks is 0 (no spring, no energy)
+    double minus_half_dt_s = 0.0;    ///< [s] -0.5 dt
 };
 
 LawConstants law_constants(const World3d& w) {
@@ -356,7 +360,10 @@ LawConstants law_constants(const World3d& w) {
             2.0 * p.h_s * std::sqrt(p.ks_N_m),
             lanes(p.kn_N_m),
             lanes(p.ks_N_m * w.dt_s),
-            lanes(p.mu)};
+            lanes(p.mu),
+            0.5 * p.kn_N_m,
+            p.ks_N_m > 0.0 ? 0.5 / p.ks_N_m : 0.0,
+            -0.5 * w.dt_s};
 }
 
 PairLaw pair_law_parameters(const LawConstants& k, const ContactPairSums3d& pair) {
@@ -570,10 +577,10 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
     pair.force_n = force_n;
     pair.torque_about_a_n_m = torque_n_m;
     LawTotals t;
-    t.elastic_j = 0.5 * law.kn_N_m * e.share_overlap_squared_m2 +
-                  (law.ks_N_m > 0.0 ? (0.5 / law.ks_N_m) * e.spring_squared_per_share_n2 : 0.0);
-    t.normal_dashpot_j = -0.5 * law.dt_s * e.normal_dashpot_power_w;
-    t.shear_dashpot_j = -0.5 * law.dt_s * e.shear_dashpot_power_w;
+    t.elastic_j = constants.half_kn_N_m * e.share_overlap_squared_m2 +
+                  constants.half_per_ks_m_N * e.spring_squared_per_share_n2;
+    t.normal_dashpot_j = constants.minus_half_dt_s * e.normal_dashpot_power_w;
+    t.shear_dashpot_j = constants.minus_half_dt_s * e.shear_dashpot_power_w;
     t.friction_j = e.friction_j;
     // The table's work: a driven body's force on the other, times the centred displacement.
     if (w.kinds[a] == BodyKind3d::driven) t.table_work_j += dot(force_n, table_step_m);
