@@ -612,21 +612,28 @@ void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
 // Body i takes its pairs' sums in table order, as one serial pass over the table adding each
 // pair onto its two bodies did: the same terms in the same order, so the same bits at any thread
 // count. About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
+// The sums are kept in locals and stored once: added in the body's slot, each was stored and read
+// again at every pair (the pair's doubles might have been the body's, to the compiler).
 void gather_pair_sums(World3d& w, std::uint32_t i) {
     const WorldScratch3d& s = w.scratch;
     RigidBody3d& body = w.bodies[i];
-    for (std::uint32_t e = s.body_pair_start[i]; e < s.body_pair_start[i + 1]; ++e) {
+    const Vec3 position_m = body.position_m;
+    Vec3 force_n = body.force_n;
+    Vec3 torque_n_m = body.torque_n_m;
+    const std::uint32_t end = s.body_pair_start[i + 1];
+    for (std::uint32_t e = s.body_pair_start[i]; e < end; ++e) {
         const ContactPairSums3d& pair = s.contact_pairs[s.body_pairs[e]];
         const BodyPair& ab = s.pairs[pair.candidate];
         if (ab.second == i) {
-            body.force_n += pair.force_n;
-            body.torque_n_m +=
-                pair.torque_about_a_n_m + cross(w.bodies[ab.first].position_m - body.position_m, pair.force_n);
+            force_n += pair.force_n;
+            torque_n_m += pair.torque_about_a_n_m + cross(w.bodies[ab.first].position_m - position_m, pair.force_n);
         } else {
-            body.force_n -= pair.force_n;
-            body.torque_n_m -= pair.torque_about_a_n_m;
+            force_n -= pair.force_n;
+            torque_n_m -= pair.torque_about_a_n_m;
         }
     }
+    body.force_n = force_n;
+    body.torque_n_m = torque_n_m;
 }
 
 // Step 5: the law at every pair in contact (in parallel), each pair's sums then gathered by its
