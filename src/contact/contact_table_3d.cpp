@@ -54,28 +54,30 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
                                  [&](const ContactPoint3d& p) { return bodies(p.key) < first_bodies; }) -
             previous.begin());
     };
-    std::size_t j = run_start();
-    // The usual point kept its key, and last step's point at j is its own: one 16-byte
+    // Walked by pointers: an index into previous cost an address computation (a multiply by the
+    // point's size) and a bounds test at each point.
+    const ContactPoint3d* q = previous.data() + run_start();
+    const ContactPoint3d* const last_end = previous.data() + n;
+    // The usual point kept its key, and last step's point at q is its own: one 16-byte
     // comparison says so. Otherwise the walk passes last step's smaller keys (points gone), one
     // three-way comparison a probe, the probe that stops it saying whether it matched.
-    for (std::size_t i = 0; i < count; ++i) {
-        ContactPoint3d& p = run[i];
-        bool found = j < n && same_key(previous[j].key, p.key);
+    for (ContactPoint3d* p = run; p != run + count; ++p) {
+        bool found = q != last_end && same_key(q->key, p->key);
         if (!found) {
             std::strong_ordering order = std::strong_ordering::less;
-            while (j < n && (order = previous[j].key <=> p.key) < 0) ++j;
-            found = j < n && order == 0;
+            while (q != last_end && (order = q->key <=> p->key) < 0) ++q;
+            found = q != last_end && order == 0;
         }
         if (found) {
-            const ContactPoint3d& q = previous[j++];
-            p.normal_dashpot_n = q.normal_dashpot_n;
-            p.shear = q.shear;
-            const double before = q.stiffness_share;
-            if (p.stiffness_share != before)
-                p.shear.spring_n = before > 0.0 ? (p.stiffness_share / before) * p.shear.spring_n : Vec3{};
+            p->normal_dashpot_n = q->normal_dashpot_n;
+            p->shear = q->shear;
+            const double before = q->stiffness_share;
+            if (p->stiffness_share != before)
+                p->shear.spring_n = before > 0.0 ? (p->stiffness_share / before) * p->shear.spring_n : Vec3{};
+            ++q;
         } else {
-            p.normal_dashpot_n = 0.0;
-            p.shear = {};
+            p->normal_dashpot_n = 0.0;
+            p->shear = {};
         }
     }
 }
