@@ -366,12 +366,17 @@ LawConstants law_constants(const World3d& w) {
             -0.5 * w.dt_s};
 }
 
-PairLaw pair_law_parameters(const LawConstants& k, const ContactPairSums3d& pair) {
-    PairLaw law = k.law;
+// A pair's dashpot coefficients per share (PairLaw's two per-pair members): the pair's loop keeps
+// these two, and the whole PairLaw is made only where a point leaves the two-lane line
+// (one_point_law; copied at every pair it was 8 instructions a pair).
+struct PairDashpots {
+    double cn_per_share_N_s_m = 0.0;  ///< [N s/m]
+    double cs_per_share_N_s_m = 0.0;  ///< [N s/m]
+};
+
+PairDashpots pair_dashpots(const LawConstants& k, const ContactPairSums3d& pair) {
     const double root_mass = std::sqrt(pair.dashpot_mass_per_share_kg);
-    law.cn_per_share_N_s_m = k.cn_per_root_mass * root_mass;
-    law.cs_per_share_N_s_m = k.cs_per_root_mass * root_mass;
-    return law;
+    return {k.cn_per_root_mass * root_mass, k.cs_per_root_mass * root_mass};
 }
 
 // A pair's energy terms before their common factors: each point adds its own products, and the
@@ -460,9 +465,9 @@ struct PairLanes {
     DoubleLanes minus_cs_per_share_N_s_m;  ///< [N s/m]
 };
 
-PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
+PairLanes pair_lanes(const PairMotion& m, const PairDashpots& d) {
     return {lanes(m.base_velocity_m_s), lanes(m.turn_rate_rad_s), lanes(m.centroid_a_m),
-            lanes(law.cn_per_share_N_s_m), lanes(-law.cs_per_share_N_s_m)};
+            lanes(d.cn_per_share_N_s_m), lanes(-d.cs_per_share_N_s_m)};
 }
 
 // point_law's straight line at two points p and q of a pair at once, one lane each (the same
@@ -544,8 +549,11 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
 // point_law at one point of a pair, its force and moment about a's centroid added to the pair's.
 // Out of line: inlined, the pair's loop built the call's closure at every pair, for the few points
 // that leave the two-lane line (about 2 % on the 1000-brick wall).
-[[gnu::noinline]] void one_point_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& c, PairEnergySums& e,
-                                     Vec3& force_n, Vec3& torque_n_m) {
+[[gnu::noinline]] void one_point_law(const PairMotion& m, const LawConstants& constants, PairDashpots d,
+                                     ContactPoint3d& c, PairEnergySums& e, Vec3& force_n, Vec3& torque_n_m) {
+    PairLaw law = constants.law;
+    law.cn_per_share_N_s_m = d.cn_per_share_N_s_m;
+    law.cs_per_share_N_s_m = d.cs_per_share_N_s_m;
     const Vec3 r = c.point_m - m.centroid_a_m;
     const Vec3 f = point_law(m, law, c, r, e);
     force_n += f;
@@ -561,12 +569,14 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
-    const PairLaw law = pair_law_parameters(constants, pair);
-    const PairLanes both_lanes = pair_lanes(m, law);
+    const PairDashpots dashpots = pair_dashpots(constants, pair);
+    const PairLanes both_lanes = pair_lanes(m, dashpots);
     PairLaneSums l{};
     PairEnergySums e;
     Vec3 force_n, torque_n_m;
-    const auto one_point = [&](ContactPoint3d& c) { one_point_law(m, law, c, e, force_n, torque_n_m); };
+    const auto one_point = [&](ContactPoint3d& c) {
+        one_point_law(m, constants, dashpots, c, e, force_n, torque_n_m);
+    };
     std::uint32_t k = 0;
     for (; k + 1 < pair.points; k += 2) {
         if (two_point_law(constants, both_lanes, points[k], points[k + 1], l)) continue;
