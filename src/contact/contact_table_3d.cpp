@@ -19,7 +19,7 @@ bool same_key(const ContactKey3d& a, const ContactKey3d& b) {
 }  // namespace
 
 void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
-                   std::size_t hint) {
+                   std::size_t hint, bool hint_starts_a_run) {
     if (count == 0) return;
     // Start at the first point of run[0]'s pair of bodies or beyond; the merge then passes the keys
     // below run[0] as the whole table's merge would have. Found by galloping from the hint (last
@@ -32,7 +32,8 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
     const std::size_t start = std::min(hint, n);
     const auto run_start = [&]() -> std::size_t {
         // The hint is the run's first point: no search.
-        if (start < n && bodies(previous[start].key) == first_bodies && (start == 0 || below(start - 1)))
+        if (start < n && bodies(previous[start].key) == first_bodies &&
+            (hint_starts_a_run || start == 0 || below(start - 1)))
             return start;
         std::size_t lo = 0, hi = n;  // below(i) for i < lo, not for i >= hi
         if (start < n && below(start)) {

@@ -56,8 +56,10 @@ void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<Cont
 /// step's run of that pair is found in previous at hint (where the run is expected in previous:
 /// where last step's pair of the same rank began, or the run's index in current), or by galloping
 /// from it, and then merged: runs of one table can be carried in parallel, with the whole
-/// table's result, whatever the hints.
+/// table's result, whatever the hints. hint_starts_a_run: the caller knows that hint is where a
+/// run of last step's table began (where last step's pair of the same rank began), so where the
+/// point there is of run's pair, it is that pair's first and the point before it is not read.
 void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
-                   std::size_t hint);
+                   std::size_t hint, bool hint_starts_a_run = false);
 
 }  // namespace blockdem

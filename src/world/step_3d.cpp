@@ -273,11 +273,10 @@ void find_contacts(World3d& w) {
         }
         // Where last step's run of the pair is looked for first: where last step's pair of the
         // same rank began (exact while the set of pairs in contact holds; a hint only).
-        const std::size_t hint = static_cast<std::size_t>(i) < s.previous_run_starts.size()
-                                     ? s.previous_run_starts[i]
-                                     : pair.first_point;
+        const bool ranked = static_cast<std::size_t>(i) < s.previous_run_starts.size();
+        const std::size_t hint = ranked ? s.previous_run_starts[i] : pair.first_point;
         s.run_starts[i] = pair.first_point;
-        carry_history(s.previous, run, pair.points, hint);
+        carry_history(s.previous, run, pair.points, hint, ranked);
     });
 }
 

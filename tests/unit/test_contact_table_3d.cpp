@@ -68,5 +68,47 @@ TEST(ContactTable3d, RunsCarriedFromAnyHintGiveTheWholeTablesMerge) {
     EXPECT_GT(born, 500);
 }
 
+// The step's hint: where last step's pair of the same rank began, which is a run's first point
+// (hint_starts_a_run); that pair is the run's own, or another, below or above it, or none.
+TEST(ContactTable3d, RunsCarriedFromRunStartsGiveTheWholeTablesMerge) {
+    std::mt19937 random(7);
+    const auto run_starts = [](const std::vector<ContactPoint3d>& table) {
+        std::vector<std::size_t> starts;
+        for (std::size_t i = 0; i < table.size(); ++i)
+            if (i == 0 || table[i].key.body_a != table[i - 1].key.body_a ||
+                table[i].key.body_b != table[i - 1].key.body_b)
+                starts.push_back(i);
+        return starts;
+    };
+    int found_at_hint = 0;
+    for (int trial = 0; trial < 50; ++trial) {
+        // Two tables of few bodies (12), so that they share most pairs, as two steps do.
+        std::vector<ContactPoint3d> previous = random_table(random, 12, 60);
+        for (ContactPoint3d& p : previous) p.normal_dashpot_n = tag(p.key);
+        const std::vector<ContactPoint3d> fresh = random_table(random, 12, 60);
+        std::vector<ContactPoint3d> whole = fresh;
+        carry_history(previous, whole);
+        const std::vector<std::size_t> previous_starts = run_starts(previous);
+        const std::vector<std::size_t> starts = run_starts(fresh);
+        std::vector<ContactPoint3d> runs = fresh;
+        for (std::size_t rank = 0; rank < starts.size(); ++rank) {
+            const std::size_t first = starts[rank];
+            const std::size_t end = rank + 1 < starts.size() ? starts[rank + 1] : runs.size();
+            if (rank >= previous_starts.size()) {
+                carry_history(previous, &runs[first], end - first, first);
+                continue;
+            }
+            const std::size_t hint = previous_starts[rank];
+            found_at_hint += previous[hint].key.body_a == runs[first].key.body_a &&
+                             previous[hint].key.body_b == runs[first].key.body_b;
+            carry_history(previous, &runs[first], end - first, hint, true);
+        }
+        ASSERT_EQ(whole.size(), runs.size());
+        for (std::size_t i = 0; i < whole.size(); ++i)
+            EXPECT_EQ(whole[i].normal_dashpot_n, runs[i].normal_dashpot_n) << "point " << i;
+    }
+    EXPECT_GT(found_at_hint, 20);
+}
+
 }  // namespace
 }  // namespace blockdem
