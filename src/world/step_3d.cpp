@@ -61,41 +61,72 @@ void size_pose_arrays(World3d& w) {
     s.rotations.resize(n);
     s.boxes.resize(n);
     s.is_static.resize(n);
+    s.posed.resize(n);
 }
 
-// A box's 8 corners, centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 with d_i its world directions,
-// written in its vertex order, and its bounding box, centre +/- sum h_i |d_i|. Why: 9 products
-// and 42 sums for the corners where turning each vertex costs 15 operations (120 a box), and
-// 15 for the box where the corners' minima and maxima cost 42. The corners are the box the
-// narrow phase tests (geometry/box_frame_3d.hpp: its separating axes use h_i and d_i), and they
-// differ from the turned vertices only by round-off and by the 1e-12 of the box's size that
-// box_frame allows a vertex off its corner.
-Aabb3d pose_box_corners(const BoxFrame3d& frame, Vec3 centre_m, const Vec3* directions, Vec3* vertices_m) {
-    const Vec3 a = frame.half_lengths_m.x * directions[0];
-    const Vec3 b = frame.half_lengths_m.y * directions[1];
-    const Vec3 c = frame.half_lengths_m.z * directions[2];
-    // Corner k: bit i of k set on the + side of direction i, as BoxFrame3d::vertex_corner.
+// The 8 corners centre +/- a +/- b +/- c, corner k on the + side of a when bit 0 of k is set, of
+// b for bit 1, of c for bit 2 (BoxFrame3d::vertex_corner's numbering).
+void box_corners(Vec3 centre_m, Vec3 a, Vec3 b, Vec3 c, Vec3* corners) {
     const Vec3 along_c[2] = {centre_m - c, centre_m + c};
     const Vec3 along_bc[4] = {along_c[0] - b, along_c[0] + b, along_c[1] - b, along_c[1] + b};
-    Vec3 corners[8];
     for (std::size_t k = 0; k < 4; ++k) {
         corners[2 * k] = along_bc[k] - a;
         corners[2 * k + 1] = along_bc[k] + a;
     }
-    // A local copy: the stores below could alias the frame's bytes, which would then be read again.
+}
+
+// A box posed from its orientation's matrix: its 3 world edge directions d_i, its 8 corners
+// centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 in its vertex order, its 6 face normals, and its
+// bounding box centre +/- sum h_i |d_i|. Why: 9 products and 42 sums for the corners where
+// turning each vertex costs 15 operations (120 a box), and 15 for the bounding box where the
+// corners' minima and maxima cost 42. The corners are the box the narrow phase tests
+// (geometry/box_frame_3d.hpp: its separating axes use h_i and d_i), and they differ from the
+// turned vertices only by round-off and by the 1e-12 of the box's size that box_frame allows a
+// vertex off its corner. What the frame says is read into locals before the first store: a store
+// through the output pointers could alias the frame, which the compiler would then read again.
+Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
+                const Vec3* body_normals, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
+    const Vec3 d[3] = {rotation * body_directions[0], rotation * body_directions[1], rotation * body_directions[2]};
+    const Vec3 h = frame.half_lengths_m;
     const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
-    for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[corner_of[k]];
+    const std::array<std::uint8_t, 6> face_direction = frame.face_direction;
+    const std::array<double, 6> face_sign = frame.face_sign;
+    const bool normals_are_directions = frame.normals_are_directions;
+    const Vec3 a = h.x * d[0];
+    const Vec3 b = h.y * d[1];
+    const Vec3 c = h.z * d[2];
+    for (std::size_t k = 0; k < 3; ++k) directions[k] = d[k];
+    // A box listed in corner order (as geometry/polyhedron.hpp's box_vertices lists it) takes its
+    // corners where they are made; another order goes through a copy (65 instructions a box).
+    constexpr std::array<std::uint8_t, 8> corner_order{0, 1, 2, 3, 4, 5, 6, 7};
+    if (corner_of == corner_order) {
+        box_corners(centre_m, a, b, c, vertices_m);
+    } else {
+        Vec3 corners[8];
+        box_corners(centre_m, a, b, c, corners);
+        for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[corner_of[k]];
+    }
+    // Turning -d gives exactly minus turning d (round-to-nearest is symmetric), so a normal that
+    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it.
+    if (normals_are_directions) {
+        for (std::size_t k = 0; k < 6; ++k) normals[k] = face_sign[k] * d[face_direction[k]];
+    } else {
+        for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * body_normals[k];
+    }
     const Vec3 reach{std::abs(a.x) + std::abs(b.x) + std::abs(c.x), std::abs(a.y) + std::abs(b.y) + std::abs(c.y),
                      std::abs(a.z) + std::abs(b.z) + std::abs(c.z)};
     return {centre_m - reach, centre_m + reach};
 }
 
-// Any other polyhedron's vertices turned by the matrix, and their bounding box.
-Aabb3d pose_vertices(const Matrix3d& rotation, Vec3 centre_m, const std::vector<Vec3>& body_vertices_m,
-                     Vec3* vertices_m) {
+// Any other polyhedron's vertices, normals and edge directions turned by the matrix, and its
+// bounding box.
+Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron& shape, const PolyhedronEdges& edges,
+                       Vec3* directions, Vec3* vertices_m, Vec3* normals) {
+    for (std::size_t k = 0; k < edges.directions.size(); ++k) directions[k] = rotation * edges.directions[k];
+    for (std::size_t k = 0; k < shape.face_normals.size(); ++k) normals[k] = rotation * shape.face_normals[k];
     Aabb3d box{centre_m, centre_m};
-    for (std::size_t k = 0; k < body_vertices_m.size(); ++k) {
-        const Vec3 v = centre_m + rotation * body_vertices_m[k];
+    for (std::size_t k = 0; k < shape.vertices_m.size(); ++k) {
+        const Vec3 v = centre_m + rotation * shape.vertices_m[k];
         vertices_m[k] = v;
         box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y), std::min(box.lo.z, v.z)};
         box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y), std::max(box.hi.z, v.z)};
@@ -103,45 +134,30 @@ Aabb3d pose_vertices(const Matrix3d& rotation, Vec3 centre_m, const std::vector<
     return box;
 }
 
-// Step 2: each body's vertices, normals and edge directions in the world frame, and its box,
-// from its orientation's matrix (one a body, kept for the kick).
+// Step 2: each body's vertices, normals and edge directions in the world frame, its box, and the
+// view of it the narrow phase reads (WorldScratch3d::posed, written here so that the bodies are
+// gone through once), from its orientation's matrix (one a body, kept for the kick and the
+// drift). What is read from the body is read before the first store, for pose_box's reason.
 void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
     const RigidBody3d& b = w.bodies[i];
     const Matrix3d rotation = rotation_matrix_by_products(b.orientation);
-    s.rotations[i] = rotation;
-    Vec3* directions = &s.world_directions[s.direction_start[i]];
+    const Vec3 centre_m = b.position_m;
+    // The drift turned the body about this axis, so its world direction is the same at both ends.
+    const Vec3 omega_world_rad_s = rotation * b.angular_velocity_body_rad_s;
+    const bool is_static = w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i);
     const BoxFrame3d& frame = w.box_frames[i];
+    const PolyhedronEdges& edges = w.edges[i];
+    Vec3* directions = &s.world_directions[s.direction_start[i]];
     Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
     Vec3* normals = &s.world_normals[s.face_start[i]];
-    if (frame.is_box) {
-        // Held in registers: a store through directions, vertices or normals could alias the
-        // frame or the edge directions, which the compiler would then read again.
-        const BoxFrame3d box = frame;
-        const Vec3 d[3] = {rotation * w.edges[i].directions[0], rotation * w.edges[i].directions[1],
-                           rotation * w.edges[i].directions[2]};
-        for (std::size_t k = 0; k < 3; ++k) directions[k] = d[k];
-        s.boxes[i] = pose_box_corners(box, b.position_m, d, vertices);
-        if (box.normals_are_directions) {
-            for (std::size_t k = 0; k < 6; ++k) normals[k] = box.face_sign[k] * d[box.face_direction[k]];
-        } else {
-            for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * b.shape.face_normals[k];
-        }
-    } else {
-        for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
-            directions[k] = rotation * w.edges[i].directions[k];
-        s.boxes[i] = pose_vertices(rotation, b.position_m, b.shape.vertices_m, vertices);
-        for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k) normals[k] = rotation * b.shape.face_normals[k];
-    }
-    // The drift turned the body about this axis, so its world direction is the same at both ends.
-    s.angular_velocity_world_rad_s[i] = rotation * b.angular_velocity_body_rad_s;
-    s.is_static[i] = w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i);
-}
-
-PosedPolyhedron posed(const World3d& w, std::uint32_t i) {
-    const WorldScratch3d& s = w.scratch;
-    return {&w.bodies[i].shape, &w.edges[i], &s.world_vertices_m[s.vertex_start[i]], &s.world_normals[s.face_start[i]],
-            s.world_directions.data() + s.direction_start[i], w.bodies[i].position_m, &w.box_frames[i]};
+    s.boxes[i] = frame.is_box ? pose_box(rotation, centre_m, frame, edges.directions.data(), b.shape.face_normals.data(),
+                                         directions, vertices, normals)
+                              : pose_polyhedron(rotation, centre_m, b.shape, edges, directions, vertices, normals);
+    s.rotations[i] = rotation;
+    s.angular_velocity_world_rad_s[i] = omega_world_rad_s;
+    s.is_static[i] = is_static;
+    s.posed[i] = {&b.shape, &edges, vertices, normals, directions, centre_m, &frame};
 }
 
 // The mass a pair's dashpots use (docs/physics.md, "Which mass the damping uses").
@@ -226,10 +242,7 @@ void find_contacts(World3d& w) {
         });
     if (s.pair_points.size() < s.pairs.size()) s.pair_points.resize(s.pairs.size());
     if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
-    // Each body posed for the narrow phase once, not once for each pair side it is in.
-    s.posed.resize(w.bodies.size());
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { s.posed[i] = posed(w, static_cast<std::uint32_t>(i)); });
+    // s.posed: each body posed for the narrow phase once (pose_body), not once for each pair side.
     parallel_for(static_cast<std::ptrdiff_t>(s.pairs.size()), [&](std::ptrdiff_t k) {
         auto& points = s.pair_points[k];
         points.clear();
