@@ -30,8 +30,9 @@ Vec3 turned_back(Vec3 t, Vec3 v) {
 Quaternion turn_of(Vec3 t) {
     const double angle2 = dot(t, t);
     if (angle2 > series_angle2_rad2) return from_rotation_vector(t);
-    const double half = 0.5 - angle2 / 48.0;
-    return {1.0 - angle2 / 8.0, half * t.x, half * t.y, half * t.z};
+    // Products by the series' constants, not divisions (a division is the slowest operation of the drift).
+    const double half = 0.5 - angle2 * (1.0 / 48.0);
+    return {1.0 - angle2 * 0.125, half * t.x, half * t.y, half * t.z};
 }
 
 }  // namespace
@@ -68,15 +69,19 @@ Vec3 free_rotation_of_body_momentum(Quaternion& orientation, Vec3 start, Vec3 in
                 "the rotation over one step did not converge (|omega| dt = {:g} rad): the time step is far too long",
                 length(omega) * dt_s));
     }
-    orientation = normalized(orientation * turn_of(dt_s * omega));
+    orientation = renormalized(orientation * turn_of(dt_s * omega));
     return omega;
 }
 
 double update_velocity_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s, bool starting) {
     const Vec3 a = (1.0 / b.mass_kg) * b.force_n;
-    const double back_s = starting ? 0.5 * dt_s : 0.0;
-    const Vec3 v_old = b.velocity_m_s - back_s * a;
-    const Vec3 l_old = b.angular_momentum_kg_m2_s - back_s * b.torque_n_m;
+    Vec3 v_old = b.velocity_m_s;
+    Vec3 l_old = b.angular_momentum_kg_m2_s;
+    if (starting) {
+        // The stored velocities are at t: back to t - dt/2 by half a kick.
+        v_old -= (0.5 * dt_s) * a;
+        l_old -= (0.5 * dt_s) * b.torque_n_m;
+    }
     b.velocity_m_s = v_old + dt_s * a;
     b.angular_momentum_kg_m2_s = l_old + dt_s * b.torque_n_m;
     b.velocity_at_t_m_s = 0.5 * (v_old + b.velocity_m_s);
