@@ -57,6 +57,9 @@ void size_pose_arrays(World3d& w) {
     s.world_vertices_m.resize(s.vertex_start[n]);
     s.world_normals.resize(s.face_start[n]);
     s.world_directions.resize(s.direction_start[n]);
+    s.body_directions.resize(s.direction_start[n]);
+    for (std::size_t i = 0; i < n; ++i)
+        std::copy(w.edges[i].directions.begin(), w.edges[i].directions.end(), &s.body_directions[s.direction_start[i]]);
     s.angular_velocity_world_rad_s.resize(n);
     s.rotations.resize(n);
     s.boxes.resize(n);
@@ -86,7 +89,7 @@ void size_pose_arrays(World3d& w) {
 // vertex off its corner. What the frame says is read into locals before the first store: a store
 // through the output pointers could alias the frame, which the compiler would then read again.
 Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
-                const Vec3* body_normals, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
+                const Polyhedron& shape, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
     const Vec3 d[3] = {rotation * body_directions[0], rotation * body_directions[1], rotation * body_directions[2]};
     const Vec3 h = frame.half_lengths_m;
     const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
@@ -99,7 +102,7 @@ Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame
     if (normals_are_directions) {
         for (std::size_t k = 0; k < 6; ++k) normals[k] = face_sign[k] * d[face_direction[k]];
     } else {
-        for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * body_normals[k];
+        for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * shape.face_normals[k];
     }
     const Vec3 a = h.x * d[0];
     const Vec3 b = h.y * d[1];
@@ -152,7 +155,7 @@ void pose_body(World3d& w, std::size_t i) {
     Vec3* directions = &s.world_directions[s.direction_start[i]];
     Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
     Vec3* normals = &s.world_normals[s.face_start[i]];
-    s.boxes[i] = frame.is_box ? pose_box(rotation, centre_m, frame, edges.directions.data(), b.shape.face_normals.data(),
+    s.boxes[i] = frame.is_box ? pose_box(rotation, centre_m, frame, &s.body_directions[s.direction_start[i]], b.shape,
                                          directions, vertices, normals)
                               : pose_polyhedron(rotation, centre_m, b.shape, edges, directions, vertices, normals);
     s.rotations[i] = rotation;
