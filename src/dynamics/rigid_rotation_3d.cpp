@@ -82,26 +82,6 @@ Vec3 free_rotation_of_body_momentum(Quaternion& orientation, Vec3 start, Vec3 in
     return turn_at_constant_momentum(orientation, start, inverse_moments_1_kg_m2, dt_s);
 }
 
-double update_velocity_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s, bool starting) {
-    const Vec3 a = (1.0 / b.mass_kg) * b.force_n;
-    Vec3 v_old = b.velocity_m_s;
-    Vec3 l_old = b.angular_momentum_kg_m2_s;
-    if (starting) {
-        // The stored velocities are at t: back to t - dt/2 by half a kick.
-        v_old -= (0.5 * dt_s) * a;
-        l_old -= (0.5 * dt_s) * b.torque_n_m;
-    }
-    b.velocity_m_s = v_old + dt_s * a;
-    b.angular_momentum_kg_m2_s = l_old + dt_s * b.torque_n_m;
-    b.velocity_at_t_m_s = 0.5 * (v_old + b.velocity_m_s);
-    // The angular velocity at t from the angular momentum at t at the orientation at t.
-    const Vec3 l_at_t = 0.5 * (l_old + b.angular_momentum_kg_m2_s);
-    const Vec3 omega_body = hadamard(b.inverse_moments_1_kg_m2, transpose_times(rotation, l_at_t));
-    b.angular_velocity_at_t_rad_s = rotation * omega_body;
-    return 0.5 * b.mass_kg * dot(b.velocity_at_t_m_s, b.velocity_at_t_m_s) +
-           0.5 * dot(omega_body, hadamard(b.principal_moments_kg_m2, omega_body));
-}
-
 double update_velocity_3d(RigidBody3d& b, double dt_s, bool starting) {
     return update_velocity_3d(b, rotation_matrix_by_products(b.orientation), dt_s, starting);
 }
