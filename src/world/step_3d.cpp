@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #ifdef _OPENMP
@@ -69,15 +70,46 @@ void size_pose_arrays(World3d& w) {
     s.posed.resize(n);
 }
 
+// A vector with its x and y in the two lanes of one 16-byte register and its z apart: the
+// pose's sums and products then take two operations a vector where Vec3's take three (the build
+// has no -march: scalar SSE2, one operation an instruction). Each lane rounds as the scalar
+// expression written the same way (laws/double_lanes.hpp), so the results are Vec3's bits.
+struct PackedVec3 {
+    DoubleLanes xy;
+    double z;
+};
+inline PackedVec3 packed(Vec3 v) { return {lanes(v.x, v.y), v.z}; }
+inline PackedVec3 operator+(const PackedVec3& a, const PackedVec3& b) { return {a.xy + b.xy, a.z + b.z}; }
+inline PackedVec3 operator-(const PackedVec3& a, const PackedVec3& b) { return {a.xy - b.xy, a.z - b.z}; }
+inline PackedVec3 operator*(double s, const PackedVec3& a) { return {lanes(s) * a.xy, s * a.z}; }
+inline void store(const PackedVec3& a, Vec3* to) {
+    std::memcpy(to, &a.xy, sizeof(a.xy));  // x and y, the first 16 bytes of a Vec3
+    to->z = a.z;
+}
+inline PackedVec3 absolute(const PackedVec3& a) { return {lane_max(a.xy, -a.xy), std::abs(a.z)}; }
+
+// The rotation matrix by columns, packed: R v = c0 v.x + c1 v.y + c2 v.z, summed in Matrix3d's
+// order, so the same bits as rotation * v.
+struct PackedRotation {
+    PackedVec3 columns[3];
+};
+inline PackedRotation packed(const Matrix3d& r) {
+    return {{packed(r.column(0)), packed(r.column(1)), packed(r.column(2))}};
+}
+inline PackedVec3 operator*(const PackedRotation& r, Vec3 v) {
+    return v.x * r.columns[0] + v.y * r.columns[1] + v.z * r.columns[2];
+}
+
 // The 8 corners centre +/- a +/- b +/- c, corner k on the + side of a when bit 0 of k is set, of
 // b for bit 1, of c for bit 2 (BoxFrame3d::vertex_corner's numbering). Inlined at both calls:
 // called, its arguments went through memory (116 instructions a box where 66 do the work).
-[[gnu::always_inline]] inline void box_corners(Vec3 centre_m, Vec3 a, Vec3 b, Vec3 c, Vec3* corners) {
-    const Vec3 along_c[2] = {centre_m - c, centre_m + c};
-    const Vec3 along_bc[4] = {along_c[0] - b, along_c[0] + b, along_c[1] - b, along_c[1] + b};
+[[gnu::always_inline]] inline void box_corners(const PackedVec3& centre_m, const PackedVec3& a, const PackedVec3& b,
+                                               const PackedVec3& c, Vec3* corners) {
+    const PackedVec3 along_c[2] = {centre_m - c, centre_m + c};
+    const PackedVec3 along_bc[4] = {along_c[0] - b, along_c[0] + b, along_c[1] - b, along_c[1] + b};
     for (std::size_t k = 0; k < 4; ++k) {
-        corners[2 * k] = along_bc[k] - a;
-        corners[2 * k + 1] = along_bc[k] + a;
+        store(along_bc[k] - a, &corners[2 * k]);
+        store(along_bc[k] + a, &corners[2 * k + 1]);
     }
 }
 
@@ -92,7 +124,8 @@ void size_pose_arrays(World3d& w) {
 // store: a store through the output pointers could alias the frame, which would then be read again.
 Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
                 const Polyhedron& shape, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
-    const Vec3 d[3] = {rotation * body_directions[0], rotation * body_directions[1], rotation * body_directions[2]};
+    const PackedRotation turn = packed(rotation);
+    const PackedVec3 d[3] = {turn * body_directions[0], turn * body_directions[1], turn * body_directions[2]};
     const Vec3 h = frame.half_lengths_m;
     const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
     // Turning -d gives exactly minus turning d (round-to-nearest is symmetric), so a normal that
@@ -100,27 +133,30 @@ Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame
     // normals are the first stores: the frame's signs and directions are each read once there,
     // where a copy made before them cost a dozen instructions more.
     if (frame.normals_are_directions) {
-        for (std::size_t k = 0; k < 6; ++k) normals[k] = frame.face_sign[k] * d[frame.face_direction[k]];
+        for (std::size_t k = 0; k < 6; ++k) store(frame.face_sign[k] * d[frame.face_direction[k]], &normals[k]);
     } else {
         for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * shape.face_normals[k];
     }
-    for (std::size_t k = 0; k < 3; ++k) directions[k] = d[k];
-    const Vec3 a = h.x * d[0];
-    const Vec3 b = h.y * d[1];
-    const Vec3 c = h.z * d[2];
+    for (std::size_t k = 0; k < 3; ++k) store(d[k], &directions[k]);
+    const PackedVec3 a = h.x * d[0];
+    const PackedVec3 b = h.y * d[1];
+    const PackedVec3 c = h.z * d[2];
+    const PackedVec3 centre = packed(centre_m);
     // A box listed in corner order (as geometry/polyhedron.hpp's box_vertices lists it) takes its
     // corners where they are made; another order goes through a copy (65 instructions a box).
     constexpr std::array<std::uint8_t, 8> corner_order{0, 1, 2, 3, 4, 5, 6, 7};
     if (corner_of == corner_order) {
-        box_corners(centre_m, a, b, c, vertices_m);
+        box_corners(centre, a, b, c, vertices_m);
     } else {
         Vec3 corners[8];
-        box_corners(centre_m, a, b, c, corners);
+        box_corners(centre, a, b, c, corners);
         for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[corner_of[k]];
     }
-    const Vec3 reach{std::abs(a.x) + std::abs(b.x) + std::abs(c.x), std::abs(a.y) + std::abs(b.y) + std::abs(c.y),
-                     std::abs(a.z) + std::abs(b.z) + std::abs(c.z)};
-    return {centre_m - reach, centre_m + reach};
+    const PackedVec3 reach = absolute(a) + absolute(b) + absolute(c);
+    Aabb3d box;
+    store(centre - reach, &box.lo);
+    store(centre + reach, &box.hi);
+    return box;
 }
 
 // Any other polyhedron's vertices, normals and edge directions turned by the matrix, and its
