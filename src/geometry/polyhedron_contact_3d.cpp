@@ -172,48 +172,51 @@ struct EdgeSearch {
     }
 };
 
-// Whether none of the six crossed edge axes a_i x b_j (i != j) can separate the boxes or be taken,
-// shown from figures at hand, so that only the three a_i x b_i need their own. It pays where b's
-// directions lie close to a's in the same order (a wall's bricks: the dots' diagonal within 1e-11
-// of 1) and the faces overlap by more than round-off; elsewhere the nine are measured as before.
+// Whether, from a's faces and the dots alone, neither b's face axes nor the six crossed edge axes
+// a_i x b_j (i != j) can separate the boxes or be taken (b's face needs an overlap below clearly
+// times a's, an edge axis below clearly times the face's), so that b's faces are not measured and
+// only the three edge axes a_i x b_i are. It holds where b's directions lie close to a's in the
+// same order (a wall's bricks: the dots' diagonal within 1e-11 of 1) and the faces overlap by more
+// than round-off; elsewhere everything is measured as before.
 //
 // Why. For a unit axis L with components L_k = a_k . L, b_j . L = sum_k dots[k][j] L_k, so
 // |b_j . L| >= |dots[j][j]| |L_j| - sum_{k != j} |dots[k][j]| |L_k|, and b's half width along L,
 // sum_j hb_j |b_j . L|, is at least sum_k |L_k| (hb_k |dots[k][k]| - e_k), e_k = sum_{j != k} hb_j
 // |dots[k][j]|. With |centre . L| <= sum_k |centre_k| |L_k| and a's half width sum_k ha_k |L_k|,
 // L's separation is at most sum_k |L_k| (s_k + 2 e_k), s_k a's face separation along k (its
-// facing face's: |centre_k| - ha_k - b's reach). Every s_k is at most a's best, face_a_m, and every
-// e_k at most E = sum_j hb_j sum_{k != j} |dots[k][j]|, so when T = face_a_m + 2 E < 0 no axis
-// separates by more than T (sum_k |L_k| >= 1). The search compares the separation times the axis's
-// length l: an axis a_i x b_j (i != j) has l >= |dots[j][j]| >= d, the diagonal's least |dot|, so it
-// separates by at most T l and is neither apart nor taken (taken: above least_separation_m, -clearly
-// F) when (T - least_separation_m) d <= -2 slack. The slack, 4e-12 of the boxes' summed half
-// lengths (their centres' offset is below twice that where no face separates), covers the
-// round-off of both sides' sums and the directions' distance from orthonormal (each about 1e-16
-// relative) a thousand times over; it sends a pair whose faces touch to round-off (F near 1e-16 m,
-// where the edge axes' own round-off decides) to the full search, which chooses there as before.
-bool crossed_edge_axes_lose(const BoxPair& pair, const double half_a[3], const double half_b[3], double face_a_m,
-                            double least_separation_m) {
-    const double slack_m =
-        4e-12 * (half_a[0] + half_a[1] + half_a[2] + half_b[0] + half_b[1] + half_b[2]);
-    // T - least <= face_a_m - least first: most pairs that fail, fail here (faces touching to round-off).
+// facing face's: |centre_k| - ha_k - b's reach). Every s_k is at most a's best, face_a_m = -F_a,
+// and every e_k at most E = sum_j hb_j sum_{k != j} |dots[k][j]|, so when T = face_a_m + 2 E < 0 no
+// axis separates by more than T (sum_k |L_k| >= 1). b's face axes are unit: each separates by at
+// most T. The search compares an edge axis's separation times its length l, and a_i x b_j (i != j)
+// has l >= |dots[j][j]| >= d, the diagonal's least |dot|: it separates by at most T l. So when
+// (T + clearly F_a) d <= -2 slack, no b face is apart or overlaps below clearly F_a (b is not the
+// reference, the face overlap is F_a) and no crossed edge axis is apart or above -clearly F_a l.
+// The slack, 4e-12 of the boxes' summed half lengths (their centres' offset is below twice that
+// where no face of a separates), covers the round-off of both sides' sums and the directions'
+// distance from orthonormal (each about 1e-16 relative) a thousand times over; it sends a pair
+// whose faces touch to round-off (F_a near 1e-16 m, where the axes' own round-off decides) to the
+// full test, which chooses there as before.
+bool aligned_beyond_round_off(const BoxPair& pair, const Vec3& ha, const Vec3& hb, double face_a_m, double clearly) {
+    const double slack_m = 4e-12 * (ha.x + ha.y + ha.z + hb.x + hb.y + hb.z);
+    const double least_separation_m = clearly * face_a_m;  // -clearly F_a
+    // T + clearly F_a <= (1 - clearly) face_a_m first: most pairs that fail, fail here (faces
+    // touching to round-off).
     if (face_a_m - least_separation_m > -2.0 * slack_m) return false;
     const auto& d = pair.abs_dots;
-    const double crossed_m = half_b[0] * (d[1][0] + d[2][0]) + half_b[1] * (d[0][1] + d[2][1]) +
-                             half_b[2] * (d[0][2] + d[1][2]);  // E
+    const double crossed_m = hb.x * (d[1][0] + d[2][0]) + hb.y * (d[0][1] + d[2][1]) + hb.z * (d[0][2] + d[1][2]);  // E
     const double least_diagonal = std::min(std::min(d[0][0], d[1][1]), d[2][2]);
     return (face_a_m + 2.0 * crossed_m - least_separation_m) * least_diagonal <= -2.0 * slack_m;
 }
 
-EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair, double face_a_m,
+EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair, bool aligned,
                        double least_separation_m, bool& apart) {
     const Vec3 ha = a.box->half_lengths_m;
     const Vec3 hb = b.box->half_lengths_m;
     EdgeSearch search{pair, {ha.x, ha.y, ha.z}, {hb.x, hb.y, hb.z}, least_separation_m, EdgeAxis{}};
     // In the order (0,0), (0,1), ... (2,2), the first separating axis ending the search; only the
-    // diagonal's three, in the same order, where the crossed ones are shown to lose: the same
-    // choice, as an axis that neither separates nor can be taken never decides it.
-    if (crossed_edge_axes_lose(pair, search.half_a, search.half_b, face_a_m, least_separation_m))
+    // diagonal's three, in the same order, where the crossed ones are shown to lose (aligned_beyond_
+    // round_off): the same choice, as an axis that neither separates nor can be taken never decides it.
+    if (aligned)
         apart = search.apart_along<0, 0>() || search.apart_along<1, 1>() || search.apart_along<2, 2>();
     else
         apart = search.apart_along<0, 0>() || search.apart_along<0, 1>() || search.apart_along<0, 2>() ||
@@ -474,16 +477,21 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     const BoxPair pair = boxes ? box_pair(a, b) : BoxPair{};
     const FaceAxis face_a = boxes ? box_face_axis(a, b, pair, true, apart) : best_face_axis(a, b, apart);
     if (apart) return 0;
-    const FaceAxis face_b = boxes ? box_face_axis(b, a, pair, false, apart) : best_face_axis(b, a, apart);
-    if (apart) return 0;
-    const std::size_t first = out.size();
     // Overlaps (>= 0); a candidate replaces the preferred one only when it is clearly smaller.
     constexpr double clearly = 0.95;
-    const bool use_b = -face_b.separation_m < clearly * -face_a.separation_m;
+    // Two boxes turned alike, overlapping beyond round-off: b's faces shown to lose unmeasured.
+    const bool aligned =
+        boxes && aligned_beyond_round_off(pair, a.box->half_lengths_m, b.box->half_lengths_m, face_a.separation_m,
+                                          clearly);
+    const FaceAxis face_b = aligned ? FaceAxis{}
+                            : boxes ? box_face_axis(b, a, pair, false, apart)
+                                    : best_face_axis(b, a, apart);
+    if (apart) return 0;
+    const std::size_t first = out.size();
+    const bool use_b = !aligned && -face_b.separation_m < clearly * -face_a.separation_m;
     const double face_overlap_m = use_b ? -face_b.separation_m : -face_a.separation_m;
-    const EdgeAxis edge =
-        boxes ? box_edge_axis(a, b, pair, face_a.separation_m, -clearly * face_overlap_m, apart)
-              : best_edge_axis(a, b, apart);
+    const EdgeAxis edge = boxes ? box_edge_axis(a, b, pair, aligned, -clearly * face_overlap_m, apart)
+                                : best_edge_axis(a, b, apart);
     if (apart) return 0;
     const bool use_edge = -edge.separation_m < clearly * face_overlap_m;
     if (!use_edge || !edge_contact(a, b, edge, out)) {
