@@ -102,38 +102,46 @@ BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
     return p;
 }
 
-// Whether (separation, face) goes before best: the larger separation, and on a tie the lower face
-// number, as a loop over the faces in order keeping the first of equals would choose.
-bool face_axis_before(double separation_m, std::uint32_t face, const FaceAxis& best) {
-    return separation_m > best.separation_m || (separation_m == best.separation_m && face < best.face);
-}
-
 // The faces of r against the box o. o's deepest point below the plane of r's face along +/- r's
 // direction i is o's centre's projection less reach_i = sum_j h_j |r_i . o_j|, and the plane is
 // r's centre's plus h_i, so that of the two faces along i the one facing o's centre (the sign of
 // centre_i) separates more: separation_i = |centre_i| - reach_i - h_i. r_is_a says which index of
 // the pair's dots is r's. Sets apart when a face plane separates them.
-FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, const BoxPair& pair, bool r_is_a,
-                       bool& apart) {
-    FaceAxis best;
+// Inlined by force: left to itself the compiler calls it (a call and its frame cost more a pair
+// than the face lookups saved below).
+[[gnu::always_inline]] inline FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o,
+                                                     const BoxPair& pair, bool r_is_a, bool& apart) {
     const Vec3 hr = r.box->half_lengths_m;
     const Vec3 ho = o.box->half_lengths_m;
     const double half_r[3] = {hr.x, hr.y, hr.z};
+    // The face along direction i facing o's centre; on centre_m = 0 both faces along i separate as
+    // much: the lower number, as in a face loop.
+    const auto facing = [&](int i, double centre_m) -> std::uint32_t {
+        return centre_m > 0.0   ? r.box->face_of[i][0]
+               : centre_m < 0.0 ? r.box->face_of[i][1]
+                                : std::min(r.box->face_of[i][0], r.box->face_of[i][1]);
+    };
+    // The best direction is kept, its face looked up once at the end; only an exact tie between two
+    // directions needs both faces (the lower number goes first, as a loop over the faces in order
+    // keeping the first of equals would choose).
+    double best_separation_m = -std::numeric_limits<double>::infinity();
+    int best_direction = -1;
+    double best_centre_m = 0.0;
     for (int i = 0; i < 3; ++i) {
         const auto d = [&](int j) { return r_is_a ? pair.abs_dots[i][j] : pair.abs_dots[j][i]; };
         const double reach_o_m = ho.x * d(0) + ho.y * d(1) + ho.z * d(2);
         const double centre_m = r_is_a ? pair.offset_a_m[i] : -pair.offset_b_m[i];  // o's centre minus r's
         const double separation_m = std::abs(centre_m) - reach_o_m - half_r[i];
-        // The face is looked up only for a direction that can go first (most lose).
-        if (separation_m < best.separation_m) continue;
-        // On centre_m = 0 both faces along i separate as much: the lower number, as in a face loop.
-        const std::uint32_t face = centre_m > 0.0   ? r.box->face_of[i][0]
-                                   : centre_m < 0.0 ? r.box->face_of[i][1]
-                                                    : std::min(r.box->face_of[i][0], r.box->face_of[i][1]);
-        if (face_axis_before(separation_m, face, best)) best = {separation_m, face};
+        if (separation_m > best_separation_m ||
+            (separation_m == best_separation_m && best_direction >= 0 &&
+             facing(i, centre_m) < facing(best_direction, best_centre_m))) {
+            best_separation_m = separation_m;
+            best_direction = i;
+            best_centre_m = centre_m;
+        }
     }
-    if (best.separation_m > 0.0) apart = true;
-    return best;
+    if (best_separation_m > 0.0) apart = true;
+    return {best_separation_m, best_direction < 0 ? 0u : facing(best_direction, best_centre_m)};
 }
 
 // The edge axes a_i x b_j. In a's frame b_j is the column j of the dots, so with (i, i1, i2) a

@@ -208,9 +208,10 @@ TEST(BoxFrame3d, BoxBoxTestBreaksExactTiesAsTheGeneralTest) {
 TEST(BoxFrame3d, NearlyAlignedBoxesGiveTheGeneralTestsPoints) {
     // A wall's case: b turned from a by 1e-13 to 1e-2 rad (the dots' diagonal within that of 1),
     // resting on a or beside it with overlaps from 1e-9 to 1e-4 m, and faces touching to round-off.
-    // Here the box test skips b's faces and the six crossed edge axes where a bound shows none can win; where the
-    // tilt is large against the overlap an edge axis does win (edge on edge), and the bound must
-    // leave those pairs to the full search. The same points, keys and overlaps as the general test.
+    // Here the box test skips b's faces and the six crossed edge axes where a bound shows none can
+    // win; where the tilt is large against the overlap an edge axis does win (edge on edge), and the
+    // bound must leave those pairs to the full test. The same points, keys and overlaps as the
+    // general test.
     std::mt19937 random(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::uniform_real_distribution<double> decade(0.0, 1.0);
