@@ -79,13 +79,13 @@ EdgeAxis best_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, bool
 
 // Two boxes: the same axes as best_face_axis and best_edge_axis, in a's frame (geometry/
 // box_frame_3d.hpp). dots[i][j] = a's direction i . b's j, taken once; everything else is a sum of
-// their products with the half lengths and the centres' offset along each box's directions.
+// their products with the half lengths and the centres' offset along a's directions (along b's where
+// b's faces are measured).
 struct BoxPair {
     Vec3 offset_m;          ///< [m] b's centre minus a's, world frame
     double dots[3][3];      ///< a.directions[i] . b.directions[j]
     double abs_dots[3][3];  ///< their absolute values
     double offset_a_m[3];   ///< [m] offset_m along a's direction i
-    double offset_b_m[3];   ///< [m] offset_m along b's direction j
 };
 
 BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
@@ -97,7 +97,6 @@ BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
             p.abs_dots[i][j] = std::abs(p.dots[i][j]);
         }
         p.offset_a_m[i] = dot(a.directions[i], p.offset_m);
-        p.offset_b_m[i] = dot(b.directions[i], p.offset_m);
     }
     return p;
 }
@@ -130,7 +129,9 @@ BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
     for (int i = 0; i < 3; ++i) {
         const auto d = [&](int j) { return r_is_a ? pair.abs_dots[i][j] : pair.abs_dots[j][i]; };
         const double reach_o_m = ho.x * d(0) + ho.y * d(1) + ho.z * d(2);
-        const double centre_m = r_is_a ? pair.offset_a_m[i] : -pair.offset_b_m[i];  // o's centre minus r's
+        // o's centre minus r's; along b's directions only here (b's faces are skipped for most pairs
+        // on a wall, aligned_beyond_round_off).
+        const double centre_m = r_is_a ? pair.offset_a_m[i] : -dot(r.directions[i], pair.offset_m);
         const double separation_m = std::abs(centre_m) - reach_o_m - half_r[i];
         if (separation_m > best_separation_m ||
             (separation_m == best_separation_m && best_direction >= 0 &&
