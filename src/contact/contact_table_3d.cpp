@@ -29,28 +29,32 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
     const std::uint64_t first_bodies = bodies(run[0].key);
     const auto below = [&](std::size_t i) { return bodies(previous[i].key) < first_bodies; };
     const std::size_t n = previous.size();
-    std::size_t lo = 0, hi = n;  // below(i) for i < lo, not for i >= hi
     const std::size_t start = std::min(hint, n);
-    if (start < n && bodies(previous[start].key) == first_bodies && (start == 0 || below(start - 1))) {
-        lo = hi = start;  // the hint is the run's first point: no search
-    } else if (start < n && below(start)) {
-        lo = start + 1;
-        for (std::size_t step = 1; lo + step - 1 < n; step *= 2) {
-            if (!below(lo + step - 1)) { hi = lo + step - 1; break; }
-            lo += step;
+    const auto run_start = [&]() -> std::size_t {
+        // The hint is the run's first point: no search.
+        if (start < n && bodies(previous[start].key) == first_bodies && (start == 0 || below(start - 1)))
+            return start;
+        std::size_t lo = 0, hi = n;  // below(i) for i < lo, not for i >= hi
+        if (start < n && below(start)) {
+            lo = start + 1;
+            for (std::size_t step = 1; lo + step - 1 < n; step *= 2) {
+                if (!below(lo + step - 1)) { hi = lo + step - 1; break; }
+                lo += step;
+            }
+        } else {
+            hi = start;
+            for (std::size_t step = 1; step <= hi; step *= 2) {
+                if (below(hi - step)) { lo = hi - step + 1; break; }
+                hi -= step;
+            }
         }
-    } else {
-        hi = start;
-        for (std::size_t step = 1; step <= hi; step *= 2) {
-            if (below(hi - step)) { lo = hi - step + 1; break; }
-            hi -= step;
-        }
-    }
-    std::size_t j = static_cast<std::size_t>(
-        std::partition_point(previous.begin() + static_cast<std::ptrdiff_t>(lo),
-                             previous.begin() + static_cast<std::ptrdiff_t>(hi),
-                             [&](const ContactPoint3d& p) { return bodies(p.key) < first_bodies; }) -
-        previous.begin());
+        return static_cast<std::size_t>(
+            std::partition_point(previous.begin() + static_cast<std::ptrdiff_t>(lo),
+                                 previous.begin() + static_cast<std::ptrdiff_t>(hi),
+                                 [&](const ContactPoint3d& p) { return bodies(p.key) < first_bodies; }) -
+            previous.begin());
+    };
+    std::size_t j = run_start();
     // The usual point kept its key, and last step's point at j is its own: one 16-byte
     // comparison says so. Otherwise the walk passes last step's smaller keys (points gone), one
     // three-way comparison a probe, the probe that stops it saying whether it matched.

@@ -13,20 +13,23 @@ constexpr std::size_t most_corners = BoxFaceClip3d::most_corners;
 
 // One side of the rectangle: a bound on u (axis 0) or v (axis 1). A corner's height over the side
 // plane is sign (coordinate - bound); the general clip's is that times the side's length.
+// No default values: each side is written once before it is read (RectangleInFrame's four were
+// zeroed at every clip, for nothing).
 struct RectangleSide {
-    int axis = 0;
-    double sign = 1.0;
-    double bound_m = 0.0;  ///< [m] the side's start corner's coordinate along axis
-    double slack_m = 0.0;  ///< [m] 1e-9 of the side's length: the general clip's 1e-9 |side|^2 over |side|
+    int axis;
+    double sign;
+    double bound_m;  ///< [m] the side's start corner's coordinate along axis
+    double slack_m;  ///< [m] 1e-9 of the side's length: the general clip's 1e-9 |side|^2 over |side|
 };
 
 double coordinate(const FaceCorner& c, int axis) { return axis == 0 ? c.u_m : c.v_m; }
 
-// The side from corner p0 to p1 (u, v). Its outward normal in the plane is (p1 - p0) x n, which in
-// the right-handed frame (e_u, e_v, n) is (dv, -du): along u when the side runs along v.
-RectangleSide rectangle_side(double u0, double v0, double u1, double v1) {
+// The side from corner p0 to p1 (u, v), running along v (a bound on u) or along u. Its outward
+// normal in the plane is (p1 - p0) x n, which in the right-handed frame (e_u, e_v, n) is (dv, -du):
+// along u when the side runs along v.
+RectangleSide rectangle_side(bool along_v, double u0, double v0, double u1, double v1) {
     const double du = u1 - u0, dv = v1 - v0;
-    if (std::abs(dv) >= std::abs(du)) return {0, dv > 0.0 ? 1.0 : -1.0, u0, 1e-9 * std::abs(dv)};
+    if (along_v) return {0, dv > 0.0 ? 1.0 : -1.0, u0, 1e-9 * std::abs(dv)};
     return {1, du < 0.0 ? 1.0 : -1.0, v0, 1e-9 * std::abs(du)};
 }
 
@@ -39,6 +42,9 @@ struct RectangleInFrame {
 
 // The frame, the rectangle in it and the polygon's first form, the incident face's corners in
 // clip.buffers[0]: what both clips start from. Returns the incident face's corner count.
+// fixed_count: the incident face's corner count when known at compile time (a box face's 4, for
+// a loop the compiler unrolls), 0 when read from the face.
+template <std::size_t fixed_count>
 std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                                std::uint32_t inc_face, BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
     // The frame: origin at the face's corner 0, e_u one of the box's directions in the face's
@@ -57,15 +63,20 @@ std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_fac
         rectangle.corner_u_m[k] = dot(r, e_u);
         rectangle.corner_v_m[k] = dot(r, e_v);
     }
+    // The sides run along v and u in turn (box edges, along e_v or e_u to round-off and to
+    // box_frame's 1e-12 of the box's size): the first side's longer coordinate says which.
+    const double* corner_u = rectangle.corner_u_m;
+    const double* corner_v = rectangle.corner_v_m;
+    const bool first_along_v = std::abs(corner_v[1] - corner_v[0]) >= std::abs(corner_u[1] - corner_u[0]);
     for (std::size_t k = 0; k < 4; ++k) {
         const std::size_t k_next = (k + 1) % 4;
-        rectangle.sides[k] = rectangle_side(rectangle.corner_u_m[k], rectangle.corner_v_m[k],
-                                            rectangle.corner_u_m[k_next], rectangle.corner_v_m[k_next]);
+        rectangle.sides[k] = rectangle_side(first_along_v == (k % 2 == 0), corner_u[k], corner_v[k], corner_u[k_next],
+                                            corner_v[k_next]);
     }
     clip.origin_m = origin_m;
     FaceCorner* polygon = clip.buffers[0].data();
     const auto& inc_corners = inc.shape->faces[inc_face];
-    const std::size_t count = inc_corners.size();
+    const std::size_t count = fixed_count != 0 ? fixed_count : inc_corners.size();
     for (std::size_t k = 0; k < count; ++k) {
         const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
         polygon[k] = {dot(r, e_u),
@@ -229,22 +240,26 @@ bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& in
 bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                             std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
-    if (count == 4 && clip_in_one_pass<4>(ref, ref_face, rectangle, clip)) return true;
+    if (inc.shape->faces[inc_face].size() == 4) {  // a box's face: the loading unrolled, the one pass tried
+        load_incident_face<4>(ref, ref_face, inc, inc_face, clip, rectangle);
+        if (clip_in_one_pass<4>(ref, ref_face, rectangle, clip)) return true;
+        return clip_by_passes(ref, ref_face, inc_face, rectangle, 4, clip);
+    }
+    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
 }
 
 bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                              std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
+    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
 }
 
 bool clip_box_face_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                                std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face(ref, ref_face, inc, inc_face, clip, rectangle);
+    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
     return count == 4 && clip_in_one_pass<4>(ref, ref_face, rectangle, clip);
 }
 

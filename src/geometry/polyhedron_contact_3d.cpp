@@ -328,21 +328,32 @@ std::uint32_t most_opposed_box_face(const PosedPolyhedron& ref, std::uint32_t re
 // -w, its point the world point halfway up, lifted only when it is below the plane; the shares
 // are the turns of the polygon in that frame, which a rotation keeps to round-off (the polygon
 // lies in the incident face, tilted or not, and its turns are measured in 3-D there as in the world).
-void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_box, ContactScratch3d& scratch,
+// The shares are read from the clip's own corners (corner_shares_without_groups), not from a copy;
+// only a polygon with a short side, which groups its corners, is copied for corner_shares_3d.
+void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_box,
                      std::vector<ContactGeometry3d>& out) {
     const std::size_t count = clip.count;
     const BoxClipCorner3d* polygon = clip.corners;
-    if (scratch.corners_m.size() < count) scratch.corners_m.resize(count);
-    if (scratch.shares.size() < count) scratch.shares.resize(count);
-    if (scratch.quarter_turns.size() < count) scratch.quarter_turns.resize(count);
-    Vec3* corners_m = scratch.corners_m.data();
-    std::uint8_t* quarter_turns = scratch.quarter_turns.data();
-    for (std::size_t i = 0; i < count; ++i) {
-        corners_m[i] = {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m};
-        quarter_turns[i] = incident_is_box && feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+    struct ClipCorners {
+        const BoxClipCorner3d* polygon;
+        bool incident_is_box;
+        Vec3 at(std::size_t i) const { return {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m}; }
+        bool known(std::size_t i) const {
+            return incident_is_box && feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex;
+        }
+    };
+    double shares[BoxFaceClip3d::most_corners];
+    const ClipCorners corners{polygon, incident_is_box};
+    // A box face cut by one side has 4 corners (cut across) or 5 (a corner cut off): loops of a
+    // length known when compiled, unrolled.
+    const bool ungrouped = count == 4   ? corner_shares_without_groups(corners, std::integral_constant<std::size_t, 4>{}, shares)
+                           : count == 5 ? corner_shares_without_groups(corners, std::integral_constant<std::size_t, 5>{}, shares)
+                                        : corner_shares_without_groups(corners, count, shares);
+    if (!ungrouped) {
+        Vec3 corners_m[BoxFaceClip3d::most_corners];
+        for (std::size_t i = 0; i < count; ++i) corners_m[i] = {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m};
+        corner_shares_3d(corners_m, count, shares);
     }
-    corner_shares_3d(corners_m, count, scratch.shares.data(), quarter_turns);
-    const double* shares = scratch.shares.data();
     const Vec3 normal = ref_is_a ? clip.n : -clip.n;
     for (std::size_t i = 0; i < count; ++i) {
         const BoxClipCorner3d& c = polygon[i];
@@ -367,7 +378,7 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     if (pair != nullptr) {
         BoxFaceClip3d clip;
         if (clip_box_face_in_frame(ref, ref_face, inc, inc_face, clip)) {
-            box_face_points(clip, ref_is_a, true, scratch, out);
+            box_face_points(clip, ref_is_a, true, out);
             return;
         }
         clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);

@@ -254,3 +254,62 @@ TEST(BoxFaceClip3d, OnePassGivesThePassesPolygonOnFlushFaces) {
 
 }  // namespace
 }  // namespace blockdem
+
+namespace blockdem {
+namespace {
+
+// The shares as the narrow phase takes them for two boxes (corner_shares_without_groups reading
+// the clip's own corners, a kept incident corner known to be a right angle) against
+// corner_shares_3d on a copy of the corners and flags: the same bits, and a polygon with a short
+// side left to corner_shares_3d (the template says it cannot).
+struct ClipCornersForShares {
+    const BoxClipCorner3d* polygon;
+    Vec3 at(std::size_t i) const { return {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m}; }
+    bool known(std::size_t i) const { return feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex; }
+};
+
+TEST(BoxFaceClip3d, SharesReadFromTheClipAreTheSharesOfACopy) {
+    std::mt19937 random(31);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    int polygons = 0, known_corners = 0, measured_corners = 0, grouped = 0;
+    for (int trial = 0; trial < 400; ++trial) {
+        const double turn = trial % 3 == 0 ? 0.6 : trial % 3 == 1 ? 0.02 : 1e-7;
+        const bool sliver = trial % 4 == 0;
+        const Quaternion qa =
+            sliver ? Quaternion{} : from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)});
+        const Posed a(brick, qa, {});
+        // One trial in four overlaps a's top by a sliver 1e-12 m wide along x (b end to end with
+        // a but for 1e-12 m): a polygon with sides shorter than 1e-9 of the longest, which groups.
+        const Quaternion qb =
+            sliver ? Quaternion{} : from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)});
+        const Vec3 cb = sliver ? Vec3{0.2 - 1e-12, 1e-12, 0.1 - 1e-6} : Vec3{0.15 * u(random), 0.08 * u(random), 0.1 - 1e-6};
+        const Posed b(brick, qb, cb);
+        for (std::uint32_t f = 0; f < a.shape.faces.size(); ++f) {
+            BoxFaceClip3d clip;
+            ASSERT_TRUE(clip_box_face_in_frame(a.view(), f, b.view(), most_opposed_face(b, a.normals[f]), clip));
+            std::vector<Vec3> corners(clip.count);
+            std::vector<std::uint8_t> flags(clip.count);
+            for (std::size_t k = 0; k < clip.count; ++k) {
+                corners[k] = {clip.corners[k].u_m, clip.corners[k].v_m, clip.corners[k].w_m};
+                flags[k] = feature_kind(clip.corners[k].feature_incident) == FeatureKind3d::vertex;
+                if (flags[k] != 0) ++known_corners; else ++measured_corners;
+            }
+            std::vector<double> copied(clip.count), read(clip.count, -1.0);
+            corner_shares_3d(corners.data(), clip.count, copied.data(), flags.data());
+            ++polygons;
+            if (!corner_shares_without_groups(ClipCornersForShares{clip.corners}, clip.count, read.data())) {
+                ++grouped;
+                continue;
+            }
+            for (std::size_t k = 0; k < clip.count; ++k) EXPECT_EQ(read[k], copied[k]) << "face " << f << " corner " << k;
+        }
+    }
+    EXPECT_EQ(polygons, 2400);
+    EXPECT_GT(known_corners, 1500);
+    EXPECT_GT(measured_corners, 3000);
+    EXPECT_GT(grouped, 50);  // the slivers have short sides
+}
+
+}  // namespace
+}  // namespace blockdem
