@@ -560,12 +560,11 @@ PairLanes pair_lanes(const PairMotion& m, const PairLaw& law) {
     const Vec3Lanes dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
     const Vec3Lanes total = trial + dashpot;
     const DoubleLanes trial_squared = dot(trial, trial);
-    // The carried spring's square is taken as last step's: the carry keeps the length, to a few
-    // units in the last place where the normal turned by less than 45 degrees since (its square
-    // in the plane then over half the whole, so no cancellation): inside surely_within_below's
-    // margin of 1e-15. A larger turn leaves the straight line.
-    if (!both((spring_squared < within_below) & (spring_squared <= spring_in_plane_squared + spring_in_plane_squared) &
-              (trial_squared < within_below) &
+    // The carried spring's own square, as point_law tests it: last step's square is not a bound
+    // for it (the carry's rescale rounds it up by up to 14 units in the last place at a 45-degree
+    // turn, past surely_within_below's margin, so a spring at the cap would stick here and slide
+    // there).
+    if (!both((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
               (dot(total, total) < within_below)))
         return false;
     l.normal_dashpot_power_w += (lanes(p.normal_dashpot_n, q.normal_dashpot_n) + normal_dashpot_n) * normal_speed;
