@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "world/parallel.hpp"
 
@@ -31,6 +32,50 @@ bool contains(const Box& outer, const Box& inner) {
 // the thread count: each chunk counts what it keeps, the counts' prefix sum places each chunk's
 // pairs, so the pairs keep the list's order at any thread count (world/parallel.hpp, rule 1).
 constexpr std::size_t large_list_chunks = 64;
+
+// The same pairs as SkinPairListOf::find_pairs's two passes over its flags, in the same fixed
+// chunks and order; written for 3-D alone, so that the 2-D filter is the code it was. Each chunk
+// holds the list's and
+// the boxes' pointers in its own locals (a store through a lambda's captures could alias them, so
+// the 2-D loop reads them again at every pair) and writes each pair at once at the chunk's next
+// free place in kept_pairs_ (compacted from the chunk's start; a pair that fails is overwritten),
+// so that the second pass copies the kept pairs only instead of reading every listed pair's flag:
+// 2.46 M -> 1.70 M instructions a step for the 1e4-brick wall's 64 k listed pairs.
+void filter_compacted(const std::vector<BodyPair>& listed_pairs, const std::vector<Aabb3d>& boxes,
+                      std::vector<BodyPair>& kept_pairs, std::vector<std::size_t>& chunk_kept_counts,
+                      std::vector<BodyPair>& pairs) {
+    const std::size_t listed = listed_pairs.size();
+    const std::size_t chunks =
+        static_cast<std::ptrdiff_t>(listed) >= parallel_threshold ? large_list_chunks : std::size_t{1};
+    kept_pairs.resize(listed);
+    chunk_kept_counts.assign(chunks + 1, 0);
+    const BodyPair* const list = listed_pairs.data();
+    const Aabb3d* const box = boxes.data();
+    BodyPair* const compacted = kept_pairs.data();
+    std::size_t* const chunk_kept = chunk_kept_counts.data();
+    const auto n_chunks = static_cast<std::ptrdiff_t>(chunks);
+#pragma omp parallel for schedule(dynamic) if (chunks > 1)
+    for (std::ptrdiff_t k = 0; k < n_chunks; ++k) {
+        const std::size_t begin = listed * static_cast<std::size_t>(k) / chunks;
+        const std::size_t end = listed * static_cast<std::size_t>(k + 1) / chunks;
+        BodyPair* const out = compacted + begin;
+        std::size_t kept = 0;
+        for (std::size_t p = begin; p < end; ++p) {
+            const BodyPair pair = list[p];
+            out[kept] = pair;
+            kept += overlaps(box[pair.first], box[pair.second]);
+        }
+        chunk_kept[k + 1] = kept;
+    }
+    for (std::size_t k = 0; k < chunks; ++k) chunk_kept[k + 1] += chunk_kept[k];
+    pairs.resize(chunk_kept[chunks]);
+    BodyPair* const to = pairs.data();
+#pragma omp parallel for schedule(dynamic) if (chunks > 1)
+    for (std::ptrdiff_t k = 0; k < n_chunks; ++k) {
+        const BodyPair* const from = compacted + listed * static_cast<std::size_t>(k) / chunks;
+        std::copy(from, from + (chunk_kept[k + 1] - chunk_kept[k]), to + chunk_kept[k]);
+    }
+}
 
 }  // namespace
 
@@ -75,6 +120,10 @@ template <class Box>
 void SkinPairListOf<Box>::find_pairs(const std::vector<Box>& boxes, const std::vector<std::uint8_t>& is_static,
                                      std::vector<BodyPair>& pairs) {
     if (must_rebuild(boxes, is_static)) rebuild(boxes, is_static);
+    if constexpr (std::is_same_v<Box, Aabb3d>) {
+        filter_compacted(listed_, boxes, kept_pairs_, chunk_kept_, pairs);
+        return;
+    }
     const std::size_t listed = listed_.size();
     const std::size_t chunks =
         static_cast<std::ptrdiff_t>(listed) >= parallel_threshold ? large_list_chunks : std::size_t{1};

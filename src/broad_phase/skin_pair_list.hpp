@@ -43,7 +43,8 @@ public:
 
     /// Bytes held by the list, the enlarged boxes and the grid's scratch arrays.
     std::size_t memory_bytes() const {
-        return grid_.memory_bytes() + enlarged_.capacity() * sizeof(Box) + listed_.capacity() * sizeof(BodyPair) +
+        return grid_.memory_bytes() + enlarged_.capacity() * sizeof(Box) +
+               (listed_.capacity() + kept_pairs_.capacity()) * sizeof(BodyPair) +
                (built_static_.capacity() + keep_.capacity()) * sizeof(std::uint8_t) +
                chunk_kept_.capacity() * sizeof(std::size_t) + extents_.capacity() * sizeof(double);
     }
@@ -60,6 +61,7 @@ private:
     std::vector<std::size_t> chunk_kept_;     ///< per fixed chunk of the list: pairs kept, then their offset
     std::vector<double> extents_;             ///< [m] scratch of a rebuild: each body's largest side
     std::int64_t rebuilds_ = 0;
+    std::vector<BodyPair> kept_pairs_;        ///< 3-D: each chunk's kept pairs, from the chunk's start
 };
 
 extern template class SkinPairListOf<Aabb>;

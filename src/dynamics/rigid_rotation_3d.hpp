@@ -38,8 +38,27 @@ Vec3 free_rotation_of_body_momentum(Quaternion& orientation, Vec3 body_momentum_
 /// the kick has at hand).
 double update_velocity_3d(RigidBody3d& b, double dt_s, bool starting = false);
 /// The same with the matrix of b's orientation at t already at hand (the 3-D step's pose):
-/// two products by a matrix instead of two turns by the quaternion.
-double update_velocity_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s, bool starting);
+/// two products by a matrix instead of two turns by the quaternion. Defined here so that the
+/// step's kick loop inlines it (called, a body's kick cost about 20 instructions more).
+inline double update_velocity_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s, bool starting) {
+    const Vec3 a = (1.0 / b.mass_kg) * b.force_n;
+    Vec3 v_old = b.velocity_m_s;
+    Vec3 l_old = b.angular_momentum_kg_m2_s;
+    if (starting) {
+        // The stored velocities are at t: back to t - dt/2 by half a kick.
+        v_old -= (0.5 * dt_s) * a;
+        l_old -= (0.5 * dt_s) * b.torque_n_m;
+    }
+    b.velocity_m_s = v_old + dt_s * a;
+    b.angular_momentum_kg_m2_s = l_old + dt_s * b.torque_n_m;
+    b.velocity_at_t_m_s = 0.5 * (v_old + b.velocity_m_s);
+    // The angular velocity at t from the angular momentum at t at the orientation at t.
+    const Vec3 l_at_t = 0.5 * (l_old + b.angular_momentum_kg_m2_s);
+    const Vec3 omega_body = hadamard(b.inverse_moments_1_kg_m2, transpose_times(rotation, l_at_t));
+    b.angular_velocity_at_t_rad_s = rotation * omega_body;
+    return 0.5 * b.mass_kg * dot(b.velocity_at_t_m_s, b.velocity_at_t_m_s) +
+           0.5 * dot(omega_body, hadamard(b.principal_moments_kg_m2, omega_body));
+}
 
 /// The drift: position and orientation to t + dt from the half-step velocities.
 void update_position_3d(RigidBody3d& b, double dt_s);

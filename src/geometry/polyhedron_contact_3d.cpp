@@ -79,13 +79,13 @@ EdgeAxis best_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, bool
 
 // Two boxes: the same axes as best_face_axis and best_edge_axis, in a's frame (geometry/
 // box_frame_3d.hpp). dots[i][j] = a's direction i . b's j, taken once; everything else is a sum of
-// their products with the half lengths and the centres' offset along each box's directions.
+// their products with the half lengths and the centres' offset along a's directions (along b's where
+// b's faces are measured).
 struct BoxPair {
     Vec3 offset_m;          ///< [m] b's centre minus a's, world frame
     double dots[3][3];      ///< a.directions[i] . b.directions[j]
     double abs_dots[3][3];  ///< their absolute values
     double offset_a_m[3];   ///< [m] offset_m along a's direction i
-    double offset_b_m[3];   ///< [m] offset_m along b's direction j
 };
 
 BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
@@ -97,15 +97,8 @@ BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b) {
             p.abs_dots[i][j] = std::abs(p.dots[i][j]);
         }
         p.offset_a_m[i] = dot(a.directions[i], p.offset_m);
-        p.offset_b_m[i] = dot(b.directions[i], p.offset_m);
     }
     return p;
-}
-
-// Whether (separation, face) goes before best: the larger separation, and on a tie the lower face
-// number, as a loop over the faces in order keeping the first of equals would choose.
-bool face_axis_before(double separation_m, std::uint32_t face, const FaceAxis& best) {
-    return separation_m > best.separation_m || (separation_m == best.separation_m && face < best.face);
 }
 
 // The faces of r against the box o. o's deepest point below the plane of r's face along +/- r's
@@ -113,27 +106,43 @@ bool face_axis_before(double separation_m, std::uint32_t face, const FaceAxis& b
 // r's centre's plus h_i, so that of the two faces along i the one facing o's centre (the sign of
 // centre_i) separates more: separation_i = |centre_i| - reach_i - h_i. r_is_a says which index of
 // the pair's dots is r's. Sets apart when a face plane separates them.
-FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, const BoxPair& pair, bool r_is_a,
-                       bool& apart) {
-    FaceAxis best;
+// Inlined by force: left to itself the compiler calls it (a call and its frame cost more a pair
+// than the face lookups saved below).
+[[gnu::always_inline]] inline FaceAxis box_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o,
+                                                     const BoxPair& pair, bool r_is_a, bool& apart) {
     const Vec3 hr = r.box->half_lengths_m;
     const Vec3 ho = o.box->half_lengths_m;
     const double half_r[3] = {hr.x, hr.y, hr.z};
+    // The face along direction i facing o's centre; on centre_m = 0 both faces along i separate as
+    // much: the lower number, as in a face loop.
+    const auto facing = [&](int i, double centre_m) -> std::uint32_t {
+        return centre_m > 0.0   ? r.box->face_of[i][0]
+               : centre_m < 0.0 ? r.box->face_of[i][1]
+                                : std::min(r.box->face_of[i][0], r.box->face_of[i][1]);
+    };
+    // The best direction is kept, its face looked up once at the end; only an exact tie between two
+    // directions needs both faces (the lower number goes first, as a loop over the faces in order
+    // keeping the first of equals would choose).
+    double best_separation_m = -std::numeric_limits<double>::infinity();
+    int best_direction = -1;
+    double best_centre_m = 0.0;
     for (int i = 0; i < 3; ++i) {
         const auto d = [&](int j) { return r_is_a ? pair.abs_dots[i][j] : pair.abs_dots[j][i]; };
         const double reach_o_m = ho.x * d(0) + ho.y * d(1) + ho.z * d(2);
-        const double centre_m = r_is_a ? pair.offset_a_m[i] : -pair.offset_b_m[i];  // o's centre minus r's
+        // o's centre minus r's; along b's directions only here (b's faces are skipped for most pairs
+        // on a wall, aligned_beyond_round_off).
+        const double centre_m = r_is_a ? pair.offset_a_m[i] : -dot(r.directions[i], pair.offset_m);
         const double separation_m = std::abs(centre_m) - reach_o_m - half_r[i];
-        // The face is looked up only for a direction that can go first (most lose).
-        if (separation_m < best.separation_m) continue;
-        // On centre_m = 0 both faces along i separate as much: the lower number, as in a face loop.
-        const std::uint32_t face = centre_m > 0.0   ? r.box->face_of[i][0]
-                                   : centre_m < 0.0 ? r.box->face_of[i][1]
-                                                    : std::min(r.box->face_of[i][0], r.box->face_of[i][1]);
-        if (face_axis_before(separation_m, face, best)) best = {separation_m, face};
+        if (separation_m > best_separation_m ||
+            (separation_m == best_separation_m && best_direction >= 0 &&
+             facing(i, centre_m) < facing(best_direction, best_centre_m))) {
+            best_separation_m = separation_m;
+            best_direction = i;
+            best_centre_m = centre_m;
+        }
     }
-    if (best.separation_m > 0.0) apart = true;
-    return best;
+    if (best_separation_m > 0.0) apart = true;
+    return {best_separation_m, best_direction < 0 ? 0u : facing(best_direction, best_centre_m)};
 }
 
 // The edge axes a_i x b_j. In a's frame b_j is the column j of the dots, so with (i, i1, i2) a
@@ -172,15 +181,56 @@ struct EdgeSearch {
     }
 };
 
-EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair,
+// Whether, from a's faces and the dots alone, neither b's face axes nor the six crossed edge axes
+// a_i x b_j (i != j) can separate the boxes or be taken (b's face needs an overlap below clearly
+// times a's, an edge axis below clearly times the face's), so that b's faces are not measured and
+// only the three edge axes a_i x b_i are. It holds where b's directions lie close to a's in the
+// same order (a wall's bricks: the dots' diagonal within 1e-11 of 1) and the faces overlap by more
+// than round-off; elsewhere everything is measured as before.
+//
+// Why. For a unit axis L with components L_k = a_k . L, b_j . L = sum_k dots[k][j] L_k, so
+// |b_j . L| >= |dots[j][j]| |L_j| - sum_{k != j} |dots[k][j]| |L_k|, and b's half width along L,
+// sum_j hb_j |b_j . L|, is at least sum_k |L_k| (hb_k |dots[k][k]| - e_k), e_k = sum_{j != k} hb_j
+// |dots[k][j]|. With |centre . L| <= sum_k |centre_k| |L_k| and a's half width sum_k ha_k |L_k|,
+// L's separation is at most sum_k |L_k| (s_k + 2 e_k), s_k a's face separation along k (its
+// facing face's: |centre_k| - ha_k - b's reach). Every s_k is at most a's best, face_a_m = -F_a,
+// and every e_k at most E = sum_j hb_j sum_{k != j} |dots[k][j]|, so when T = face_a_m + 2 E < 0 no
+// axis separates by more than T (sum_k |L_k| >= 1). b's face axes are unit: each separates by at
+// most T. The search compares an edge axis's separation times its length l, and a_i x b_j (i != j)
+// has l >= |dots[j][j]| >= d, the diagonal's least |dot|: it separates by at most T l. So when
+// (T + clearly F_a) d <= -2 slack, no b face is apart or overlaps below clearly F_a (b is not the
+// reference, the face overlap is F_a) and no crossed edge axis is apart or above -clearly F_a l.
+// The slack, 4e-12 of the boxes' summed half lengths (their centres' offset is below twice that
+// where no face of a separates), covers the round-off of both sides' sums and the directions'
+// distance from orthonormal (each about 1e-16 relative) a thousand times over; it sends a pair
+// whose faces touch to round-off (F_a near 1e-16 m, where the axes' own round-off decides) to the
+// full test, which chooses there as before.
+bool aligned_beyond_round_off(const BoxPair& pair, const Vec3& ha, const Vec3& hb, double face_a_m, double clearly) {
+    const double slack_m = 4e-12 * (ha.x + ha.y + ha.z + hb.x + hb.y + hb.z);
+    const double least_separation_m = clearly * face_a_m;  // -clearly F_a
+    // T + clearly F_a <= (1 - clearly) face_a_m first: most pairs that fail, fail here (faces
+    // touching to round-off).
+    if (face_a_m - least_separation_m > -2.0 * slack_m) return false;
+    const auto& d = pair.abs_dots;
+    const double crossed_m = hb.x * (d[1][0] + d[2][0]) + hb.y * (d[0][1] + d[2][1]) + hb.z * (d[0][2] + d[1][2]);  // E
+    const double least_diagonal = std::min(std::min(d[0][0], d[1][1]), d[2][2]);
+    return (face_a_m + 2.0 * crossed_m - least_separation_m) * least_diagonal <= -2.0 * slack_m;
+}
+
+EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair, bool aligned,
                        double least_separation_m, bool& apart) {
     const Vec3 ha = a.box->half_lengths_m;
     const Vec3 hb = b.box->half_lengths_m;
     EdgeSearch search{pair, {ha.x, ha.y, ha.z}, {hb.x, hb.y, hb.z}, least_separation_m, EdgeAxis{}};
-    // In the order (0,0), (0,1), ... (2,2), the first separating axis ending the search.
-    apart = search.apart_along<0, 0>() || search.apart_along<0, 1>() || search.apart_along<0, 2>() ||
-            search.apart_along<1, 0>() || search.apart_along<1, 1>() || search.apart_along<1, 2>() ||
-            search.apart_along<2, 0>() || search.apart_along<2, 1>() || search.apart_along<2, 2>();
+    // In the order (0,0), (0,1), ... (2,2), the first separating axis ending the search; only the
+    // diagonal's three, in the same order, where the crossed ones are shown to lose (aligned_beyond_
+    // round_off): the same choice, as an axis that neither separates nor can be taken never decides it.
+    if (aligned)
+        apart = search.apart_along<0, 0>() || search.apart_along<1, 1>() || search.apart_along<2, 2>();
+    else
+        apart = search.apart_along<0, 0>() || search.apart_along<0, 1>() || search.apart_along<0, 2>() ||
+                search.apart_along<1, 0>() || search.apart_along<1, 1>() || search.apart_along<1, 2>() ||
+                search.apart_along<2, 0>() || search.apart_along<2, 1>() || search.apart_along<2, 2>();
     EdgeAxis best = search.best;
     if (!apart && best.separation_m > -std::numeric_limits<double>::infinity()) {
         // The world axis, only for the one kept, turned towards b by the world offset. Not by the
@@ -447,15 +497,21 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     const BoxPair pair = boxes ? box_pair(a, b) : BoxPair{};
     const FaceAxis face_a = boxes ? box_face_axis(a, b, pair, true, apart) : best_face_axis(a, b, apart);
     if (apart) return 0;
-    const FaceAxis face_b = boxes ? box_face_axis(b, a, pair, false, apart) : best_face_axis(b, a, apart);
-    if (apart) return 0;
-    const std::size_t first = out.size();
     // Overlaps (>= 0); a candidate replaces the preferred one only when it is clearly smaller.
     constexpr double clearly = 0.95;
-    const bool use_b = -face_b.separation_m < clearly * -face_a.separation_m;
+    // Two boxes turned alike, overlapping beyond round-off: b's faces shown to lose unmeasured.
+    const bool aligned =
+        boxes && aligned_beyond_round_off(pair, a.box->half_lengths_m, b.box->half_lengths_m, face_a.separation_m,
+                                          clearly);
+    const FaceAxis face_b = aligned ? FaceAxis{}
+                            : boxes ? box_face_axis(b, a, pair, false, apart)
+                                    : best_face_axis(b, a, apart);
+    if (apart) return 0;
+    const std::size_t first = out.size();
+    const bool use_b = !aligned && -face_b.separation_m < clearly * -face_a.separation_m;
     const double face_overlap_m = use_b ? -face_b.separation_m : -face_a.separation_m;
-    const EdgeAxis edge =
-        boxes ? box_edge_axis(a, b, pair, -clearly * face_overlap_m, apart) : best_edge_axis(a, b, apart);
+    const EdgeAxis edge = boxes ? box_edge_axis(a, b, pair, aligned, -clearly * face_overlap_m, apart)
+                                : best_edge_axis(a, b, apart);
     if (apart) return 0;
     const bool use_edge = -edge.separation_m < clearly * face_overlap_m;
     if (!use_edge || !edge_contact(a, b, edge, out)) {
@@ -473,30 +529,41 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     const auto key = [](const ContactGeometry3d& g) {
         return (static_cast<std::uint64_t>(g.feature_a) << 32) | g.feature_b;
     };
+    // The insertion runs from the right: each point goes into the sorted run after it. The same
+    // order as from the left (a stable sort's order is unique), with fewer moves on a wall: its
+    // face clips mostly give the points one step round from key order (a corner of the incident
+    // face first, then the crossings, then the other corners), which from the left moves every
+    // point but the first (9 copies of a 72-byte point for 4 points) and from the right moves the
+    // first point alone (5).
     // A key found twice (a reference corner found from both its sides, two corners at one place)
-    // is seen by the sort itself: after a stable insertion equal keys are neighbours, and each
-    // point's final left neighbour is the one it was last compared with (the point it stopped at,
-    // or its predecessor when already in order), so comparing for equality there finds every
-    // duplicate. Without one the points are final as sorted, and the merge pass is skipped.
+    // is seen by the sort itself: equal keys end as neighbours, a point placed left of its equal
+    // (a point goes before the first key not below its own), and no key can come between them
+    // afterwards; so comparing for equality with the right neighbour where a point is placed finds
+    // every duplicate. Without one the points are final as sorted, and the merge pass is skipped.
     const auto begin = out.begin() + static_cast<std::ptrdiff_t>(first);
+    const auto end = out.end();
     bool duplicate = false;
-    // The largest key so far, the last point's (an insertion leaves it last): read once a point.
-    std::uint64_t before = begin != out.end() ? key(*begin) : 0;
-    for (auto it = begin + (begin != out.end()); it != out.end(); ++it) {
-        const std::uint64_t k = key(*it);
-        if (before <= k) {
-            duplicate |= before == k;
-            before = k;
-            continue;
+    if (end - begin > 1) {
+        // The least key of the sorted run, its first point's.
+        std::uint64_t least = key(*(end - 1));
+        for (auto it = end - 1; it != begin;) {
+            --it;
+            const std::uint64_t k = key(*it);
+            if (k <= least) {
+                duplicate |= k == least;
+                least = k;
+                continue;
+            }
+            const ContactGeometry3d moved = *it;
+            auto hole = it;
+            do {
+                *hole = *(hole + 1);
+                ++hole;
+            } while (hole + 1 != end && key(*(hole + 1)) < k);
+            duplicate |= hole + 1 != end && key(*(hole + 1)) == k;
+            *hole = moved;
+            least = key(*it);
         }
-        const ContactGeometry3d moved = *it;
-        auto hole = it;
-        do {
-            *hole = *(hole - 1);
-            --hole;
-        } while (hole != begin && key(*(hole - 1)) > k);
-        duplicate |= hole != begin && key(*(hole - 1)) == k;
-        *hole = moved;
     }
     // The first of equal keys stands for them, with all their shares. A point is moved only once a
     // duplicate went before it.

@@ -26,6 +26,17 @@ inline Quaternion normalized(Quaternion q) {
     return {q.w / l, q.x / l, q.y / l, q.z / l};
 }
 
+/// q at unit length when it is within round-off of it, as the product of two unit quaternions is:
+/// |q|^2 = 1 + e, and the Newton step (3 - |q|^2) / 2 for 1/sqrt(|q|^2) is off by 3 e^2 / 8, below
+/// 1e-30 for e of round-off's 1e-15, so no square root nor division is needed (the drift of each
+/// body, each step). Further from unit length (|e| > 1e-8) it is normalized as by normalized().
+inline Quaternion renormalized(Quaternion q) {
+    const double n2 = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+    if (std::abs(n2 - 1.0) > 1e-8) return normalized(q);
+    const double s = 1.5 - 0.5 * n2;
+    return {s * q.w, s * q.x, s * q.y, s * q.z};
+}
+
 /// The vector v (body frame) turned into the world frame by the unit quaternion q.
 constexpr Vec3 rotate(Quaternion q, Vec3 v) {
     // v + 2 w (u x v) + 2 u x (u x v), u the vector part: fewer products than q v q*.

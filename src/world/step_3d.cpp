@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #ifdef _OPENMP
@@ -59,45 +60,114 @@ void size_pose_arrays(World3d& w) {
     s.world_vertices_m.resize(s.vertex_start[n]);
     s.world_normals.resize(s.face_start[n]);
     s.world_directions.resize(s.direction_start[n]);
+    s.body_directions.resize(s.direction_start[n]);
+    for (std::size_t i = 0; i < n; ++i)
+        std::copy(w.edges[i].directions.begin(), w.edges[i].directions.end(), &s.body_directions[s.direction_start[i]]);
     s.angular_velocity_world_rad_s.resize(n);
     s.rotations.resize(n);
     s.boxes.resize(n);
     s.is_static.resize(n);
+    s.posed.resize(n);
 }
 
-// A box's 8 corners, centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 with d_i its world directions,
-// written in its vertex order, and its bounding box, centre +/- sum h_i |d_i|. Why: 9 products
-// and 42 sums for the corners where turning each vertex costs 15 operations (120 a box), and
-// 15 for the box where the corners' minima and maxima cost 42. The corners are the box the
-// narrow phase tests (geometry/box_frame_3d.hpp: its separating axes use h_i and d_i), and they
-// differ from the turned vertices only by round-off and by the 1e-12 of the box's size that
-// box_frame allows a vertex off its corner.
-Aabb3d pose_box_corners(const BoxFrame3d& frame, Vec3 centre_m, const Vec3* directions, Vec3* vertices_m) {
-    const Vec3 a = frame.half_lengths_m.x * directions[0];
-    const Vec3 b = frame.half_lengths_m.y * directions[1];
-    const Vec3 c = frame.half_lengths_m.z * directions[2];
-    // Corner k: bit i of k set on the + side of direction i, as BoxFrame3d::vertex_corner.
-    const Vec3 along_c[2] = {centre_m - c, centre_m + c};
-    const Vec3 along_bc[4] = {along_c[0] - b, along_c[0] + b, along_c[1] - b, along_c[1] + b};
-    Vec3 corners[8];
+// A vector with its x and y in the two lanes of one 16-byte register and its z apart: the
+// pose's sums and products then take two operations a vector where Vec3's take three (the build
+// has no -march: scalar SSE2, one operation an instruction). Each lane rounds as the scalar
+// expression written the same way (laws/double_lanes.hpp), so the results are Vec3's bits.
+struct PackedVec3 {
+    DoubleLanes xy;
+    double z;
+};
+inline PackedVec3 packed(Vec3 v) { return {lanes(v.x, v.y), v.z}; }
+inline PackedVec3 operator+(const PackedVec3& a, const PackedVec3& b) { return {a.xy + b.xy, a.z + b.z}; }
+inline PackedVec3 operator-(const PackedVec3& a, const PackedVec3& b) { return {a.xy - b.xy, a.z - b.z}; }
+inline PackedVec3 operator*(double s, const PackedVec3& a) { return {lanes(s) * a.xy, s * a.z}; }
+inline void store(const PackedVec3& a, Vec3* to) {
+    std::memcpy(to, &a.xy, sizeof(a.xy));  // x and y, the first 16 bytes of a Vec3
+    to->z = a.z;
+}
+inline PackedVec3 absolute(const PackedVec3& a) { return {lane_max(a.xy, -a.xy), std::abs(a.z)}; }
+
+// The rotation matrix by columns, packed: R v = c0 v.x + c1 v.y + c2 v.z, summed in Matrix3d's
+// order, so the same bits as rotation * v.
+struct PackedRotation {
+    PackedVec3 columns[3];
+};
+inline PackedRotation packed(const Matrix3d& r) {
+    return {{packed(r.column(0)), packed(r.column(1)), packed(r.column(2))}};
+}
+inline PackedVec3 operator*(const PackedRotation& r, Vec3 v) {
+    return v.x * r.columns[0] + v.y * r.columns[1] + v.z * r.columns[2];
+}
+
+// The 8 corners centre +/- a +/- b +/- c, corner k on the + side of a when bit 0 of k is set, of
+// b for bit 1, of c for bit 2 (BoxFrame3d::vertex_corner's numbering). Inlined at both calls:
+// called, its arguments went through memory (116 instructions a box where 66 do the work).
+[[gnu::always_inline]] inline void box_corners(const PackedVec3& centre_m, const PackedVec3& a, const PackedVec3& b,
+                                               const PackedVec3& c, Vec3* corners) {
+    const PackedVec3 along_c[2] = {centre_m - c, centre_m + c};
+    const PackedVec3 along_bc[4] = {along_c[0] - b, along_c[0] + b, along_c[1] - b, along_c[1] + b};
     for (std::size_t k = 0; k < 4; ++k) {
-        corners[2 * k] = along_bc[k] - a;
-        corners[2 * k + 1] = along_bc[k] + a;
+        store(along_bc[k] - a, &corners[2 * k]);
+        store(along_bc[k] + a, &corners[2 * k + 1]);
     }
-    // A local copy: the stores below could alias the frame's bytes, which would then be read again.
-    const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
-    for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[corner_of[k]];
-    const Vec3 reach{std::abs(a.x) + std::abs(b.x) + std::abs(c.x), std::abs(a.y) + std::abs(b.y) + std::abs(c.y),
-                     std::abs(a.z) + std::abs(b.z) + std::abs(c.z)};
-    return {centre_m - reach, centre_m + reach};
 }
 
-// Any other polyhedron's vertices turned by the matrix, and their bounding box.
-Aabb3d pose_vertices(const Matrix3d& rotation, Vec3 centre_m, const std::vector<Vec3>& body_vertices_m,
-                     Vec3* vertices_m) {
+// A box posed from its orientation's matrix: its 3 world edge directions d_i, its 8 corners
+// centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 in its vertex order, its 6 face normals, and its
+// bounding box centre +/- sum h_i |d_i|. Why: 9 products and 42 sums for the corners where
+// turning each vertex costs 15 operations (120 a box), and 15 for the bounding box where the
+// corners' minima and maxima cost 42. The corners are the box the narrow phase tests
+// (geometry/box_frame_3d.hpp: its separating axes use h_i and d_i), and they differ from the
+// turned vertices only by round-off and by the 1e-12 of the box's size that box_frame allows a
+// vertex off its corner. What the frame says is read into locals before it is needed after a
+// store: a store through the output pointers could alias the frame, which would then be read again.
+Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
+                const Polyhedron& shape, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
+    const PackedRotation turn = packed(rotation);
+    const PackedVec3 d[3] = {turn * body_directions[0], turn * body_directions[1], turn * body_directions[2]};
+    const Vec3 h = frame.half_lengths_m;
+    const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
+    // Turning -d gives exactly minus turning d (round-to-nearest is symmetric), so a normal that
+    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it. The
+    // normals are the first stores: the frame's signs and directions are each read once there,
+    // where a copy made before them cost a dozen instructions more.
+    if (frame.normals_are_directions) {
+        for (std::size_t k = 0; k < 6; ++k) store(frame.face_sign[k] * d[frame.face_direction[k]], &normals[k]);
+    } else {
+        for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * shape.face_normals[k];
+    }
+    for (std::size_t k = 0; k < 3; ++k) store(d[k], &directions[k]);
+    const PackedVec3 a = h.x * d[0];
+    const PackedVec3 b = h.y * d[1];
+    const PackedVec3 c = h.z * d[2];
+    const PackedVec3 centre = packed(centre_m);
+    // A box listed in corner order (as geometry/polyhedron.hpp's box_vertices lists it) takes its
+    // corners where they are made; another order goes through a copy (65 instructions a box).
+    constexpr std::array<std::uint8_t, 8> corner_order{0, 1, 2, 3, 4, 5, 6, 7};
+    if (corner_of == corner_order) {
+        box_corners(centre, a, b, c, vertices_m);
+    } else {
+        Vec3 corners[8];
+        box_corners(centre, a, b, c, corners);
+        for (std::size_t k = 0; k < 8; ++k) vertices_m[k] = corners[corner_of[k]];
+    }
+    const PackedVec3 reach = absolute(a) + absolute(b) + absolute(c);
+    Aabb3d box;
+    store(centre - reach, &box.lo);
+    store(centre + reach, &box.hi);
+    return box;
+}
+
+// Any other polyhedron's vertices, normals and edge directions turned by the matrix, and its
+// bounding box.
+Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron& shape, const PolyhedronEdges& edges,
+                       Vec3* directions, Vec3* vertices_m, Vec3* normals) {
+    for (std::size_t k = 0; k < edges.directions.size(); ++k) directions[k] = rotation * edges.directions[k];
+    for (std::size_t k = 0; k < shape.face_normals.size(); ++k) normals[k] = rotation * shape.face_normals[k];
     Aabb3d box{centre_m, centre_m};
-    for (std::size_t k = 0; k < body_vertices_m.size(); ++k) {
-        const Vec3 v = centre_m + rotation * body_vertices_m[k];
+    for (std::size_t k = 0; k < shape.vertices_m.size(); ++k) {
+        const Vec3 v = centre_m + rotation * shape.vertices_m[k];
         vertices_m[k] = v;
         box.lo = {std::min(box.lo.x, v.x), std::min(box.lo.y, v.y), std::min(box.lo.z, v.z)};
         box.hi = {std::max(box.hi.x, v.x), std::max(box.hi.y, v.y), std::max(box.hi.z, v.z)};
@@ -105,45 +175,30 @@ Aabb3d pose_vertices(const Matrix3d& rotation, Vec3 centre_m, const std::vector<
     return box;
 }
 
-// Step 2: each body's vertices, normals and edge directions in the world frame, and its box,
-// from its orientation's matrix (one a body, kept for the kick).
+// Step 2: each body's vertices, normals and edge directions in the world frame, its box, and the
+// view of it the narrow phase reads (WorldScratch3d::posed, written here so that the bodies are
+// gone through once), from its orientation's matrix (one a body, kept for the kick and the
+// drift). What is read from the body is read before the first store, for pose_box's reason.
 void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
     const RigidBody3d& b = w.bodies[i];
     const Matrix3d rotation = rotation_matrix_by_products(b.orientation);
-    s.rotations[i] = rotation;
-    Vec3* directions = &s.world_directions[s.direction_start[i]];
+    const Vec3 centre_m = b.position_m;
+    // The drift turned the body about this axis, so its world direction is the same at both ends.
+    const Vec3 omega_world_rad_s = rotation * b.angular_velocity_body_rad_s;
+    const bool is_static = w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i);
     const BoxFrame3d& frame = w.box_frames[i];
+    const PolyhedronEdges& edges = w.edges[i];
+    Vec3* directions = &s.world_directions[s.direction_start[i]];
     Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
     Vec3* normals = &s.world_normals[s.face_start[i]];
-    if (frame.is_box) {
-        // Held in registers: a store through directions, vertices or normals could alias the
-        // frame or the edge directions, which the compiler would then read again.
-        const BoxFrame3d box = frame;
-        const Vec3 d[3] = {rotation * w.edges[i].directions[0], rotation * w.edges[i].directions[1],
-                           rotation * w.edges[i].directions[2]};
-        for (std::size_t k = 0; k < 3; ++k) directions[k] = d[k];
-        s.boxes[i] = pose_box_corners(box, b.position_m, d, vertices);
-        if (box.normals_are_directions) {
-            for (std::size_t k = 0; k < 6; ++k) normals[k] = box.face_sign[k] * d[box.face_direction[k]];
-        } else {
-            for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * b.shape.face_normals[k];
-        }
-    } else {
-        for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
-            directions[k] = rotation * w.edges[i].directions[k];
-        s.boxes[i] = pose_vertices(rotation, b.position_m, b.shape.vertices_m, vertices);
-        for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k) normals[k] = rotation * b.shape.face_normals[k];
-    }
-    // The drift turned the body about this axis, so its world direction is the same at both ends.
-    s.angular_velocity_world_rad_s[i] = rotation * b.angular_velocity_body_rad_s;
-    s.is_static[i] = w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i);
-}
-
-PosedPolyhedron posed(const World3d& w, std::uint32_t i) {
-    const WorldScratch3d& s = w.scratch;
-    return {&w.bodies[i].shape, &w.edges[i], &s.world_vertices_m[s.vertex_start[i]], &s.world_normals[s.face_start[i]],
-            s.world_directions.data() + s.direction_start[i], w.bodies[i].position_m, &w.box_frames[i]};
+    s.boxes[i] = frame.is_box ? pose_box(rotation, centre_m, frame, &s.body_directions[s.direction_start[i]], b.shape,
+                                         directions, vertices, normals)
+                              : pose_polyhedron(rotation, centre_m, b.shape, edges, directions, vertices, normals);
+    s.rotations[i] = rotation;
+    s.angular_velocity_world_rad_s[i] = omega_world_rad_s;
+    s.is_static[i] = is_static;
+    s.posed[i] = {&b.shape, &edges, vertices, normals, directions, centre_m, &frame};
 }
 
 // The mass a pair's dashpots use (docs/physics.md, "Which mass the damping uses").
@@ -228,10 +283,7 @@ void find_contacts(World3d& w) {
         });
     if (s.pair_points.size() < s.pairs.size()) s.pair_points.resize(s.pairs.size());
     if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
-    // Each body posed for the narrow phase once, not once for each pair side it is in.
-    s.posed.resize(w.bodies.size());
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { s.posed[i] = posed(w, static_cast<std::uint32_t>(i)); });
+    // s.posed: each body posed for the narrow phase once (pose_body), not once for each pair side.
     parallel_for(static_cast<std::ptrdiff_t>(s.pairs.size()), [&](std::ptrdiff_t k) {
         auto& points = s.pair_points[k];
         points.clear();
@@ -519,12 +571,11 @@ PairLanes pair_lanes(const PairMotion& m, const PairDashpots& d) {
     const Vec3Lanes dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
     const Vec3Lanes total = trial + dashpot;
     const DoubleLanes trial_squared = dot(trial, trial);
-    // The carried spring's square is taken as last step's: the carry keeps the length, to a few
-    // units in the last place where the normal turned by less than 45 degrees since (its square
-    // in the plane then over half the whole, so no cancellation): inside surely_within_below's
-    // margin of 1e-15. A larger turn leaves the straight line.
-    if (!both((spring_squared < within_below) & (spring_squared <= spring_in_plane_squared + spring_in_plane_squared) &
-              (trial_squared < within_below) &
+    // The carried spring's own square, as point_law tests it: last step's square is not a bound
+    // for it (the carry's rescale rounds it up by up to 14 units in the last place at a 45-degree
+    // turn, past surely_within_below's margin, so a spring at the cap would stick here and slide
+    // there).
+    if (!both((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
               (dot(total, total) < within_below)))
         return false;
     l.normal_dashpot_power_w += (lanes(p.normal_dashpot_n, q.normal_dashpot_n) + normal_dashpot_n) * normal_speed;

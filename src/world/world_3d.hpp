@@ -55,6 +55,8 @@ struct WorldScratch3d {
     std::vector<Vec3> world_vertices_m;       ///< [m]
     std::vector<Vec3> world_normals;
     std::vector<Vec3> world_directions;
+    std::vector<Vec3> body_directions;        ///< per body's direction_start run, its edge directions in the body frame
+                                              ///< (World3d::edges' copied once: the pose reads them with no pointer chase)
     std::vector<Vec3> angular_velocity_world_rad_s;  ///< [rad/s] per body, over the last step (the contact law's)
     std::vector<Matrix3d> rotations;          ///< per body, its orientation's matrix at t (the pose's; the kick's)
     std::vector<Aabb3d> boxes;
