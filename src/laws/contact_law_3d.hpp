@@ -1,0 +1,250 @@
+#pragma once
+// The 3-D contact law at the points of one pair (world/step_3d.cpp takes it pair by pair): the
+// normal spring-dashpot of the 2-D law (laws/linear_spring_dashpot.hpp) and the vector Coulomb
+// slider (laws/coulomb_slider_3d.hpp), term by term, at one point (point_law) or at two points at
+// once, one a lane (two_point_law, laws/double_lanes.hpp), where both stick well inside their
+// caps. In a header of its own so that a test can hold the two forms against each other.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "contact/contact_table_3d.hpp"
+#include "laws/contact_parameters.hpp"
+#include "laws/coulomb_slider_3d.hpp"
+#include "laws/double_lanes.hpp"
+#include "laws/linear_spring_dashpot.hpp"
+
+namespace blockdem::law_3d {
+
+// What a pair's points share, taken once a pair: the two bodies' motion (the dashpots and
+// stiffnesses are the points' own, by their stiffness shares). The relative velocity of b's material point at p to a's,
+//   v_b + w_b x (p - x_b) - v_a - w_a x (p - x_a) = base + (w_b - w_a) x (p - x_a),
+//   base = v_b - v_a + w_b x (x_a - x_b),
+// is then one cross product a point instead of two (the same to round-off; measured from a's
+// centroid, not the origin, so that no large coordinates cancel). A body that is not dynamic
+// moves without turning.
+struct PairMotion {
+    Vec3 base_velocity_m_s;  ///< [m/s]
+    Vec3 turn_rate_rad_s;    ///< [rad/s] w_b - w_a
+    Vec3 centroid_a_m;       ///< [m]
+};
+
+// What the law at a pair's points shares besides the motion: the parameters, and the dashpot
+// coefficients per unit of a point's stiffness share. A point of share w has kn w and ks w, and
+// its dashpot mass is w M / S (find_contacts), so its coefficient 2 h sqrt(w M / S k w) is w
+// times 2 h sqrt(k) sqrt(M / S): one root a pair for both dashpots, not two a point (where S = 0
+// every w is 0, and so is every coefficient).
+struct PairLaw {
+    double kn_N_m = 0.0;              ///< [N/m] a point's at share 1
+    double ks_N_m = 0.0;              ///< [N/m]
+    double cn_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_n sqrt(M kn / S)
+    double cs_per_share_N_s_m = 0.0;  ///< [N s/m] 2 h_s sqrt(M ks / S)
+    double ks_dt_N = 0.0;             ///< [N] ks dt: the trial's increment is ks w dt v_t
+    double mu = 0.0;
+    double dt_s = 0.0;                ///< [s]
+    ContactTermination termination = ContactTermination::no_tension;
+};
+
+// What the law's parameters give every pair, taken once a step: 2 h sqrt(k), so that a pair's
+// dashpot coefficient per share 2 h sqrt(M k / S) is it times sqrt(M / S), one root a pair.
+struct LawConstants {
+    PairLaw law;                     ///< its cn and cs per share not yet set
+    double cn_per_root_mass = 0.0;   ///< [N s/m / kg^0.5] 2 h_n sqrt(kn)
+    double cs_per_root_mass = 0.0;   ///< [N s/m / kg^0.5] 2 h_s sqrt(ks)
+    DoubleLanes kn_N_m{};            ///< [N/m] law's, in both lanes (two_point_law)
+    DoubleLanes ks_dt_N{};           ///< [N]
+    DoubleLanes mu{};
+    // The energy terms' common factors (pair_law), the same products a pair took, once a step.
+    double half_kn_N_m = 0.0;        ///< [N/m] 0.5 kn
+    double half_per_ks_m_N = 0.0;    ///< [m/N] 0.5 / ks, 0 where ks is 0 (no spring, no energy)
+    double minus_half_dt_s = 0.0;    ///< [s] -0.5 dt
+};
+
+// The law's constants for the parameters p at the step dt_s.
+inline LawConstants law_constants(const ContactParameters& p, double dt_s) {
+    return {{p.kn_N_m, p.ks_N_m, 0.0, 0.0, p.ks_N_m * dt_s, p.mu, dt_s, p.termination},
+            2.0 * p.h_n * std::sqrt(p.kn_N_m),
+            2.0 * p.h_s * std::sqrt(p.ks_N_m),
+            lanes(p.kn_N_m),
+            lanes(p.ks_N_m * dt_s),
+            lanes(p.mu),
+            0.5 * p.kn_N_m,
+            p.ks_N_m > 0.0 ? 0.5 / p.ks_N_m : 0.0,
+            -0.5 * dt_s};
+}
+
+// A pair's dashpot coefficients per share (PairLaw's two per-pair members): the pair's loop keeps
+// these two, and the whole PairLaw is made only where a point leaves the two-lane line
+// (one_point_law; copied at every pair it was 8 instructions a pair).
+struct PairDashpots {
+    double cn_per_share_N_s_m = 0.0;  ///< [N s/m]
+    double cs_per_share_N_s_m = 0.0;  ///< [N s/m]
+};
+
+// A pair's energy terms before their common factors: each point adds its own products, and the
+// pair multiplies them by 0.5 kn, 0.5 / ks and -0.5 dt once (a point's term
+// 0.5 (kn w) o^2 is 0.5 kn (w o^2), its spring's 0.5 |F_s|^2 / (ks w) is (0.5 / ks) (|F_s|^2 / w),
+// its dashpots' trapezoids -0.5 (D_before + D_now) . v dt: the same terms to round-off, fewer
+// operations a point).
+struct PairEnergySums {
+    double share_overlap_squared_m2 = 0.0;     ///< [m^2] sum of w o^2
+    double spring_squared_per_share_n2 = 0.0;  ///< [N^2] sum of |F_s|^2 / w over the points with w > 0
+    double normal_dashpot_power_w = 0.0;       ///< [W] sum of (D_n before + D_n now) v_n
+    double shear_dashpot_power_w = 0.0;        ///< [W] sum of (D_s before + D_s now) . v_t
+    double friction_j = 0.0;                   ///< [J] the sliding points' own (coulomb_slider_3d)
+};
+
+// The law at one point of a pair: its force and history into its own slot, its energy terms
+// added to e, its force returned (r: the point from a's centroid). The normal half of the 2-D law
+// (linear_spring_dashpot.hpp) and the vector slider (coulomb_slider_3d.hpp), term by term. The
+// common case, a point sticking well inside its cap (the spring carried, the trial and the total
+// all with squares below surely_within_below), is one straight line of arithmetic; any other
+// point takes coulomb_slider_3d itself. On the straight line the dashpot is -c_s w v_t and the
+// total trial plus it (the slider forms the total first and the dashpot as total minus trial:
+// the same to round-off).
+[[gnu::always_inline]] inline Vec3 point_law(const PairMotion& m, const PairLaw& law, ContactPoint3d& c, Vec3 r,
+                                             PairEnergySums& e) {
+    const double share = c.stiffness_share;
+    const double overlap_m = c.overlap_m;
+    const Vec3 normal = c.normal;
+    const Vec3 relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, r);
+    const double normal_speed = dot(relative, normal);
+    const Vec3 tangential = relative - normal_speed * normal;
+    // The normal half's own work term is left unused (the compiler drops it): e sums its factors.
+    ContactForce f;
+    normal_spring_dashpot(law.kn_N_m * share, law.cn_per_share_N_s_m * share, law.termination, overlap_m, normal_speed,
+                          c.normal_dashpot_n, law.dt_s, f);
+    const double normal_n = f.normal_n;
+    const double normal_dashpot_n = f.normal_dashpot_n;
+    e.normal_dashpot_power_w += (c.normal_dashpot_n + normal_dashpot_n) * normal_speed;
+    const ShearHistory3d carried = carry_to_normal_for_slider(c.shear, normal);
+    const double limit_n = law.mu * std::max(0.0, normal_n);
+    const double within_below = surely_within_below(limit_n);
+    const double ks_N_m = law.ks_N_m * share;
+    const Vec3 trial = carried.spring_n - (law.ks_dt_N * share) * tangential;
+    Vec3 dashpot = (-law.cs_per_share_N_s_m * share) * tangential;
+    Vec3 total = trial + dashpot;
+    Vec3 spring = trial;
+    bool sliding = false;
+    if (!(dot(carried.spring_n, carried.spring_n) < within_below && dot(trial, trial) < within_below &&
+          dot(total, total) < within_below)) {
+        const ShearForce3d s = coulomb_slider_3d(ks_N_m, law.cs_per_share_N_s_m * share, limit_n, tangential, carried,
+                                                 law.dt_s);
+        spring = s.spring_n;
+        total = s.total_n;
+        dashpot = s.dashpot_n;
+        sliding = s.sliding;
+        e.friction_j += s.friction_work_j;
+    }
+    e.shear_dashpot_power_w += dot(carried.dashpot_n + dashpot, tangential);
+    e.share_overlap_squared_m2 += share * overlap_m * overlap_m;
+    if (share > 0.0) e.spring_squared_per_share_n2 += dot(spring, spring) / share;
+    const Vec3 force_n = normal_n * normal + total;
+    c.normal_dashpot_n = normal_dashpot_n;
+    c.shear = {spring, dashpot};
+    c.sliding = sliding;
+    c.force_n = force_n;
+    return force_n;
+}
+
+// The sums of pair_law taken two points at a time, one lane a point: added up at the pair's end.
+struct PairLaneSums {
+    Vec3Lanes force_n;                               ///< [N]
+    Vec3Lanes torque_n_m;                            ///< [N m] about a's centroid
+    DoubleLanes share_overlap_squared_m2;            ///< [m^2] as PairEnergySums
+    DoubleLanes spring_squared_per_share_n2;         ///< [N^2]
+    DoubleLanes normal_dashpot_power_w;              ///< [W]
+    DoubleLanes shear_dashpot_power_w;               ///< [W]
+};
+
+// A pair's motion and dashpots in both lanes, made once a pair (a lane made from a double is a copy
+// and a shuffle: made a point, they were 19 instructions an iteration).
+struct PairLanes {
+    Vec3Lanes base_velocity_m_s;        ///< [m/s] PairMotion's
+    Vec3Lanes turn_rate_rad_s;          ///< [rad/s]
+    Vec3Lanes centroid_a_m;             ///< [m]
+    DoubleLanes cn_per_share_N_s_m;     ///< [N s/m] PairLaw's
+    DoubleLanes minus_cs_per_share_N_s_m;  ///< [N s/m]
+};
+
+inline PairLanes pair_lanes(const PairMotion& m, const PairDashpots& d) {
+    return {lanes(m.base_velocity_m_s), lanes(m.turn_rate_rad_s), lanes(m.centroid_a_m),
+            lanes(d.cn_per_share_N_s_m), lanes(-d.cs_per_share_N_s_m)};
+}
+
+// point_law's straight line at two points p and q of a pair at once, one lane each (the same
+// operations in the same order, so each lane's result is its point's own): the carries into the
+// normal's plane (carried_into_plane, carry_to_normal_for_slider, their roots taken in both lanes
+// and kept where their rule takes them), the normal half (normal_spring_dashpot), the cap's test
+// (surely_within_below). Writes both points and adds to l only where both stick inside their
+// caps; returns false, with nothing written, otherwise (point_law then takes each).
+[[gnu::always_inline]] inline bool two_point_law(const LawConstants& constants, const PairLanes& m,
+                                                 ContactPoint3d& p, ContactPoint3d& q, PairLaneSums& l) {
+    const DoubleLanes zero = lanes(0.0);
+    const DoubleLanes share = lanes(p.stiffness_share, q.stiffness_share);
+    const DoubleLanes overlap_m = lanes(p.overlap_m, q.overlap_m);
+    const Vec3Lanes normal = lanes(p.normal, q.normal);
+    const Vec3Lanes r = lanes(p.point_m, q.point_m) - m.centroid_a_m;
+    const Vec3Lanes relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, r);
+    const DoubleLanes normal_speed = dot(relative, normal);
+    const Vec3Lanes tangential = relative - normal_speed * normal;
+    // normal_spring_dashpot
+    const DoubleLanes spring_n = (constants.kn_N_m * share) * overlap_m;
+    const DoubleLanes spring_and_dashpot_n = spring_n - (m.cn_per_share_N_s_m * share) * normal_speed;
+    const DoubleLanes normal_n = constants.law.termination == ContactTermination::zero_overlap
+                                     ? spring_and_dashpot_n
+                                     : lane_max(zero, spring_and_dashpot_n);
+    const DoubleLanes normal_dashpot_n = normal_n - spring_n;
+    // carry_to_normal_for_slider: the spring laid into the plane, the dashpot scaled alike
+    const Vec3Lanes last_spring = lanes(p.shear.spring_n, q.shear.spring_n);
+    const DoubleLanes spring_along = dot(last_spring, normal);
+    const Vec3Lanes spring_in_plane = last_spring - spring_along * normal;
+    const DoubleLanes spring_squared = dot(last_spring, last_spring);
+    const DoubleLanes spring_in_plane_squared = spring_squared - spring_along * spring_along;
+    // carried_into_plane's ratio, 1 where the square in the plane is the whole square (its rule
+    // skips the root there, and sqrt(1) is 1), 0 where nothing is left in the plane.
+    const Vec3Lanes carried_spring =
+        select(spring_in_plane_squared > zero, lane_sqrt(spring_squared / spring_in_plane_squared), zero) *
+        spring_in_plane;
+    const Vec3Lanes last_dashpot = lanes(p.shear.dashpot_n, q.shear.dashpot_n);
+    const DoubleLanes dashpot_along = dot(last_dashpot, normal);
+    const DoubleLanes dashpot_squared = dot(last_dashpot, last_dashpot);
+    const DoubleLanes dashpot_in_plane_squared = dashpot_squared - dashpot_along * dashpot_along;
+    const Vec3Lanes carried_dashpot =
+        select(dashpot_in_plane_squared > zero, lane_sqrt(dashpot_squared / dashpot_in_plane_squared), zero) *
+        last_dashpot;
+    // the slider, sticking
+    const DoubleLanes limit_n = constants.mu * lane_max(zero, normal_n);
+    const DoubleLanes limit_squared = limit_n * limit_n;
+    const DoubleLanes within_below = select(limit_squared >= lanes(std::numeric_limits<double>::min()),
+                                            limit_squared * lanes(1.0 - 1e-15), lanes(-1.0));
+    const Vec3Lanes trial = carried_spring - (constants.ks_dt_N * share) * tangential;
+    const Vec3Lanes dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
+    const Vec3Lanes total = trial + dashpot;
+    const DoubleLanes trial_squared = dot(trial, trial);
+    // The carried spring's own square, as point_law tests it: last step's square is not a bound
+    // for it (the carry's rescale rounds it up by up to 14 units in the last place at a 45-degree
+    // turn, past surely_within_below's margin, so a spring at the cap would stick here and slide
+    // there).
+    if (!both((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
+              (dot(total, total) < within_below)))
+        return false;
+    l.normal_dashpot_power_w += (lanes(p.normal_dashpot_n, q.normal_dashpot_n) + normal_dashpot_n) * normal_speed;
+    l.shear_dashpot_power_w += dot(carried_dashpot + dashpot, tangential);
+    l.share_overlap_squared_m2 += share * overlap_m * overlap_m;
+    l.spring_squared_per_share_n2 += select(share > zero, trial_squared / share, zero);
+    const Vec3Lanes force_n = normal_n * normal + total;
+    l.force_n += force_n;
+    l.torque_n_m += cross(r, force_n);
+    p.normal_dashpot_n = normal_dashpot_n[0];
+    q.normal_dashpot_n = normal_dashpot_n[1];
+    p.shear = {lane(trial, 0), lane(dashpot, 0)};
+    q.shear = {lane(trial, 1), lane(dashpot, 1)};
+    p.sliding = false;
+    q.sliding = false;
+    p.force_n = lane(force_n, 0);
+    q.force_n = lane(force_n, 1);
+    return true;
+}
+
+}  // namespace blockdem::law_3d

@@ -1,0 +1,174 @@
+// The 3-D law's two forms held against each other (laws/contact_law_3d.hpp): two_point_law, the
+// straight line of a sticking point taken at two points at once, one a lane, must give each point
+// exactly what point_law (the straight line, or coulomb_slider_3d off it) gives it, wherever it
+// takes the two points; and it must leave to point_law every point that slides or reaches its
+// cap. The forces and the history carried to the next step are compared to the bit (each lane
+// rounds as the scalar expression written the same way); the energy sums to 1e-12 (the lanes add a
+// pair's terms lane by lane, point_law one point after the other: the same terms in another order).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <utility>
+
+#include "laws/contact_law_3d.hpp"
+
+namespace blockdem {
+namespace {
+
+using namespace law_3d;
+
+Vec3 unit(Vec3 v) { return (1.0 / length(v)) * v; }
+
+struct Case {
+    LawConstants constants;
+    PairMotion motion;
+    PairDashpots dashpots;
+    ContactPoint3d points[2];
+};
+
+// Two points of one pair, drawn in ten families: the plain case; no shear spring (ks = 0); no
+// friction (mu = 0); no shear dashpot; zero_overlap termination; normals turned up to 1.5 rad
+// since the history was laid into its plane; an overlap of a denormal; shares of 0 and 1e-12;
+// springs right at their caps; histories of zero.
+Case draw(std::mt19937_64& r, int family) {
+    std::uniform_real_distribution<double> u(-1, 1), u01(0, 1);
+    const double kn = 1e6 * (1 + u01(r)), ks = family == 1 ? 0.0 : 1e6 * u01(r), dt = 1e-5;
+    const double mu = family == 2 ? 0.0 : u01(r), hn = 0.3 * u01(r), hs = family == 3 ? 0.0 : 0.3 * u01(r);
+    ContactParameters p{.kn_N_m = kn, .ks_N_m = ks, .mu = mu, .h_n = hn, .h_s = hs};
+    p.termination = family == 4 ? ContactTermination::zero_overlap : ContactTermination::no_tension;
+    Case c;
+    c.constants = law_constants(p, dt);
+    const double root_mass = std::sqrt(1 + 10 * u01(r));  // sqrt(M / S) [kg^0.5]
+    c.dashpots = {c.constants.cn_per_root_mass * root_mass, c.constants.cs_per_root_mass * root_mass};
+    c.motion = {{1e-3 * u(r), 1e-3 * u(r), 1e-3 * u(r)}, {1e-2 * u(r), 1e-2 * u(r), 1e-2 * u(r)}, {u(r), u(r), u(r)}};
+    const Vec3 plane_normal = unit({u(r), u(r), u(r)});
+    for (ContactPoint3d& pt : c.points) {
+        pt.point_m = c.motion.centroid_a_m + Vec3{0.1 * u(r), 0.1 * u(r), 0.1 * u(r)};
+        const double turn = family == 5 ? 1.5 * u01(r) : 1e-6 * u01(r);
+        pt.normal = unit(plane_normal + Vec3{turn * u(r), turn * u(r), turn * u(r)});
+        pt.overlap_m = family == 6 ? 1e-320 : 1e-5 * u01(r);
+        pt.stiffness_share = family == 7 ? (u01(r) < 0.5 ? 0.0 : 1e-12) : u01(r);
+        pt.normal_dashpot_n = u(r);
+        Vec3 s{u(r), u(r), u(r)};
+        s = s - dot(s, plane_normal) * plane_normal;  // last step's plane
+        const double cap_n = mu * kn * pt.stiffness_share * pt.overlap_m;
+        s = (cap_n * (family == 8 ? 1.0 : u01(r)) / (length(s) + 1e-300)) * s;
+        if (family == 9 && u01(r) < 0.3) s = {};
+        pt.shear = {s, {1e-3 * u(r), 1e-3 * u(r), 1e-3 * u(r)}};
+    }
+    return c;
+}
+
+void expect_same_vector(Vec3 a, Vec3 b, const char* what) {
+    EXPECT_EQ(a.x, b.x) << what;
+    EXPECT_EQ(a.y, b.y) << what;
+    EXPECT_EQ(a.z, b.z) << what;
+}
+
+void expect_close(double lanes_sum, double scalar_sum, const char* what) {
+    EXPECT_NEAR(lanes_sum, scalar_sum, 1e-12 * std::abs(scalar_sum) + 1e-300) << what;
+}
+
+// Runs both forms on the case; returns whether the lanes took the two points.
+bool compare(const Case& c) {
+    ContactPoint3d lane_points[2] = {c.points[0], c.points[1]};
+    ContactPoint3d scalar_points[2] = {c.points[0], c.points[1]};
+    const PairLanes pair_lanes_now = pair_lanes(c.motion, c.dashpots);
+    PairLaneSums sums{};
+    if (!two_point_law(c.constants, pair_lanes_now, lane_points[0], lane_points[1], sums)) {
+        // Nothing written where the lanes leave the points to point_law.
+        for (int i = 0; i < 2; ++i) {
+            expect_same_vector(lane_points[i].shear.spring_n, c.points[i].shear.spring_n, "untouched spring");
+            EXPECT_EQ(lane_points[i].normal_dashpot_n, c.points[i].normal_dashpot_n);
+        }
+        return false;
+    }
+    PairLaw law = c.constants.law;
+    law.cn_per_share_N_s_m = c.dashpots.cn_per_share_N_s_m;
+    law.cs_per_share_N_s_m = c.dashpots.cs_per_share_N_s_m;
+    PairEnergySums e;
+    Vec3 force_n, torque_n_m;
+    for (ContactPoint3d& pt : scalar_points) {
+        const Vec3 r = pt.point_m - c.motion.centroid_a_m;
+        const Vec3 f = point_law(c.motion, law, pt, r, e);
+        force_n += f;
+        torque_n_m += cross(r, f);
+    }
+    for (int i = 0; i < 2; ++i) {
+        const ContactPoint3d& a = lane_points[i];
+        const ContactPoint3d& b = scalar_points[i];
+        EXPECT_FALSE(b.sliding) << "the lanes took a point the slider slides";
+        EXPECT_FALSE(a.sliding);
+        expect_same_vector(a.force_n, b.force_n, "force");
+        expect_same_vector(a.shear.spring_n, b.shear.spring_n, "shear spring");
+        expect_same_vector(a.shear.dashpot_n, b.shear.dashpot_n, "shear dashpot");
+        EXPECT_EQ(a.normal_dashpot_n, b.normal_dashpot_n);
+    }
+    EXPECT_EQ(e.friction_j, 0.0);
+    const Vec3 lane_force_n = lane_sum(sums.force_n);
+    const Vec3 lane_torque_n_m = lane_sum(sums.torque_n_m);
+    for (auto [a, b] : {std::pair{lane_force_n.x, force_n.x}, std::pair{lane_force_n.y, force_n.y},
+                        std::pair{lane_force_n.z, force_n.z}, std::pair{lane_torque_n_m.x, torque_n_m.x},
+                        std::pair{lane_torque_n_m.y, torque_n_m.y}, std::pair{lane_torque_n_m.z, torque_n_m.z}})
+        expect_close(a, b, "pair force and moment");
+    expect_close(lane_sum(sums.share_overlap_squared_m2), e.share_overlap_squared_m2, "w o^2");
+    expect_close(lane_sum(sums.spring_squared_per_share_n2), e.spring_squared_per_share_n2, "|F_s|^2 / w");
+    expect_close(lane_sum(sums.normal_dashpot_power_w), e.normal_dashpot_power_w, "normal dashpot power");
+    expect_close(lane_sum(sums.shear_dashpot_power_w), e.shear_dashpot_power_w, "shear dashpot power");
+    return true;
+}
+
+TEST(ContactLaw3d, TwoPointsInLanesAreEachPointsOwnLaw) {
+    std::mt19937_64 r(11);
+    int taken[10] = {};
+    constexpr int draws = 100000;
+    for (int k = 0; k < draws; ++k) {
+        const int family = k % 10;
+        if (compare(draw(r, family))) ++taken[family];
+        if (::testing::Test::HasFailure()) break;  // one case's report, not thousands
+    }
+    // Not a vacuous test: the lanes take a good part of the plain and the turned cases.
+    EXPECT_GT(taken[0], draws / 10 / 4);
+    EXPECT_GT(taken[5], draws / 10 / 10);
+    std::printf("lanes took %d of %d plain pairs, %d of %d with normals turned up to 1.5 rad\n", taken[0], draws / 10,
+                taken[5], draws / 10);
+}
+
+TEST(ContactLaw3d, ASpringAtItsCapAfterATurnIsLeftToTheSlider) {
+    // A history laid into a plane 43 degrees from this step's normal, its spring's length swept
+    // ulp by ulp through the cap mu kn o: the carry into the new plane rounds the length up by up
+    // to 14 ulps, so the lanes' cap test must be the carried spring's own square (last step's
+    // square let a spring at the cap stick in the lanes and slide in the slider, keeping a
+    // shear dashpot force the slider drops).
+    ContactParameters p{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = 0.0, .h_s = 0.0};
+    Case c;
+    c.constants = law_constants(p, 1e-6);
+    c.dashpots = {0.0, 2000.0};
+    const Vec3 last{-0.37700325163525505, -0.11769282325733366, -0.048260505954373922};
+    const Vec3 n{-0.75951379784397355, 0.3539625117994063, -0.54575574309875963};
+    const Vec3 carried = carried_into_plane(last, n);
+    // A slip that shrinks the carried spring by 1e-4 of its length in the step.
+    c.motion = {(1e-4 / (p.ks_N_m * 1e-6)) * carried, {}, {}};
+    double overlap_m = length(last) / p.mu / p.kn_N_m;
+    int taken = 0;
+    for (int i = 0; i < 4000; ++i, overlap_m = std::nextafter(overlap_m, 1.0)) {
+        for (ContactPoint3d& pt : c.points) {
+            pt = ContactPoint3d{};
+            pt.normal = n;
+            pt.overlap_m = overlap_m;
+            pt.stiffness_share = 1.0;
+            pt.shear = {last, {}};
+        }
+        if (compare(c)) ++taken;
+        if (::testing::Test::HasFailure()) {
+            ADD_FAILURE() << "at overlap " << overlap_m << " m (step " << i << " of the sweep)";
+            break;
+        }
+    }
+    EXPECT_GT(taken, 0);  // the sweep reaches caps the lanes take
+}
+
+}  // namespace
+}  // namespace blockdem
