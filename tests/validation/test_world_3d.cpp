@@ -141,25 +141,36 @@ TEST(World3d, ThreeDrumColumnStandsAtRestWithTheLedgerClosed) {
                 drift_m, turn_rad, speed_m_s, start[3].z - w.bodies[3].position_m.z, sink_m, w.ledger.balance_error());
 }
 
+// A 20 kg box 0.5 x 0.2 x 0.2 m falling flat at 1 m/s onto a fixed slab, 0.1 mm above it, no
+// gravity, dt = 1e-6 s, with the given contact; stepped until it has touched and left again (at
+// most 0.1 s), after_step(w) called after each step. Returns whether it touched.
+template <class AfterStep>
+bool flat_drop_on_a_fixed_box(World3d& w, const ContactParameters& contact, AfterStep after_step) {
+    w.contact = contact;
+    w.gravity_m_s2 = 0.0;
+    w.dt_s = 1e-6;
+    add_slab(w, BodyKind3d::fixed);
+    RigidBody3d b = box("box", {0.5, 0.2, 0.2}, {0.0, 0.0, 0.1 + 1e-4}, 20.0);
+    set_initial_velocity(b, {0.0, 0.0, -1.0}, {});
+    add_body(w, b, BodyKind3d::dynamic);
+    bool touched = false;
+    while (w.time_s < 0.1 && !(touched && w.contacts.empty())) {
+        step_3d(w);
+        touched = touched || !w.contacts.empty();
+        after_step(w);
+    }
+    return touched;
+}
+
 TEST(World3d, FlatDropOnAFixedBoxReboundsWithTheRequestedRestitution) {
     // tests/validation/test_table_contact_3d.cpp's setting, on a fixed box instead of the
     // half-space: no gravity, 1 m/s, kn = 1e6 N/m a point, dt = 1e-6 s. Tolerance 2%, the 2-D one.
     for (double e : {0.2, 0.6, 0.95}) {
         World3d w;
-        w.contact = {.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.0, .h_n = damping_ratio_rebound(e), .h_s = 0.0};
-        w.gravity_m_s2 = 0.0;
-        w.dt_s = 1e-6;
-        add_slab(w, BodyKind3d::fixed);
-        RigidBody3d b = box("box", {0.5, 0.2, 0.2}, {0.0, 0.0, 0.1 + 1e-4}, 20.0);
-        set_initial_velocity(b, {0.0, 0.0, -1.0}, {});
-        add_body(w, b, BodyKind3d::dynamic);
-        bool touched = false;
-        while (w.time_s < 0.1 && !(touched && w.contacts.empty())) {
-            step_3d(w);
-            touched = touched || !w.contacts.empty();
-            if (!w.contacts.empty()) EXPECT_EQ(w.contacts.size(), 4u);
-        }
-        ASSERT_TRUE(touched);
+        const ContactParameters contact{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.0, .h_n = damping_ratio_rebound(e), .h_s = 0.0};
+        ASSERT_TRUE(flat_drop_on_a_fixed_box(w, contact, [](const World3d& now) {
+            if (!now.contacts.empty()) EXPECT_EQ(now.contacts.size(), 4u);
+        }));
         const double measured = w.bodies[1].velocity_m_s.z;
         EXPECT_NEAR(measured, e, 0.02 * e);
         std::printf("flat drop on a box: e requested %.2f, measured %.5f\n", e, measured);
@@ -177,22 +188,12 @@ TEST(World3d, FlatDropWithZeroOverlapTerminationReboundsWithThePapersE) {
     for (double e : {0.3, 0.7}) {
         World3d w;
         const double h = damping_ratio_paper(e);
-        w.contact = {.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = h, .h_s = 0.0};
-        w.contact.termination = ContactTermination::zero_overlap;
-        w.gravity_m_s2 = 0.0;
-        w.dt_s = 1e-6;
-        add_slab(w, BodyKind3d::fixed);
-        RigidBody3d b = box("box", {0.5, 0.2, 0.2}, {0.0, 0.0, 0.1 + 1e-4}, 20.0);
-        set_initial_velocity(b, {0.0, 0.0, -1.0}, {});
-        add_body(w, b, BodyKind3d::dynamic);
-        bool touched = false;
+        ContactParameters contact{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = h, .h_s = 0.0};
+        contact.termination = ContactTermination::zero_overlap;
         double least_force_n = 0.0;
-        while (w.time_s < 0.1 && !(touched && w.contacts.empty())) {
-            step_3d(w);
-            touched = touched || !w.contacts.empty();
-            for (const ContactPoint3d& c : w.contacts) least_force_n = std::min(least_force_n, c.force_n.z);
-        }
-        ASSERT_TRUE(touched);
+        ASSERT_TRUE(flat_drop_on_a_fixed_box(w, contact, [&](const World3d& now) {
+            for (const ContactPoint3d& c : now.contacts) least_force_n = std::min(least_force_n, c.force_n.z);
+        }));
         const double rebound = w.bodies[1].velocity_m_s.z;
         EXPECT_NEAR(rebound, e, 0.003 * e);
         EXPECT_NEAR(rebound, restitution_of(h, ContactTermination::zero_overlap), 0.003 * e);
