@@ -212,7 +212,7 @@ void check_dimension(const StateFile& file, const std::filesystem::path& scenari
 void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
     check_dimension(file, scenario);
     read_bodies(file, scenario, w);
-    w.contacts = read_contacts(file.root().open_group("contacts3d"), w.bodies.size());
+    replace_contacts(w, read_contacts(file.root().open_group("contacts3d"), w.bodies.size()));
     // As settling ends (world/settling_3d.cpp): the velocities at the state's time become the
     // initial ones, and the first step is the half step from an initial state.
     for (std::size_t i = 0; i < w.bodies.size(); ++i)
@@ -233,7 +233,7 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
         throw InputError(where, fmt::format("the state was saved with dt = {:.17g} s, scenario {} gives dt = {:.17g} s: a "
                                             "restart keeps the time step",
                                             dt_s, scenario.string(), w.dt_s));
-    w.contacts = read_contacts(root.open_group("contacts3d"), w.bodies.size());
+    replace_contacts(w, read_contacts(root.open_group("contacts3d"), w.bodies.size()));
     w.ledger = read_ledger(root.open_group("energy"));
     w.stability = read_stability(root.open_group("stability3d"));
     if (root.has("domain3d")) read_domain(root.open_group("domain3d"), w);  // (files of earlier versions lack it)

@@ -4,6 +4,7 @@
 // counterpart of world/world.hpp; the step is world/step_3d.hpp.
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "broad_phase/grid_broad_phase_3d.hpp"
@@ -126,5 +127,15 @@ Momentum3d momentum(const World3d& w);
 
 /// Bytes the world holds (bodies, shapes, edges, contacts and scratch), for the memory per body.
 std::size_t memory_bytes(const World3d& w);
+
+/// Sets the contact table from outside the step (a state file read), with what the step keeps
+/// about the table it left: nothing. The step looks for a pair's run of last step's points where
+/// last step's pair of the same rank began, and trusts that place to start a run
+/// (contact/contact_table_3d.hpp); offsets into another table would drop history.
+inline void replace_contacts(World3d& w, std::vector<ContactPoint3d> contacts) {
+    w.contacts = std::move(contacts);
+    w.scratch.run_starts.clear();
+    w.scratch.previous_run_starts.clear();
+}
 
 }  // namespace blockdem

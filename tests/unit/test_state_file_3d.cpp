@@ -23,7 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // A block tilted on a shaken slab: it rocks and slides, so every kind of history is live.
-LoadedScenario3d load(const std::string& block_name = "block", const std::string& dt = "") {
+// extra_bodies: more [[bodies]] tables, appended.
+LoadedScenario3d load(const std::string& block_name = "block", const std::string& dt = "",
+                      const std::string& extra_bodies = "") {
     const std::string text = fmt::format(R"(dimension = 3
 [simulation]
 duration = 0.2
@@ -55,8 +57,9 @@ type = "sine"
 amplitude = 0.3
 unit = "g"
 period = 0.07
+{}
 )",
-                                         dt, block_name);
+                                         dt, block_name, extra_bodies);
     return load_scenario_3d(toml::parse(text), "state_3d.toml", {});
 }
 
@@ -130,6 +133,46 @@ TEST_F(StateFile3dTest, ARestoredWorldGoesOnBitForBit) {
     EXPECT_TRUE(same_bits(a.ledger.friction_j, b.ledger.friction_j));
     EXPECT_TRUE(same_bits(whole_monitor.bodies()[1].peak_tilt_rad, second_monitor.bodies()[1].peak_tilt_rad));
     EXPECT_TRUE(same_bits(whole_monitor.bodies()[1].peak_slip_m, second_monitor.bodies()[1].peak_slip_m));
+}
+
+TEST_F(StateFile3dTest, AWorldThatSteppedBeforeTheRestoreGoesOnAsTheWholeRun) {
+    // A caller that ran a world and then restores a saved state into it (going back to a
+    // checkpoint): what the step kept about its own last table (where each pair's run began)
+    // must not be taken for the restored table's, or the points of a pair before that place lose
+    // their history. The block and a two-box stack beside it, so that several pairs touch and
+    // their runs sit at other places in the two tables; saved after 350 steps, restored into
+    // worlds that stepped 37 to 420 steps, then 200 steps against the whole run of 550.
+    const std::string stack = R"([[bodies]]
+name = "lower"
+shape = "box"
+size = [0.3, 0.2, 0.2]
+position = [1.0, 0.0, 0.1]
+density = 2000.0
+[[bodies]]
+name = "upper"
+shape = "box"
+size = [0.3, 0.2, 0.2]
+position = [1.0, 0.0, 0.3]
+density = 2000.0)";
+    LoadedScenario3d whole = load("block", "", stack);
+    ResponseMonitor3d whole_monitor(whole.world);
+    advance(whole.world, whole_monitor, 550);
+    LoadedScenario3d first = load("block", "", stack);
+    ResponseMonitor3d first_monitor(first.world);
+    const StateFile state(save_after(first, first_monitor, 350));
+    for (int before : {37, 100, 173, 420}) {
+        LoadedScenario3d again = load("block", "", stack);
+        ResponseMonitor3d monitor(again.world);
+        advance(again.world, monitor, before);
+        restore_world_3d(state, again.world, "state_3d.toml");
+        advance(again.world, monitor, 200);
+        for (std::size_t i = 0; i < whole.world.bodies.size(); ++i) {
+            const Vec3 p = whole.world.bodies[i].position_m;
+            const Vec3 q = again.world.bodies[i].position_m;
+            EXPECT_TRUE(same_bits(p.x, q.x) && same_bits(p.y, q.y) && same_bits(p.z, q.z))
+                << whole.world.bodies[i].name << ", restored into a world that stepped " << before << " steps";
+        }
+    }
 }
 
 TEST_F(StateFile3dTest, AStateOfAnotherScenarioIsRefusedNamingTheFile) {
