@@ -40,13 +40,8 @@ struct RectangleInFrame {
     RectangleSide sides[4];
 };
 
-// The frame, the rectangle in it and the polygon's first form, the incident face's corners in
-// clip.buffers[0]: what both clips start from. Returns the incident face's corner count.
-// fixed_count: the incident face's corner count when known at compile time (a box face's 4, for
-// a loop the compiler unrolls), 0 when read from the face.
-template <std::size_t fixed_count>
-std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                               std::uint32_t inc_face, BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
+// The frame and the rectangle in it: what both clips start from.
+[[gnu::always_inline]] inline void load_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
     // The frame: origin at the face's corner 0, e_u one of the box's directions in the face's
     // plane, e_v = n x e_u, so that (e_u, e_v, n) is right-handed as the general clip's sides assume.
     const auto& ref_corners = ref.shape->faces[ref_face];
@@ -74,30 +69,77 @@ std::size_t load_incident_face(const PosedPolyhedron& ref, std::uint32_t ref_fac
                                             corner_v[k_next]);
     }
     clip.origin_m = origin_m;
+}
+
+// Corner k of the incident face as the polygon's first form holds it: at (u, v, w), the face's
+// own corner, on the reference face, running along the face's edge k to the next corner.
+[[gnu::always_inline]] inline FaceCorner incident_corner(const PosedPolyhedron& inc, std::uint32_t inc_face, std::uint32_t ref_face, std::size_t k,
+                           double u_m, double v_m, double w_m) {
+    return {u_m,
+            v_m,
+            w_m,
+            feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(inc.shape->faces[inc_face][k])),
+            feature_3d(FeatureKind3d::face, ref_face),
+            feature_3d(FeatureKind3d::edge, inc.edges->face_edges[inc_face][k]),
+            false};
+}
+
+// The polygon's first form, the incident face's corners in clip.buffers[0] (the frame loaded).
+// Returns the incident face's corner count.
+std::size_t load_incident_face(std::uint32_t ref_face, const PosedPolyhedron& inc, std::uint32_t inc_face,
+                               BoxFaceClip3d& clip) {
     FaceCorner* polygon = clip.buffers[0].data();
     const auto& inc_corners = inc.shape->faces[inc_face];
-    const std::size_t count = fixed_count != 0 ? fixed_count : inc_corners.size();
+    const std::size_t count = inc_corners.size();
     for (std::size_t k = 0; k < count; ++k) {
-        const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
-        polygon[k] = {dot(r, e_u),
-                      dot(r, e_v),
-                      dot(r, n),
-                      feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(inc_corners[k])),
-                      feature_3d(FeatureKind3d::face, ref_face),
-                      feature_3d(FeatureKind3d::edge, inc.edges->face_edges[inc_face][k]),
-                      false};
+        const Vec3 r = inc.vertices_m[inc_corners[k]] - clip.origin_m;
+        polygon[k] = incident_corner(inc, inc_face, ref_face, k, dot(r, clip.e_u), dot(r, clip.e_v), dot(r, clip.n));
     }
     return count;
 }
 
-// The crossing of the polygon's side from here to next with a side plane, here's height dh and
-// next's dn on either side of the slack: one formula for both clips, so that they agree to the bit.
-void set_crossing(const FaceCorner& here, const FaceCorner& next, double dh, double dn, FaceCorner& c) {
+// A box's face of 4 corners in the frame: their coordinates alone. Why: the one pass decides
+// from the coordinates, and a corner's record (its keys) is written once, where the polygon it
+// ends in is (docs/performance.md, "Branch face5"), not first in the first form and then copied.
+struct FourCorners {
+    double u_m[4];  ///< [m]
+    double v_m[4];  ///< [m]
+    double w_m[4];  ///< [m]
+};
+
+[[gnu::always_inline]] inline FourCorners load_four_corners(const PosedPolyhedron& inc, std::uint32_t inc_face, const BoxFaceClip3d& clip) {
+    FourCorners face;
+    const auto& inc_corners = inc.shape->faces[inc_face];
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Vec3 r = inc.vertices_m[inc_corners[k]] - clip.origin_m;
+        face.u_m[k] = dot(r, clip.e_u);
+        face.v_m[k] = dot(r, clip.e_v);
+        face.w_m[k] = dot(r, clip.n);
+    }
+    return face;
+}
+
+// The first form of a face of 4 corners, for the passes.
+void write_four_corners(const PosedPolyhedron& inc, std::uint32_t inc_face, std::uint32_t ref_face,
+                        const FourCorners& face, BoxFaceClip3d& clip) {
+    for (std::size_t k = 0; k < 4; ++k)
+        clip.buffers[0][k] = incident_corner(inc, inc_face, ref_face, k, face.u_m[k], face.v_m[k], face.w_m[k]);
+}
+
+// The crossing of the polygon's side from here (u, v, w) to next with a side plane, here's height
+// dh and next's dn on either side of the slack: one formula for both clips, so that they agree to
+// the bit.
+void set_crossing(double here_u_m, double here_v_m, double here_w_m, double next_u_m, double next_v_m,
+                  double next_w_m, double dh, double dn, FaceCorner& c) {
     // On the plane itself: the slack decides in or out, not where the crossing is.
     const double t = std::clamp(dh / (dh - dn), 0.0, 1.0);
-    c.u_m = here.u_m + t * (next.u_m - here.u_m);
-    c.v_m = here.v_m + t * (next.v_m - here.v_m);
-    c.w_m = here.w_m + t * (next.w_m - here.w_m);
+    c.u_m = here_u_m + t * (next_u_m - here_u_m);
+    c.v_m = here_v_m + t * (next_v_m - here_v_m);
+    c.w_m = here_w_m + t * (next_w_m - here_w_m);
+}
+
+void set_crossing(const FaceCorner& here, const FaceCorner& next, double dh, double dn, FaceCorner& c) {
+    set_crossing(here.u_m, here.v_m, here.w_m, next.u_m, next.v_m, next.w_m, dh, dn, c);
 }
 
 // The Sutherland-Hodgman clip of the loaded face (clip.buffers[0], count corners), side by side.
@@ -159,29 +201,30 @@ bool clip_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, std::uin
 }
 
 // The clip in one pass, where it gives the passes' polygon to the bit: when at most one side
-// cuts the loaded face (has a corner beyond its slack). The sides before it then skip, as the
-// passes do (the same heights, the same test); the cut is the passes' own cut of the incident
-// face's corners (the same formula on the same heights); the sides after it skip only if the
-// cut's new corners are inside them, which is decided without computing their heights there:
-// a new corner lies on a side of the face between two of its corners, to round-off (a few
-// 1e-16 of the largest coordinate), so if every corner is inside those sides by half their slack
-// and that half exceeds 1e-12 of the coordinates, so is every new corner. Returns false, clip
-// untouched but for its frame and buffers[0], when it cannot say: the passes then decide (a cut
-// by two sides, a corner within half a slack of a side that does not cut).
-template <std::size_t count>
-bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const RectangleInFrame& rectangle,
+// cuts the face (has a corner beyond its slack). The sides before it then skip, as the passes do
+// (the same heights, the same test); the cut is the passes' own cut of the incident face's
+// corners (the same formula on the same heights); the sides after it skip only if the cut's new
+// corners are inside them, which is decided without computing their heights there: a new corner
+// lies on a side of the face between two of its corners, to round-off (a few 1e-16 of the largest
+// coordinate), so if every corner is inside those sides by half their slack and that half exceeds
+// 1e-12 of the coordinates, so is every new corner. The polygon is written once, with its keys,
+// where it ends: buffers[0] when no side cuts, buffers[1] when one does. Returns false, clip
+// untouched but for its frame, when it cannot say: the passes then decide (a cut by two sides, a
+// corner within half a slack of a side that does not cut).
+bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                      std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
                       BoxFaceClip3d& clip) {
-    const FaceCorner* polygon = clip.buffers[0].data();
+    constexpr std::size_t count = 4;
     // A corner's height over a side, sign (coordinate - bound), rounds monotonically with the
     // coordinate, so the face's highest corner over a side is its least or greatest coordinate
     // along the side's axis, to the bit: one height a side says whether the side cuts.
-    double least_m[2] = {polygon[0].u_m, polygon[0].v_m};
-    double greatest_m[2] = {polygon[0].u_m, polygon[0].v_m};
+    double least_m[2] = {face.u_m[0], face.v_m[0]};
+    double greatest_m[2] = {face.u_m[0], face.v_m[0]};
     for (std::size_t i = 1; i < count; ++i) {
-        least_m[0] = std::min(least_m[0], polygon[i].u_m);
-        greatest_m[0] = std::max(greatest_m[0], polygon[i].u_m);
-        least_m[1] = std::min(least_m[1], polygon[i].v_m);
-        greatest_m[1] = std::max(greatest_m[1], polygon[i].v_m);
+        least_m[0] = std::min(least_m[0], face.u_m[i]);
+        greatest_m[0] = std::max(greatest_m[0], face.u_m[i]);
+        least_m[1] = std::min(least_m[1], face.v_m[i]);
+        greatest_m[1] = std::max(greatest_m[1], face.v_m[i]);
     }
     double highest_m[4];  // [m] the highest corner's height over each side
     unsigned cutting_sides = 0;
@@ -192,6 +235,9 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         cutting_sides |= static_cast<unsigned>(!(highest_m[k] <= side.slack_m)) << k;
     }
     if (cutting_sides == 0) {  // every side skips: the face as it is
+        FaceCorner* polygon = clip.buffers[0].data();
+        for (std::size_t i = 0; i < count; ++i)
+            polygon[i] = incident_corner(inc, inc_face, ref_face, i, face.u_m[i], face.v_m[i], face.w_m[i]);
         clip.count = count;
         clip.corners = polygon;
         return true;
@@ -205,25 +251,28 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
             return false;
     }
     const RectangleSide& side = rectangle.sides[k];
+    const double* along = side.axis == 0 ? face.u_m : face.v_m;
     double heights[count];
-    for (std::size_t i = 0; i < count; ++i) heights[i] = side.sign * (coordinate(polygon[i], side.axis) - side.bound_m);
+    for (std::size_t i = 0; i < count; ++i) heights[i] = side.sign * (along[i] - side.bound_m);
     // The one cut, as the passes make it on the face's own corners (none lies on a reference side).
     const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
     FaceCorner* cut = clip.buffers[1].data();
     std::size_t clipped = 0;
     for (std::size_t i = 0; i < count; ++i) {
         const std::size_t i_next = i + 1 == count ? 0 : i + 1;
-        const FaceCorner& here = polygon[i];
         const double dh = heights[i];
         const double dn = heights[i_next];
         const bool here_in = dh <= side.slack_m;
-        if (here_in) cut[clipped++] = here;
+        if (here_in) cut[clipped++] = incident_corner(inc, inc_face, ref_face, i, face.u_m[i], face.v_m[i], face.w_m[i]);
         if (here_in == (dn <= side.slack_m)) continue;
         FaceCorner& c = cut[clipped++];
-        set_crossing(here, polygon[i_next], dh, dn, c);
-        c.feature_incident = here.line_after;
+        set_crossing(face.u_m[i], face.v_m[i], face.w_m[i], face.u_m[i_next], face.v_m[i_next], face.w_m[i_next], dh,
+                     dn, c);
+        // here's line: the incident face's edge i
+        const std::uint32_t incident_edge = feature_3d(FeatureKind3d::edge, inc.edges->face_edges[inc_face][i]);
+        c.feature_incident = incident_edge;
         c.feature_reference = ref_edge;
-        c.line_after = here_in ? ref_edge : here.line_after;
+        c.line_after = here_in ? ref_edge : incident_edge;
         c.line_is_reference = here_in;
     }
     clip.count = clipped;
@@ -240,27 +289,31 @@ bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& in
 bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                             std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    if (inc.shape->faces[inc_face].size() == 4) {  // a box's face: the loading unrolled, the one pass tried
-        load_incident_face<4>(ref, ref_face, inc, inc_face, clip, rectangle);
-        if (clip_in_one_pass<4>(ref, ref_face, rectangle, clip)) return true;
+    load_frame(ref, ref_face, clip, rectangle);
+    if (inc.shape->faces[inc_face].size() == 4) {  // a box's face: the one pass tried on its coordinates
+        const FourCorners face = load_four_corners(inc, inc_face, clip);
+        if (clip_in_one_pass(ref, ref_face, inc, inc_face, rectangle, face, clip)) return true;
+        write_four_corners(inc, inc_face, ref_face, face, clip);
         return clip_by_passes(ref, ref_face, inc_face, rectangle, 4, clip);
     }
-    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
+    const std::size_t count = load_incident_face(ref_face, inc, inc_face, clip);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
 }
 
 bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                              std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
+    load_frame(ref, ref_face, clip, rectangle);
+    const std::size_t count = load_incident_face(ref_face, inc, inc_face, clip);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
 }
 
 bool clip_box_face_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                                std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
-    const std::size_t count = load_incident_face<0>(ref, ref_face, inc, inc_face, clip, rectangle);
-    return count == 4 && clip_in_one_pass<4>(ref, ref_face, rectangle, clip);
+    load_frame(ref, ref_face, clip, rectangle);
+    if (inc.shape->faces[inc_face].size() != 4) return false;
+    return clip_in_one_pass(ref, ref_face, inc, inc_face, rectangle, load_four_corners(inc, inc_face, clip), clip);
 }
 
 bool clip_by_box_face(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
