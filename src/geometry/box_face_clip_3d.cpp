@@ -280,6 +280,16 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     return true;
 }
 
+// A box's face of 4 corners, loaded: the one pass where it can decide, the passes otherwise.
+[[gnu::always_inline]] inline bool clip_four_corners(const PosedPolyhedron& ref, std::uint32_t ref_face,
+                                                     const PosedPolyhedron& inc, std::uint32_t inc_face,
+                                                     const RectangleInFrame& rectangle, const FourCorners& face,
+                                                     BoxFaceClip3d& clip) {
+    if (clip_in_one_pass(ref, ref_face, inc, inc_face, rectangle, face, clip)) return true;
+    write_four_corners(inc, inc_face, ref_face, face, clip);
+    return clip_by_passes(ref, ref_face, inc_face, rectangle, 4, clip);
+}
+
 }  // namespace
 
 bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& inc, std::uint32_t inc_face) {
@@ -290,14 +300,41 @@ bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, 
                             std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
     load_frame(ref, ref_face, clip, rectangle);
-    if (inc.shape->faces[inc_face].size() == 4) {  // a box's face: the one pass tried on its coordinates
-        const FourCorners face = load_four_corners(inc, inc_face, clip);
-        if (clip_in_one_pass(ref, ref_face, inc, inc_face, rectangle, face, clip)) return true;
-        write_four_corners(inc, inc_face, ref_face, face, clip);
-        return clip_by_passes(ref, ref_face, inc_face, rectangle, 4, clip);
-    }
+    if (inc.shape->faces[inc_face].size() == 4)  // a box's face: the one pass tried on its coordinates
+        return clip_four_corners(ref, ref_face, inc, inc_face, rectangle, load_four_corners(inc, inc_face, clip), clip);
     const std::size_t count = load_incident_face(ref_face, inc, inc_face, clip);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);
+}
+
+bool clip_box_face_where_below(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                               std::uint32_t inc_face, BoxFaceClip3d& clip) {
+    const auto& inc_corners = inc.shape->faces[inc_face];
+    if (inc_corners.size() != 4) return clip_box_face_in_frame(ref, ref_face, inc, inc_face, clip);
+    // The heights first, as load_four_corners takes them (the same bits): with none below the
+    // plane no corner of the polygon is, since a crossing's height lies between its two ends' to
+    // the bit (w_h + t (w_n - w_h) with t in [0, 1] rounds to a value at or above the lower end
+    // when both ends are at or above 0), and a crossing of crossings likewise.
+    const Vec3 n = ref.face_normals[ref_face];
+    const Vec3 origin_m = ref.vertices_m[ref.shape->faces[ref_face][0]];
+    FourCorners face;
+    bool below = false;
+    for (std::size_t k = 0; k < 4; ++k) {
+        face.w_m[k] = dot(inc.vertices_m[inc_corners[k]] - origin_m, n);
+        below = below || face.w_m[k] < 0.0;
+    }
+    if (!below) {
+        clip.count = 0;
+        clip.corners = clip.buffers[0].data();
+        return true;
+    }
+    RectangleInFrame rectangle;
+    load_frame(ref, ref_face, clip, rectangle);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
+        face.u_m[k] = dot(r, clip.e_u);
+        face.v_m[k] = dot(r, clip.e_v);
+    }
+    return clip_four_corners(ref, ref_face, inc, inc_face, rectangle, face, clip);
 }
 
 bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,

@@ -57,6 +57,14 @@ struct BoxFaceClip3d {
 bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                             std::uint32_t inc_face, BoxFaceClip3d& clip);
 
+/// What the narrow phase takes for two boxes: clip_box_face_in_frame's polygon when some corner of
+/// the incident face lies below the reference plane (w < 0), and no corner (count 0, returning
+/// true) when none does, since then no corner of the polygon does either and there is no point to
+/// make. Why: a fifth of a brick wall's face clips (its head joints, touching to round-off) give
+/// no point (docs/performance.md, "Branch face5").
+bool clip_box_face_where_below(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                               std::uint32_t inc_face, BoxFaceClip3d& clip);
+
 /// The Sutherland-Hodgman passes alone, side by side (what clip_box_face_in_frame stands for).
 bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                              std::uint32_t inc_face, BoxFaceClip3d& clip);

@@ -313,3 +313,90 @@ TEST(BoxFaceClip3d, SharesReadFromTheClipAreTheSharesOfACopy) {
 
 }  // namespace
 }  // namespace blockdem
+
+namespace blockdem {
+namespace {
+
+// clip_box_face_where_below, what the narrow phase takes for two boxes, against
+// clip_box_face_in_frame: where some incident corner is below the reference plane, the same
+// polygon to the bit (keys, order, coordinates); where it gives no corner, the full clip has no
+// corner below the plane (no point was lost). Random poses, and the wall's faces that touch to
+// round-off: heights of exactly 0 and of +/- a few 1e-17 m, where a crossing's rounding would
+// matter if it could take a height below its ends'.
+struct BelowTally {
+    int skipped = 0;       // faces with no incident corner below: no polygon made
+    int clipped = 0;       // faces clipped
+    int skipped_cut = 0;   // skipped faces whose full clip has crossings (their heights interpolated)
+};
+
+void expect_where_below_as_in_frame(const Posed& a, const Posed& b, BelowTally& tally) {
+    const PosedPolyhedron ref = a.view();
+    const PosedPolyhedron inc = b.view();
+    for (std::uint32_t f = 0; f < a.shape.faces.size(); ++f) {
+        const std::uint32_t inc_face = most_opposed_face(b, a.normals[f]);
+        BoxFaceClip3d full, below;
+        ASSERT_TRUE(clip_box_face_in_frame(ref, f, inc, inc_face, full));
+        ASSERT_TRUE(clip_box_face_where_below(ref, f, inc, inc_face, below));
+        if (below.count == 0) {
+            ++tally.skipped;
+            bool cut = false;
+            for (std::size_t k = 0; k < full.count; ++k) {
+                EXPECT_GE(full.corners[k].w_m, 0.0) << "face " << f << " corner " << k;
+                cut = cut || feature_kind(full.corners[k].feature_incident) != FeatureKind3d::vertex;
+            }
+            if (cut) ++tally.skipped_cut;
+            continue;
+        }
+        ++tally.clipped;
+        ASSERT_EQ(below.count, full.count) << "face " << f;
+        for (std::size_t k = 0; k < full.count; ++k) {
+            const BoxClipCorner3d& m = below.corners[k];
+            const BoxClipCorner3d& p = full.corners[k];
+            EXPECT_EQ(m.feature_incident, p.feature_incident);
+            EXPECT_EQ(m.feature_reference, p.feature_reference);
+            EXPECT_EQ(m.line_after, p.line_after);
+            EXPECT_EQ(m.line_is_reference, p.line_is_reference);
+            EXPECT_EQ(m.u_m, p.u_m);
+            EXPECT_EQ(m.v_m, p.v_m);
+            EXPECT_EQ(m.w_m, p.w_m);
+        }
+    }
+}
+
+TEST(BoxFaceClip3d, NoCornerBelowThePlaneMeansNoPolygonCornerBelow) {
+    std::mt19937 random(41);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    BelowTally tally;
+    for (int trial = 0; trial < 600; ++trial) {
+        const double turn = trial % 3 == 0 ? 0.6 : trial % 3 == 1 ? 0.02 : 1e-7;
+        const Posed a(brick, from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)}), {});
+        const Posed b(brick, from_rotation_vector({turn * u(random), turn * u(random), turn * u(random)}),
+                      {0.15 * u(random), 0.08 * u(random), 0.1 + 0.01 * u(random)});
+        expect_where_below_as_in_frame(a, b, tally);
+    }
+    // The wall's touching faces: course on course and end to end at a gap of exactly 0 or of
+    // +/- 1e-17 m, offsets of a half brick and others, unturned or turned by 1e-7 rad, near the
+    // origin and far from it (where the coordinates' round-off is 1e-14 m).
+    const std::vector<Vec3> unit_cube = box_vertices({1.0, 1.0, 1.0}, {});
+    for (double far_m : {0.0, 7.3, 123.4})
+        for (double turn_rad : {0.0, 1e-7, -3e-8})
+            for (double gap_m : {0.0, 1e-17, -1e-17})
+                for (double shift_m : {0.0, 0.1, -0.1, 0.05, 1e-12, 0.19999999999}) {
+                    const Quaternion q = from_rotation_vector({turn_rad, 0.5 * turn_rad, -turn_rad});
+                    const Vec3 base{far_m, 0.3 * far_m, 0.0};
+                    const Posed a(brick, Quaternion{}, base);
+                    expect_where_below_as_in_frame(a, Posed(brick, q, base + Vec3{shift_m, 0.0, 0.1 + gap_m}), tally);
+                    expect_where_below_as_in_frame(a, Posed(brick, q, base + Vec3{0.2 + gap_m, 0.5 * shift_m, 0.0}), tally);
+                    expect_where_below_as_in_frame(Posed(unit_cube, Quaternion{}, base),
+                                                   Posed(brick, q, base + Vec3{shift_m, 0.0, 0.55 + gap_m}), tally);
+                }
+    // Both ways are taken many times, and skipped faces include cut polygons (crossings whose
+    // heights are interpolated, the case the rule is about).
+    EXPECT_GT(tally.skipped, 1000);
+    EXPECT_GT(tally.clipped, 1000);
+    EXPECT_GT(tally.skipped_cut, 100);
+}
+
+}  // namespace
+}  // namespace blockdem
