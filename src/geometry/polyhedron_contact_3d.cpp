@@ -308,6 +308,12 @@ std::uint32_t most_opposed_box_face(const PosedPolyhedron& ref, std::uint32_t re
                                     const BoxPair& pair, bool ref_is_a) {
     const int i = ref.box->face_direction[ref_face];
     const double ref_sign = ref.box->face_sign[ref_face];
+    // Boxes turned alike (a wall's, the same shape) have inc's direction i along ref's: a |dot|
+    // above sqrt(1/2) is the least -|dot| outright, since the three squares sum to 1 (to
+    // round-off), so the others are below it and no tie can arise (the loop's choice, for the
+    // test of one direction instead of three).
+    const double c_i = ref_sign * pair.dots[i][i];  // n . inc's direction i, either way round
+    if (std::abs(c_i) > 0.7072) return c_i > 0.0 ? inc.box->face_of[i][1] : inc.box->face_of[i][0];
     std::uint32_t inc_face = 0;
     double most_opposed = std::numeric_limits<double>::infinity();
     for (int j = 0; j < 3; ++j) {
