@@ -364,10 +364,11 @@ void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_
     for (std::size_t i = 0; i < count; ++i) {
         const BoxClipCorner3d& c = polygon[i];
         if (c.w_m >= 0.0) continue;  // depth -w <= 0
-        ContactGeometry3d g{clip.world_m(c.u_m, c.v_m, 0.5 * c.w_m), normal, -c.w_m, c.feature_reference,
-                            c.feature_incident, shares[i]};
-        if (!ref_is_a) std::swap(g.feature_a, g.feature_b);
-        out.push_back(g);
+        // Made where it is stored (a point built aside was then copied), its features chosen
+        // rather than swapped after.
+        out.emplace_back(clip.world_m(c.u_m, c.v_m, 0.5 * c.w_m), normal, -c.w_m,
+                         ref_is_a ? c.feature_reference : c.feature_incident,
+                         ref_is_a ? c.feature_incident : c.feature_reference, shares[i]);
     }
 }
 
