@@ -76,7 +76,20 @@ inline double turn_rad(Vec3 a, Vec3 b) {
 template <class Corners, class Count>
 bool corner_shares_without_groups(const Corners& corners, Count count, double* shares) {
     if (count == 0) return true;
-    const auto side = [&](std::size_t i) { return corners.at(i + 1 == count ? 0 : i + 1) - corners.at(i); };
+    // With the count known when compiled, each side is formed once and kept (the turns read it
+    // again; formed from the corners, it was formed anew there, the stores of the shares in
+    // between being possible writes to the corners). The same arithmetic either way.
+    constexpr std::size_t kept_sides = [] {
+        if constexpr (std::is_integral_v<Count>) return std::size_t{1};
+        else return Count::value;
+    }();
+    Vec3 sides_kept[kept_sides];
+    if constexpr (!std::is_integral_v<Count>)
+        for (std::size_t i = 0; i < count; ++i) sides_kept[i] = corners.at(i + 1 == count ? 0 : i + 1) - corners.at(i);
+    const auto side = [&](std::size_t i) {
+        if constexpr (std::is_integral_v<Count>) return corners.at(i + 1 == count ? 0 : i + 1) - corners.at(i);
+        else return sides_kept[i];
+    };
     // A side shorter than 1e-9 of the longest has a direction made of round-off: its ends count
     // as one corner. (Squared lengths: no root taken for the test.)
     double longest_m2 = 0.0;
