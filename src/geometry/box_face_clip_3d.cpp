@@ -218,14 +218,12 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     // A corner's height over a side, sign (coordinate - bound), rounds monotonically with the
     // coordinate, so the face's highest corner over a side is its least or greatest coordinate
     // along the side's axis, to the bit: one height a side says whether the side cuts.
-    double least_m[2] = {face.u_m[0], face.v_m[0]};
-    double greatest_m[2] = {face.u_m[0], face.v_m[0]};
-    for (std::size_t i = 1; i < count; ++i) {
-        least_m[0] = std::min(least_m[0], face.u_m[i]);
-        greatest_m[0] = std::max(greatest_m[0], face.u_m[i]);
-        least_m[1] = std::min(least_m[1], face.v_m[i]);
-        greatest_m[1] = std::max(greatest_m[1], face.v_m[i]);
-    }
+    // Taken pairwise (two independent halves, then one): only the heights' comparisons read them,
+    // which a zero's sign, all that the order could change, does not affect.
+    const auto least = [](const double* x) { return std::min(std::min(x[0], x[1]), std::min(x[2], x[3])); };
+    const auto greatest = [](const double* x) { return std::max(std::max(x[0], x[1]), std::max(x[2], x[3])); };
+    const double least_m[2] = {least(face.u_m), least(face.v_m)};
+    const double greatest_m[2] = {greatest(face.u_m), greatest(face.v_m)};
     double highest_m[4];  // [m] the highest corner's height over each side
     unsigned cutting_sides = 0;
     for (std::size_t k = 0; k < 4; ++k) {
