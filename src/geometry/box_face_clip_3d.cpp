@@ -40,19 +40,26 @@ struct RectangleInFrame {
     RectangleSide sides[4];
 };
 
-// The frame and the rectangle in it: what both clips start from.
-[[gnu::always_inline]] inline void load_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
-    // The frame: origin at the face's corner 0, e_u one of the box's directions in the face's
-    // plane, e_v = n x e_u, so that (e_u, e_v, n) is right-handed as the general clip's sides assume.
-    const auto& ref_corners = ref.shape->faces[ref_face];
+// The frame: origin at the reference face's corner 0, e_u one of the box's directions in the
+// face's plane, e_v = n x e_u, so that (e_u, e_v, n) is right-handed as the general clip's sides
+// assume.
+[[gnu::always_inline]] inline void load_axes(const PosedPolyhedron& ref, std::uint32_t ref_face, BoxFaceClip3d& clip) {
     const Vec3 n = ref.face_normals[ref_face];
     const int normal_direction = ref.box->face_direction[ref_face];
     const Vec3 e_u = ref.directions[normal_direction == 0 ? 1 : 0];
-    const Vec3 e_v = cross(n, e_u);
     clip.e_u = e_u;
-    clip.e_v = e_v;
+    clip.e_v = cross(n, e_u);
     clip.n = n;
-    const Vec3 origin_m = ref.vertices_m[ref_corners[0]];
+    clip.origin_m = ref.vertices_m[ref.shape->faces[ref_face][0]];
+}
+
+// The rectangle in the frame (the axes loaded).
+[[gnu::always_inline]] inline void load_rectangle(const PosedPolyhedron& ref, std::uint32_t ref_face,
+                                                  const BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
+    const auto& ref_corners = ref.shape->faces[ref_face];
+    const Vec3 origin_m = clip.origin_m;
+    const Vec3 e_u = clip.e_u;
+    const Vec3 e_v = clip.e_v;
     for (std::size_t k = 0; k < 4; ++k) {
         const Vec3 r = ref.vertices_m[ref_corners[k]] - origin_m;
         rectangle.corner_u_m[k] = dot(r, e_u);
@@ -68,7 +75,13 @@ struct RectangleInFrame {
         rectangle.sides[k] = rectangle_side(first_along_v == (k % 2 == 0), corner_u[k], corner_v[k], corner_u[k_next],
                                             corner_v[k_next]);
     }
-    clip.origin_m = origin_m;
+}
+
+// The frame and the rectangle in it: what both clips start from.
+[[gnu::always_inline]] inline void load_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, BoxFaceClip3d& clip,
+                                              RectangleInFrame& rectangle) {
+    load_axes(ref, ref_face, clip);
+    load_rectangle(ref, ref_face, clip, rectangle);
 }
 
 // Corner k of the incident face as the polygon's first form holds it: at (u, v, w), the face's
@@ -110,11 +123,12 @@ struct FourCorners {
 [[gnu::always_inline]] inline FourCorners load_four_corners(const PosedPolyhedron& inc, std::uint32_t inc_face, const BoxFaceClip3d& clip) {
     FourCorners face;
     const auto& inc_corners = inc.shape->faces[inc_face];
+    const Vec3 origin_m = clip.origin_m, e_u = clip.e_u, e_v = clip.e_v, n = clip.n;
     for (std::size_t k = 0; k < 4; ++k) {
-        const Vec3 r = inc.vertices_m[inc_corners[k]] - clip.origin_m;
-        face.u_m[k] = dot(r, clip.e_u);
-        face.v_m[k] = dot(r, clip.e_v);
-        face.w_m[k] = dot(r, clip.n);
+        const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
+        face.u_m[k] = dot(r, e_u);
+        face.v_m[k] = dot(r, e_v);
+        face.w_m[k] = dot(r, n);
     }
     return face;
 }
@@ -308,30 +322,19 @@ bool clip_box_face_where_below(const PosedPolyhedron& ref, std::uint32_t ref_fac
                                std::uint32_t inc_face, BoxFaceClip3d& clip) {
     const auto& inc_corners = inc.shape->faces[inc_face];
     if (inc_corners.size() != 4) return clip_box_face_in_frame(ref, ref_face, inc, inc_face, clip);
-    // The heights first, as load_four_corners takes them (the same bits): with none below the
-    // plane no corner of the polygon is, since a crossing's height lies between its two ends' to
-    // the bit (w_h + t (w_n - w_h) with t in [0, 1] rounds to a value at or above the lower end
-    // when both ends are at or above 0), and a crossing of crossings likewise.
-    const Vec3 n = ref.face_normals[ref_face];
-    const Vec3 origin_m = ref.vertices_m[ref.shape->faces[ref_face][0]];
-    FourCorners face;
-    bool below = false;
-    for (std::size_t k = 0; k < 4; ++k) {
-        face.w_m[k] = dot(inc.vertices_m[inc_corners[k]] - origin_m, n);
-        below = below || face.w_m[k] < 0.0;
-    }
-    if (!below) {
+    // The corners first (the rectangle not yet): with none below the plane no corner of the
+    // polygon is, since a crossing's height lies between its two ends' to the bit (w_h + t (w_n -
+    // w_h) with t in [0, 1] rounds to a value at or above the lower end when both ends are at or
+    // above 0), and a crossing of crossings likewise.
+    load_axes(ref, ref_face, clip);
+    const FourCorners face = load_four_corners(inc, inc_face, clip);
+    if (!(face.w_m[0] < 0.0 || face.w_m[1] < 0.0 || face.w_m[2] < 0.0 || face.w_m[3] < 0.0)) {
         clip.count = 0;
         clip.corners = clip.buffers[0].data();
         return true;
     }
     RectangleInFrame rectangle;
-    load_frame(ref, ref_face, clip, rectangle);
-    for (std::size_t k = 0; k < 4; ++k) {
-        const Vec3 r = inc.vertices_m[inc_corners[k]] - origin_m;
-        face.u_m[k] = dot(r, clip.e_u);
-        face.v_m[k] = dot(r, clip.e_v);
-    }
+    load_rectangle(ref, ref_face, clip, rectangle);
     return clip_four_corners(ref, ref_face, inc, inc_face, rectangle, face, clip);
 }
 
