@@ -262,6 +262,11 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         if (!(highest_m[j] <= half_slack_m && 1e-12 * (std::abs(reach_m) + std::abs(rectangle.sides[j].bound_m)) < half_slack_m))
             return false;
     }
+    // The incident face's corner and edge numbers read once (the polygon's stores could be read
+    // as writes to the lists' entries, but not to where the lists are).
+    const std::size_t* corner_ids = inc.shape->faces[inc_face].data();
+    const std::uint32_t* edge_ids = inc.edges->face_edges[inc_face].data();
+    const std::uint32_t on_reference_face = feature_3d(FeatureKind3d::face, ref_face);
     const RectangleSide& side = rectangle.sides[k];
     const double* along = side.axis == 0 ? face.u_m : face.v_m;
     double heights[count];
@@ -275,13 +280,16 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         const double dh = heights[i];
         const double dn = heights[i_next];
         const bool here_in = dh <= side.slack_m;
-        if (here_in) cut[clipped++] = incident_corner(inc, inc_face, ref_face, i, face.u_m[i], face.v_m[i], face.w_m[i]);
+        const std::uint32_t incident_edge = feature_3d(FeatureKind3d::edge, edge_ids[i]);
+        if (here_in)
+            cut[clipped++] = {face.u_m[i], face.v_m[i], face.w_m[i],
+                              feature_3d(FeatureKind3d::vertex, static_cast<std::uint32_t>(corner_ids[i])),
+                              on_reference_face, incident_edge, false};
         if (here_in == (dn <= side.slack_m)) continue;
         FaceCorner& c = cut[clipped++];
         set_crossing(face.u_m[i], face.v_m[i], face.w_m[i], face.u_m[i_next], face.v_m[i_next], face.w_m[i_next], dh,
                      dn, c);
         // here's line: the incident face's edge i
-        const std::uint32_t incident_edge = feature_3d(FeatureKind3d::edge, inc.edges->face_edges[inc_face][i]);
         c.feature_incident = incident_edge;
         c.feature_reference = ref_edge;
         c.line_after = here_in ? ref_edge : incident_edge;
