@@ -274,27 +274,44 @@ struct EdgeSearch {
 // distance from orthonormal (each about 1e-16 relative) a thousand times over; it sends a pair
 // whose faces touch to round-off (F_a near 1e-16 m, where the axes' own round-off decides) to the
 // full test, which chooses there as before.
-bool aligned_beyond_round_off(const BoxPair& pair, const Vec3& ha, const Vec3& hb, double face_a_m, double clearly) {
+//
+// Where it holds, the three a_i x b_i are often parallel edges too, which apart_along skips
+// (length2 = dots[i1][i]^2 + dots[i2][i]^2 < 1e-12): every off-diagonal |dots[k][j]| is at most
+// E / hb_j (all of E's terms are >= 0), so when E < 5e-7 hb_min each is below 5e-7 (5.000001e-7
+// with E's round-off) and each length2 below 5.1e-13, under 1e-12 by far: edges_parallel, and no edge
+// axis is measured, as apart_along would measure none. A wall's bricks: off-diagonal dots 1e-21
+// to 1e-11.
+enum class Alignment : std::uint8_t {
+    none,            ///< everything measured
+    crossed_lose,    ///< b's faces and the crossed edge axes shown to lose: the three a_i x b_i measured
+    edges_parallel,  ///< as crossed_lose, and the three a_i x b_i parallel edges: no edge axis measured
+};
+
+Alignment aligned_beyond_round_off(const BoxPair& pair, const Vec3& ha, const Vec3& hb, double face_a_m,
+                                   double clearly) {
     const double slack_m = 4e-12 * (ha.x + ha.y + ha.z + hb.x + hb.y + hb.z);
     const double least_separation_m = clearly * face_a_m;  // -clearly F_a
     // T + clearly F_a <= (1 - clearly) face_a_m first: most pairs that fail, fail here (faces
     // touching to round-off).
-    if (face_a_m - least_separation_m > -2.0 * slack_m) return false;
+    if (face_a_m - least_separation_m > -2.0 * slack_m) return Alignment::none;
     const auto& d = pair.abs_dots;
     const double crossed_m = hb.x * (d[1][0] + d[2][0]) + hb.y * (d[0][1] + d[2][1]) + hb.z * (d[0][2] + d[1][2]);  // E
     const double least_diagonal = std::min(std::min(d[0][0], d[1][1]), d[2][2]);
-    return (face_a_m + 2.0 * crossed_m - least_separation_m) * least_diagonal <= -2.0 * slack_m;
+    if (!((face_a_m + 2.0 * crossed_m - least_separation_m) * least_diagonal <= -2.0 * slack_m)) return Alignment::none;
+    return crossed_m < 5e-7 * std::min(std::min(hb.x, hb.y), hb.z) ? Alignment::edges_parallel
+                                                                   : Alignment::crossed_lose;
 }
 
-EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair, bool aligned,
+EdgeAxis box_edge_axis(const PosedPolyhedron& a, const PosedPolyhedron& b, const BoxPair& pair, Alignment aligned,
                        double least_separation_m, bool& apart) {
+    if (aligned == Alignment::edges_parallel) return EdgeAxis{};  // apart_along would measure none
     const Vec3 ha = a.box->half_lengths_m;
     const Vec3 hb = b.box->half_lengths_m;
     EdgeSearch search{pair, {ha.x, ha.y, ha.z}, {hb.x, hb.y, hb.z}, least_separation_m, EdgeAxis{}};
     // In the order (0,0), (0,1), ... (2,2), the first separating axis ending the search; only the
     // diagonal's three, in the same order, where the crossed ones are shown to lose (aligned_beyond_
     // round_off): the same choice, as an axis that neither separates nor can be taken never decides it.
-    if (aligned)
+    if (aligned == Alignment::crossed_lose)
         apart = search.apart_along<0, 0>() || search.apart_along<1, 1>() || search.apart_along<2, 2>();
     else
         apart = search.apart_along<0, 0>() || search.apart_along<0, 1>() || search.apart_along<0, 2>() ||
@@ -570,9 +587,11 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     // Overlaps (>= 0); a candidate replaces the preferred one only when it is clearly smaller.
     constexpr double clearly = 0.95;
     // Two boxes turned alike, overlapping beyond round-off: b's faces shown to lose unmeasured.
-    const bool aligned =
-        boxes && aligned_beyond_round_off(pair, a.box->half_lengths_m, b.box->half_lengths_m, face_a.separation_m,
-                                          clearly);
+    const Alignment alignment =
+        boxes ? aligned_beyond_round_off(pair, a.box->half_lengths_m, b.box->half_lengths_m, face_a.separation_m,
+                                         clearly)
+              : Alignment::none;
+    const bool aligned = alignment != Alignment::none;
     const FaceAxis face_b = aligned ? FaceAxis{}
                             : boxes ? box_face_axis_of_b(a, b, pair, apart)
                                     : best_face_axis(b, a, apart);
@@ -580,7 +599,7 @@ std::size_t polyhedron_contact_3d(const PosedPolyhedron& a, const PosedPolyhedro
     const std::size_t first = out.size();
     const bool use_b = !aligned && -face_b.separation_m < clearly * -face_a.separation_m;
     const double face_overlap_m = use_b ? -face_b.separation_m : -face_a.separation_m;
-    const EdgeAxis edge = boxes ? box_edge_axis(a, b, pair, aligned, -clearly * face_overlap_m, apart)
+    const EdgeAxis edge = boxes ? box_edge_axis(a, b, pair, alignment, -clearly * face_overlap_m, apart)
                                 : best_edge_axis(a, b, apart);
     if (apart) return 0;
     const bool use_edge = -edge.separation_m < clearly * face_overlap_m;
