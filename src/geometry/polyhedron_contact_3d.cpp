@@ -92,18 +92,19 @@ struct BoxPair {
     double offset_a_m[3];   ///< [m] offset_m along a's direction i
 };
 
-// The pair's dots two at a time (laws/double_lanes.hpp: each lane rounds as the scalar dot, so the
-// same bits): a's directions 0 and 1 in the lanes against each of b's, a's direction 2 against b's
-// 0 and 1, and against b's 2 beside the offset along it. Why: the scalar dots, left to the
-// compiler, took 12 dot products with a shuffle or a spill for about every product (165
-// instructions a candidate pair at 1e4, a quarter of the box-box test). The lanes of a's first two
-// directions are kept for a's faces (first_rows), read there without going through memory.
 // |x| in each lane: the sign bit cleared, as std::abs does (andpd on x86-64).
 inline DoubleLanes lanes_abs(DoubleLanes x) {
     constexpr LaneMask magnitude = {0x7fffffffffffffffLL, 0x7fffffffffffffffLL};
     return reinterpret_cast<DoubleLanes>(reinterpret_cast<LaneMask>(x) & magnitude);
 }
 
+// The pair's dots two at a time, in the two lanes of a 16-byte vector (laws/double_lanes.hpp, the
+// 3-D law's type: each lane rounds as the scalar expression written the same way, so the same
+// bits as dot()): a's directions 0 and 1 in the lanes against each of b's, a's direction 2 against
+// b's 0 and 1, and against b's 2 beside the offset along it. Why: the scalar dots, left to the
+// compiler, took 12 dot products with a shuffle or a spill for about every product (165
+// instructions a candidate pair at 1e4, a quarter of the box-box test). The lanes of a's first two
+// directions are kept for a's faces (first_rows), read there without going through memory.
 struct FirstRows {
     DoubleLanes abs_dots[3];  ///< {|dots[0][j]|, |dots[1][j]|} for j = 0, 1, 2
     DoubleLanes offset_a_m;   ///< [m] {offset_a_m[0], offset_a_m[1]}
@@ -152,8 +153,8 @@ struct FirstRows {
 // when a face plane separates them.
 [[gnu::always_inline]] inline FaceAxis best_box_face(const BoxFrame3d& r, const double separation_m[3],
                                                      const double centre_m[3], bool& apart) {
-    // The face along direction i facing o's centre; on centre_m = 0 both faces along i separate as
-    // much: the lower number, as in a face loop.
+    // The face along direction i facing the other box's centre; on centre_m = 0 both faces along i
+    // separate as much: the lower number, as in a face loop.
     const auto facing = [&](int i, double c_m) -> std::uint32_t {
         return c_m > 0.0   ? r.face_of[i][0]
                : c_m < 0.0 ? r.face_of[i][1]
@@ -197,9 +198,8 @@ struct FirstRows {
 
 // The faces of b against the box a, the same sums with the roles swapped: a's reach along b's
 // direction i is sum_j h_j |a_j . b_i| (the column i of the dots), and the centre is a's minus b's.
-// r_is_a said which index of the pair's dots is r's.
-// Inlined by force: left to itself the compiler calls it (a call and its frame cost more a pair
-// than the face lookups saved below).
+// Both face functions are inlined by force: left to itself the compiler called the one function
+// they replace (a call and its frame cost more a pair than the face lookups saved in best_box_face).
 [[gnu::always_inline]] inline FaceAxis box_face_axis_of_b(const PosedPolyhedron& a, const PosedPolyhedron& b,
                                                           const BoxPair& pair, bool& apart) {
     const Vec3 ha = a.box->half_lengths_m;
