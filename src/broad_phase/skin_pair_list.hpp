@@ -46,7 +46,8 @@ public:
         return grid_.memory_bytes() + enlarged_.capacity() * sizeof(Box) +
                (listed_.capacity() + kept_pairs_.capacity()) * sizeof(BodyPair) +
                (built_static_.capacity() + keep_.capacity()) * sizeof(std::uint8_t) +
-               chunk_kept_.capacity() * sizeof(std::size_t) + extents_.capacity() * sizeof(double);
+               chunk_kept_.capacity() * sizeof(std::size_t) + extents_.capacity() * sizeof(double) +
+               box_offsets_.capacity() * sizeof(std::uint32_t);
     }
 
 private:
@@ -62,6 +63,9 @@ private:
     std::vector<double> extents_;             ///< [m] scratch of a rebuild: each body's largest side
     std::int64_t rebuilds_ = 0;
     std::vector<BodyPair> kept_pairs_;        ///< 3-D: each chunk's kept pairs, from the chunk's start
+    /// 3-D: per listed pair, its two boxes' byte offsets in the boxes' array (empty where they would
+    /// not fit 32 bits; the 2-D loop is then used).
+    std::vector<std::uint32_t> box_offsets_;
 };
 
 extern template class SkinPairListOf<Aabb>;
