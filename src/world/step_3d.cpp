@@ -520,7 +520,8 @@ BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     // The pose's matrix: the orientation is still the one at t.
     const double kinetic_j = update_velocity_3d(b, w.scratch.rotations[i], w.dt_s, starting);
     const double gravitational_j = b.mass_kg * w.gravity_m_s2 * b.position_m.z;
-    if (is_outside(w.domain, w.scratch.boxes[i])) {
+    // Without a model extent (domain.active false) nothing leaves: no call a body to find it out.
+    if (w.domain.active && is_outside(w.domain, w.scratch.boxes[i])) {
         e.leaving_j = kinetic_j + gravitational_j;
         e.leaving = 1;
     } else {
@@ -580,7 +581,9 @@ void step_begin(World3d& w) {
 
 void step_end(World3d& w) {
     const double dt = w.dt_s;
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
+    // Inlined into the loop (the drift is inlined into it, rigid_rotation_3d.hpp): called, the
+    // lambda cost as much as the call it saved.
+    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) __attribute__((always_inline)) {
         // The pose's matrix: step_begin posed every body at the orientation the drift starts from.
         if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
             update_position_3d(w.bodies[i], w.scratch.rotations[i], dt);
