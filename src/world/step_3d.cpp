@@ -132,11 +132,17 @@ Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame
     const Vec3 h = frame.half_lengths_m;
     const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
     // Turning -d gives exactly minus turning d (round-to-nearest is symmetric), so a normal that
-    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it. The
-    // normals are the first stores: the frame's signs and directions are each read once there,
-    // where a copy made before them cost a dozen instructions more.
+    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it: d_i goes to
+    // the face along +d_i and -d_i (its sign bit flipped, as the product by -1 flips it) to the
+    // one along -d_i (face_of), so no product by the face's sign nor read of its direction a
+    // face. The faces are read into a local first: a store through normals could alias the frame.
     if (frame.normals_are_directions) {
-        for (std::size_t k = 0; k < 6; ++k) store(frame.face_sign[k] * d[frame.face_direction[k]], &normals[k]);
+        std::size_t face_of[3][2];
+        for (std::size_t k = 0; k < 3; ++k) face_of[k][0] = frame.face_of[k][0], face_of[k][1] = frame.face_of[k][1];
+        for (std::size_t k = 0; k < 3; ++k) {
+            store(d[k], &normals[face_of[k][0]]);
+            store(PackedVec3{-d[k].xy, -d[k].z}, &normals[face_of[k][1]]);
+        }
     } else {
         for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * shape.face_normals[k];
     }
