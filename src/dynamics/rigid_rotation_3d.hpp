@@ -21,6 +21,7 @@
 #include <algorithm>
 
 #include "dynamics/rigid_body_3d.hpp"
+#include "geometry/packed_vec3.hpp"
 
 namespace blockdem {
 
@@ -43,23 +44,29 @@ double update_velocity_3d(RigidBody3d& b, double dt_s, bool starting = false);
 /// two products by a matrix instead of two turns by the quaternion. Defined here so that the
 /// step's kick loop inlines it (called, a body's kick cost about 20 instructions more).
 inline double update_velocity_3d(RigidBody3d& b, const Matrix3d& rotation, double dt_s, bool starting) {
-    const Vec3 a = (1.0 / b.mass_kg) * b.force_n;
-    Vec3 v_old = b.velocity_m_s;
-    Vec3 l_old = b.angular_momentum_kg_m2_s;
+    // In two lanes (geometry/packed_vec3.hpp): each lane rounds as the Vec3 expression, the same bits.
+    const PackedVec3 force_n = load(b.force_n);
+    const PackedVec3 torque_n_m = load(b.torque_n_m);
+    const PackedVec3 a = (1.0 / b.mass_kg) * force_n;
+    PackedVec3 v_old = load(b.velocity_m_s);
+    PackedVec3 l_old = load(b.angular_momentum_kg_m2_s);
     if (starting) {
         // The stored velocities are at t: back to t - dt/2 by half a kick.
-        v_old -= (0.5 * dt_s) * a;
-        l_old -= (0.5 * dt_s) * b.torque_n_m;
+        v_old = v_old - (0.5 * dt_s) * a;
+        l_old = l_old - (0.5 * dt_s) * torque_n_m;
     }
-    b.velocity_m_s = v_old + dt_s * a;
-    b.angular_momentum_kg_m2_s = l_old + dt_s * b.torque_n_m;
-    b.velocity_at_t_m_s = 0.5 * (v_old + b.velocity_m_s);
+    const PackedVec3 v_new = v_old + dt_s * a;
+    const PackedVec3 l_new = l_old + dt_s * torque_n_m;
+    const PackedVec3 v_at_t = 0.5 * (v_old + v_new);
+    store(v_new, &b.velocity_m_s);
+    store(l_new, &b.angular_momentum_kg_m2_s);
+    store(v_at_t, &b.velocity_at_t_m_s);
     // The angular velocity at t from the angular momentum at t at the orientation at t.
-    const Vec3 l_at_t = 0.5 * (l_old + b.angular_momentum_kg_m2_s);
-    const Vec3 omega_body = hadamard(b.inverse_moments_1_kg_m2, transpose_times(rotation, l_at_t));
-    b.angular_velocity_at_t_rad_s = rotation * omega_body;
-    return 0.5 * b.mass_kg * dot(b.velocity_at_t_m_s, b.velocity_at_t_m_s) +
-           0.5 * dot(omega_body, hadamard(b.principal_moments_kg_m2, omega_body));
+    const PackedVec3 l_at_t = 0.5 * (l_old + l_new);
+    const PackedVec3 omega_body = hadamard(load(b.inverse_moments_1_kg_m2), transpose_times(rotation, l_at_t));
+    store(packed(rotation) * omega_body, &b.angular_velocity_at_t_rad_s);
+    return 0.5 * b.mass_kg * dot(v_at_t, v_at_t) +
+           0.5 * dot(omega_body, hadamard(load(b.principal_moments_kg_m2), omega_body));
 }
 
 /// The drift: position and orientation to t + dt from the half-step velocities.

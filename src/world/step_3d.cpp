@@ -11,6 +11,7 @@
 #endif
 
 #include "dynamics/rigid_rotation_3d.hpp"
+#include "geometry/packed_vec3.hpp"
 #include "laws/contact_law_3d.hpp"
 #include "laws/double_lanes.hpp"
 #include "laws/linear_spring_dashpot.hpp"
@@ -71,36 +72,6 @@ void size_pose_arrays(World3d& w) {
     s.boxes.resize(n);
     s.is_static.resize(n);
     s.posed.resize(n);
-}
-
-// A vector with its x and y in the two lanes of one 16-byte register and its z apart: the
-// pose's sums and products then take two operations a vector where Vec3's take three (the build
-// has no -march: scalar SSE2, one operation an instruction). Each lane rounds as the scalar
-// expression written the same way (laws/double_lanes.hpp), so the results are Vec3's bits.
-struct PackedVec3 {
-    DoubleLanes xy;
-    double z;
-};
-inline PackedVec3 packed(Vec3 v) { return {lanes(v.x, v.y), v.z}; }
-inline PackedVec3 operator+(const PackedVec3& a, const PackedVec3& b) { return {a.xy + b.xy, a.z + b.z}; }
-inline PackedVec3 operator-(const PackedVec3& a, const PackedVec3& b) { return {a.xy - b.xy, a.z - b.z}; }
-inline PackedVec3 operator*(double s, const PackedVec3& a) { return {lanes(s) * a.xy, s * a.z}; }
-inline void store(const PackedVec3& a, Vec3* to) {
-    std::memcpy(static_cast<void*>(to), &a.xy, sizeof(a.xy));  // x and y, the first 16 bytes of a Vec3 (trivially copyable)
-    to->z = a.z;
-}
-inline PackedVec3 absolute(const PackedVec3& a) { return {lane_max(a.xy, -a.xy), std::abs(a.z)}; }
-
-// The rotation matrix by columns, packed: R v = c0 v.x + c1 v.y + c2 v.z, summed in Matrix3d's
-// order, so the same bits as rotation * v.
-struct PackedRotation {
-    PackedVec3 columns[3];
-};
-inline PackedRotation packed(const Matrix3d& r) {
-    return {{packed(r.column(0)), packed(r.column(1)), packed(r.column(2))}};
-}
-inline PackedVec3 operator*(const PackedRotation& r, Vec3 v) {
-    return v.x * r.columns[0] + v.y * r.columns[1] + v.z * r.columns[2];
 }
 
 // The 8 corners centre +/- a +/- b +/- c, corner k on the + side of a when bit 0 of k is set, of
