@@ -16,6 +16,7 @@
 #include "laws/double_lanes.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 #include "world/parallel.hpp"
+#include "world/vex_clones.hpp"
 
 namespace blockdem {
 namespace {
@@ -96,7 +97,7 @@ void size_pose_arrays(World3d& w) {
 // turned vertices only by round-off and by the 1e-12 of the box's size that box_frame allows a
 // vertex off its corner. What the frame says is read into locals before it is needed after a
 // store: a store through the output pointers could alias the frame, which would then be read again.
-Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
+[[gnu::always_inline]] inline Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
                 const Polyhedron& shape, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
     const PackedRotation turn = packed(rotation);
     const PackedVec3 d[3] = {turn * body_directions[0], turn * body_directions[1], turn * body_directions[2]};
@@ -159,7 +160,7 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
 // view of it the narrow phase reads (WorldScratch3d::posed, written here so that the bodies are
 // gone through once), from its orientation's matrix (one a body, kept for the kick and the
 // drift). What is read from the body is read before the first store, for pose_box's reason.
-void pose_body(World3d& w, std::size_t i) {
+[[gnu::always_inline]] inline void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
     const RigidBody3d& b = w.bodies[i];
     const Matrix3d rotation = rotation_matrix_by_products(b.orientation);
@@ -179,6 +180,18 @@ void pose_body(World3d& w, std::size_t i) {
     s.angular_velocity_world_rad_s[i] = omega_world_rad_s;
     s.is_static[i] = is_static;
     s.posed[i] = {&b.shape, &edges, vertices, normals, directions, centre_m, &frame};
+}
+
+// Steps 1 and 2 for bodies begin .. end - 1, and their forces set to gravity for step 5
+// (world/vex_clones.hpp: compiled for AVX where there is AVX).
+BLOCKDEM_VEX_CLONES void pose_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, Vec3 displacement_m,
+                                  Vec3 velocity_m_s) {
+    for (std::ptrdiff_t i = begin; i < end; ++i) {
+        place_driven_body(w, static_cast<std::size_t>(i), displacement_m, velocity_m_s);
+        pose_body(w, static_cast<std::size_t>(i));
+        w.bodies[i].force_n = {0.0, 0.0, -w.gravity_m_s2 * w.bodies[i].mass_kg};
+        w.bodies[i].torque_n_m = {};
+    }
 }
 
 // The mass a pair's dashpots use (docs/physics.md, "Which mass the damping uses").
@@ -508,6 +521,23 @@ BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     return e;
 }
 
+// The drift of bodies begin .. end - 1 (world/vex_clones.hpp: compiled for AVX where there is AVX).
+BLOCKDEM_VEX_CLONES void drift_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, double dt_s) {
+    for (std::ptrdiff_t i = begin; i < end; ++i) {
+        // The pose's matrix: step_begin posed every body at the orientation the drift starts from.
+        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
+            update_position_3d(w.bodies[i], w.scratch.rotations[i], dt_s);
+    }
+}
+
+// The kick of bodies begin .. end - 1, their totals added in body order (a chunk of
+// deterministic_sum_of_chunks; world/vex_clones.hpp).
+BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting) {
+    BodyTotals totals{};
+    for (std::ptrdiff_t i = begin; i < end; ++i) totals += kick_body(w, static_cast<std::size_t>(i), starting);
+    return totals;
+}
+
 // The bodies that left now, in body order (the list has one order at any thread count).
 void take_out_leaving_bodies(World3d& w) {
     for (std::size_t i = 0; i < w.bodies.size(); ++i)
@@ -526,11 +556,8 @@ void step_begin(World3d& w) {
     const auto n = static_cast<std::ptrdiff_t>(w.bodies.size());
     const Vec3 table_velocity_m_s = (1.0 / dt) * (d_now - d_before);
     size_pose_arrays(w);
-    parallel_for(n, [&](std::ptrdiff_t i) {
-        place_driven_body(w, static_cast<std::size_t>(i), d_now, table_velocity_m_s);
-        pose_body(w, static_cast<std::size_t>(i));
-        w.bodies[i].force_n = {0.0, 0.0, -w.gravity_m_s2 * w.bodies[i].mass_kg};
-        w.bodies[i].torque_n_m = {};
+    parallel_for_runs(n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+        pose_run(w, begin, end, d_now, table_velocity_m_s);
     });
     find_contacts(w);
     // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
@@ -540,8 +567,8 @@ void step_begin(World3d& w) {
         parallel_for(n, [&](std::ptrdiff_t i) { add_external_load(w, static_cast<std::size_t>(i)); });
 
     const bool starting = w.steps == 0;
-    const BodyTotals totals =
-        deterministic_sum(n, [&](std::ptrdiff_t i) { return kick_body(w, static_cast<std::size_t>(i), starting); });
+    const BodyTotals totals = deterministic_sum_of_chunks(
+        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting); });
     EnergyLedger& ledger = w.ledger;
     if (totals.leaving > 0) {
         take_out_leaving_bodies(w);
@@ -560,11 +587,8 @@ void step_end(World3d& w) {
     const double dt = w.dt_s;
     // Inlined into the loop (the drift is inlined into it, rigid_rotation_3d.hpp): called, the
     // lambda cost as much as the call it saved.
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) __attribute__((always_inline)) {
-        // The pose's matrix: step_begin posed every body at the orientation the drift starts from.
-        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
-            update_position_3d(w.bodies[i], w.scratch.rotations[i], dt);
-    });
+    parallel_for_runs(static_cast<std::ptrdiff_t>(w.bodies.size()),
+                      [&](std::ptrdiff_t begin, std::ptrdiff_t end) { drift_run(w, begin, end, dt); });
     if (w.external_loads.any()) w.ledger.external_work_j += external_load_work(w);
     w.time_s += dt;
     ++w.steps;
