@@ -97,8 +97,11 @@ void size_pose_arrays(World3d& w) {
 // turned vertices only by round-off and by the 1e-12 of the box's size that box_frame allows a
 // vertex off its corner. What the frame says is read into locals before it is needed after a
 // store: a store through the output pointers could alias the frame, which would then be read again.
-[[gnu::always_inline]] inline Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
-                const Polyhedron& shape, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
+// Inlined into pose_body and so into pose_run's copies: called from the AVX copy, it would be the
+// baseline one (world/vex_clones.hpp).
+[[gnu::always_inline]] inline Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame,
+                                              const Vec3* body_directions, const Polyhedron& shape, Vec3* directions,
+                                              Vec3* vertices_m, Vec3* normals) {
     const PackedRotation turn = packed(rotation);
     const PackedVec3 d[3] = {turn * body_directions[0], turn * body_directions[1], turn * body_directions[2]};
     const Vec3 h = frame.half_lengths_m;
@@ -160,6 +163,7 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
 // view of it the narrow phase reads (WorldScratch3d::posed, written here so that the bodies are
 // gone through once), from its orientation's matrix (one a body, kept for the kick and the
 // drift). What is read from the body is read before the first store, for pose_box's reason.
+// Inlined into pose_run, for pose_box's other reason.
 [[gnu::always_inline]] inline void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
     const RigidBody3d& b = w.bodies[i];
@@ -585,8 +589,6 @@ void step_begin(World3d& w) {
 
 void step_end(World3d& w) {
     const double dt = w.dt_s;
-    // Inlined into the loop (the drift is inlined into it, rigid_rotation_3d.hpp): called, the
-    // lambda cost as much as the call it saved.
     parallel_for_runs(static_cast<std::ptrdiff_t>(w.bodies.size()),
                       [&](std::ptrdiff_t begin, std::ptrdiff_t end) { drift_run(w, begin, end, dt); });
     if (w.external_loads.any()) w.ledger.external_work_j += external_load_work(w);
