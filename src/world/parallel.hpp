@@ -47,6 +47,50 @@ void parallel_for(std::ptrdiff_t n, Body body) {
     for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
 }
 
+/// parallel_for's schedule with the items given a run at a time: run(begin, end) for each run of
+/// run_length(n) consecutive items (all n at once below parallel_threshold). For a loop whose
+/// items are worked by a function compiled apart (world/vex_clones.hpp): one call a run, not an
+/// item. Which thread takes a run never changes what it computes (rule 1).
+template <class Run>
+void parallel_for_runs(std::ptrdiff_t n, Run run) {
+    if (n < parallel_threshold) {
+        if (n > 0) run(std::ptrdiff_t{0}, n);
+        return;
+    }
+    const std::ptrdiff_t length = run_length(n);
+    const std::ptrdiff_t runs = (n + length - 1) / length;
+#pragma omp parallel for schedule(dynamic)
+    for (std::ptrdiff_t r = 0; r < runs; ++r) run(r * length, std::min(n, (r + 1) * length));
+}
+
+/// deterministic_sum of terms whose chunks are summed by chunk_sum(begin, end): it must return
+/// Value{} plus the terms of begin .. end - 1 added in order, as deterministic_sum's chunk does;
+/// then the total is the same bits as deterministic_sum's. For terms worked by a function
+/// compiled apart (world/vex_clones.hpp): one call a chunk, not a term.
+template <class ChunkSum>
+auto deterministic_sum_of_chunks(std::ptrdiff_t n, ChunkSum chunk_sum) {
+    using Value = std::decay_t<decltype(chunk_sum(std::ptrdiff_t{0}, std::ptrdiff_t{0}))>;
+    const std::ptrdiff_t chunk = run_length(n);
+    const std::ptrdiff_t chunks = (n + chunk - 1) / chunk;
+    if (chunks <= 1) return n > 0 ? chunk_sum(std::ptrdiff_t{0}, n) : Value{};
+    union Slot {  // as in deterministic_sum: constructed by its chunk, no memset of all slots
+        Slot() {}
+        Value value;
+    };
+    Slot partial[max_sum_chunks];
+    if (n >= parallel_threshold) {
+#pragma omp parallel for schedule(dynamic)
+        for (std::ptrdiff_t c = 0; c < chunks; ++c)
+            std::construct_at(&partial[c].value, chunk_sum(c * chunk, std::min(n, (c + 1) * chunk)));
+    } else {
+        for (std::ptrdiff_t c = 0; c < chunks; ++c)
+            std::construct_at(&partial[c].value, chunk_sum(c * chunk, std::min(n, (c + 1) * chunk)));
+    }
+    Value total{};
+    for (std::ptrdiff_t c = 0; c < chunks; ++c) total += partial[c].value;
+    return total;
+}
+
 /// sum_{i < n} term(i), in the chunked order of rule 3 (parallel over chunks when n is large).
 /// The value may be a double or a small struct of totals with +=, summed member by member; a
 /// term may also write its own item's slots (rule 1), so one pass can both update and total.

@@ -11,10 +11,12 @@
 #endif
 
 #include "dynamics/rigid_rotation_3d.hpp"
+#include "geometry/packed_vec3.hpp"
 #include "laws/contact_law_3d.hpp"
 #include "laws/double_lanes.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 #include "world/parallel.hpp"
+#include "world/vex_clones.hpp"
 
 namespace blockdem {
 namespace {
@@ -73,36 +75,6 @@ void size_pose_arrays(World3d& w) {
     s.posed.resize(n);
 }
 
-// A vector with its x and y in the two lanes of one 16-byte register and its z apart: the
-// pose's sums and products then take two operations a vector where Vec3's take three (the build
-// has no -march: scalar SSE2, one operation an instruction). Each lane rounds as the scalar
-// expression written the same way (laws/double_lanes.hpp), so the results are Vec3's bits.
-struct PackedVec3 {
-    DoubleLanes xy;
-    double z;
-};
-inline PackedVec3 packed(Vec3 v) { return {lanes(v.x, v.y), v.z}; }
-inline PackedVec3 operator+(const PackedVec3& a, const PackedVec3& b) { return {a.xy + b.xy, a.z + b.z}; }
-inline PackedVec3 operator-(const PackedVec3& a, const PackedVec3& b) { return {a.xy - b.xy, a.z - b.z}; }
-inline PackedVec3 operator*(double s, const PackedVec3& a) { return {lanes(s) * a.xy, s * a.z}; }
-inline void store(const PackedVec3& a, Vec3* to) {
-    std::memcpy(static_cast<void*>(to), &a.xy, sizeof(a.xy));  // x and y, the first 16 bytes of a Vec3 (trivially copyable)
-    to->z = a.z;
-}
-inline PackedVec3 absolute(const PackedVec3& a) { return {lane_max(a.xy, -a.xy), std::abs(a.z)}; }
-
-// The rotation matrix by columns, packed: R v = c0 v.x + c1 v.y + c2 v.z, summed in Matrix3d's
-// order, so the same bits as rotation * v.
-struct PackedRotation {
-    PackedVec3 columns[3];
-};
-inline PackedRotation packed(const Matrix3d& r) {
-    return {{packed(r.column(0)), packed(r.column(1)), packed(r.column(2))}};
-}
-inline PackedVec3 operator*(const PackedRotation& r, Vec3 v) {
-    return v.x * r.columns[0] + v.y * r.columns[1] + v.z * r.columns[2];
-}
-
 // The 8 corners centre +/- a +/- b +/- c, corner k on the + side of a when bit 0 of k is set, of
 // b for bit 1, of c for bit 2 (BoxFrame3d::vertex_corner's numbering). Inlined at both calls:
 // called, its arguments went through memory (116 instructions a box where 66 do the work).
@@ -125,18 +97,27 @@ inline PackedVec3 operator*(const PackedRotation& r, Vec3 v) {
 // turned vertices only by round-off and by the 1e-12 of the box's size that box_frame allows a
 // vertex off its corner. What the frame says is read into locals before it is needed after a
 // store: a store through the output pointers could alias the frame, which would then be read again.
-Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame, const Vec3* body_directions,
-                const Polyhedron& shape, Vec3* directions, Vec3* vertices_m, Vec3* normals) {
+// Inlined into pose_body and so into pose_run's copies: called from the AVX copy, it would be the
+// baseline one (world/vex_clones.hpp).
+[[gnu::always_inline]] inline Aabb3d pose_box(const Matrix3d& rotation, Vec3 centre_m, const BoxFrame3d& frame,
+                                              const Vec3* body_directions, const Polyhedron& shape, Vec3* directions,
+                                              Vec3* vertices_m, Vec3* normals) {
     const PackedRotation turn = packed(rotation);
     const PackedVec3 d[3] = {turn * body_directions[0], turn * body_directions[1], turn * body_directions[2]};
     const Vec3 h = frame.half_lengths_m;
     const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
     // Turning -d gives exactly minus turning d (round-to-nearest is symmetric), so a normal that
-    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it. The
-    // normals are the first stores: the frame's signs and directions are each read once there,
-    // where a copy made before them cost a dozen instructions more.
+    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it: d_i goes to
+    // the face along +d_i and -d_i (its sign bit flipped, as the product by -1 flips it) to the
+    // one along -d_i (face_of), so no product by the face's sign nor read of its direction a
+    // face. The faces are read into a local first: a store through normals could alias the frame.
     if (frame.normals_are_directions) {
-        for (std::size_t k = 0; k < 6; ++k) store(frame.face_sign[k] * d[frame.face_direction[k]], &normals[k]);
+        std::size_t face_of[3][2];
+        for (std::size_t k = 0; k < 3; ++k) face_of[k][0] = frame.face_of[k][0], face_of[k][1] = frame.face_of[k][1];
+        for (std::size_t k = 0; k < 3; ++k) {
+            store(d[k], &normals[face_of[k][0]]);
+            store(PackedVec3{-d[k].xy, -d[k].z}, &normals[face_of[k][1]]);
+        }
     } else {
         for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * shape.face_normals[k];
     }
@@ -182,7 +163,8 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
 // view of it the narrow phase reads (WorldScratch3d::posed, written here so that the bodies are
 // gone through once), from its orientation's matrix (one a body, kept for the kick and the
 // drift). What is read from the body is read before the first store, for pose_box's reason.
-void pose_body(World3d& w, std::size_t i) {
+// Inlined into pose_run, for pose_box's other reason.
+[[gnu::always_inline]] inline void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
     const RigidBody3d& b = w.bodies[i];
     const Matrix3d rotation = rotation_matrix_by_products(b.orientation);
@@ -202,6 +184,18 @@ void pose_body(World3d& w, std::size_t i) {
     s.angular_velocity_world_rad_s[i] = omega_world_rad_s;
     s.is_static[i] = is_static;
     s.posed[i] = {&b.shape, &edges, vertices, normals, directions, centre_m, &frame};
+}
+
+// Steps 1 and 2 for bodies begin .. end - 1, and their forces set to gravity for step 5
+// (world/vex_clones.hpp: compiled for AVX where there is AVX).
+BLOCKDEM_VEX_CLONES void pose_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, Vec3 displacement_m,
+                                  Vec3 velocity_m_s) {
+    for (std::ptrdiff_t i = begin; i < end; ++i) {
+        place_driven_body(w, static_cast<std::size_t>(i), displacement_m, velocity_m_s);
+        pose_body(w, static_cast<std::size_t>(i));
+        w.bodies[i].force_n = {0.0, 0.0, -w.gravity_m_s2 * w.bodies[i].mass_kg};
+        w.bodies[i].torque_n_m = {};
+    }
 }
 
 // The mass a pair's dashpots use (docs/physics.md, "Which mass the damping uses").
@@ -520,7 +514,8 @@ BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     // The pose's matrix: the orientation is still the one at t.
     const double kinetic_j = update_velocity_3d(b, w.scratch.rotations[i], w.dt_s, starting);
     const double gravitational_j = b.mass_kg * w.gravity_m_s2 * b.position_m.z;
-    if (is_outside(w.domain, w.scratch.boxes[i])) {
+    // Without a model extent (domain.active false) nothing leaves: no call a body to find it out.
+    if (w.domain.active && is_outside(w.domain, w.scratch.boxes[i])) {
         e.leaving_j = kinetic_j + gravitational_j;
         e.leaving = 1;
     } else {
@@ -528,6 +523,23 @@ BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
         e.gravitational_j = gravitational_j;
     }
     return e;
+}
+
+// The drift of bodies begin .. end - 1 (world/vex_clones.hpp: compiled for AVX where there is AVX).
+BLOCKDEM_VEX_CLONES void drift_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, double dt_s) {
+    for (std::ptrdiff_t i = begin; i < end; ++i) {
+        // The pose's matrix: step_begin posed every body at the orientation the drift starts from.
+        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
+            update_position_3d(w.bodies[i], w.scratch.rotations[i], dt_s);
+    }
+}
+
+// The kick of bodies begin .. end - 1, their totals added in body order (a chunk of
+// deterministic_sum_of_chunks; world/vex_clones.hpp).
+BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting) {
+    BodyTotals totals{};
+    for (std::ptrdiff_t i = begin; i < end; ++i) totals += kick_body(w, static_cast<std::size_t>(i), starting);
+    return totals;
 }
 
 // The bodies that left now, in body order (the list has one order at any thread count).
@@ -548,11 +560,8 @@ void step_begin(World3d& w) {
     const auto n = static_cast<std::ptrdiff_t>(w.bodies.size());
     const Vec3 table_velocity_m_s = (1.0 / dt) * (d_now - d_before);
     size_pose_arrays(w);
-    parallel_for(n, [&](std::ptrdiff_t i) {
-        place_driven_body(w, static_cast<std::size_t>(i), d_now, table_velocity_m_s);
-        pose_body(w, static_cast<std::size_t>(i));
-        w.bodies[i].force_n = {0.0, 0.0, -w.gravity_m_s2 * w.bodies[i].mass_kg};
-        w.bodies[i].torque_n_m = {};
+    parallel_for_runs(n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+        pose_run(w, begin, end, d_now, table_velocity_m_s);
     });
     find_contacts(w);
     // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
@@ -562,8 +571,8 @@ void step_begin(World3d& w) {
         parallel_for(n, [&](std::ptrdiff_t i) { add_external_load(w, static_cast<std::size_t>(i)); });
 
     const bool starting = w.steps == 0;
-    const BodyTotals totals =
-        deterministic_sum(n, [&](std::ptrdiff_t i) { return kick_body(w, static_cast<std::size_t>(i), starting); });
+    const BodyTotals totals = deterministic_sum_of_chunks(
+        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting); });
     EnergyLedger& ledger = w.ledger;
     if (totals.leaving > 0) {
         take_out_leaving_bodies(w);
@@ -580,11 +589,8 @@ void step_begin(World3d& w) {
 
 void step_end(World3d& w) {
     const double dt = w.dt_s;
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()), [&](std::ptrdiff_t i) {
-        // The pose's matrix: step_begin posed every body at the orientation the drift starts from.
-        if (w.kinds[i] == BodyKind3d::dynamic && !is_taken_out(w.domain, i))
-            update_position_3d(w.bodies[i], w.scratch.rotations[i], dt);
-    });
+    parallel_for_runs(static_cast<std::ptrdiff_t>(w.bodies.size()),
+                      [&](std::ptrdiff_t begin, std::ptrdiff_t end) { drift_run(w, begin, end, dt); });
     if (w.external_loads.any()) w.ledger.external_work_j += external_load_work(w);
     w.time_s += dt;
     ++w.steps;

@@ -1,0 +1,52 @@
+#!/usr/bin/python3
+"""The S3D wall's 1e4 bricks on one thread and on two, by the wall clock, alternated, with the ticks the
+host stole from this VM during each run.
+
+usage: MIN_TIME=1 thread_ratio_3d.py ROUNDS BENCH [BENCH ...]
+  each round runs every BENCH (a blockdem_bench) at 1 then 2 threads:
+  OMP_NUM_THREADS=t BENCH --benchmark_filter=BrickWall3d/10000/t/ --benchmark_min_time=MIN_TIME
+Steal is the 8th number of /proc/stat's cpu lines, read before and after each run; the summary
+gives the best-over-best ratio and the ratios of the rounds in which neither run saw any.
+"""
+import json, os, subprocess, sys
+
+def steal():
+    out = {}
+    with open('/proc/stat') as f:
+        for line in f:
+            if line.startswith('cpu'):
+                parts = line.split()
+                out[parts[0]] = int(parts[8])
+    return out
+
+def run(bench, threads, min_time):
+    env = dict(os.environ, OMP_NUM_THREADS=str(threads))
+    before = steal()
+    load = os.getloadavg()[0]
+    out = subprocess.run([bench, f'--benchmark_filter=BrickWall3d/10000/{threads}/', f'--benchmark_min_time={min_time}',
+                          '--benchmark_format=json'], env=env, capture_output=True, text=True, check=True).stdout
+    after = steal()
+    b = json.loads(out)['benchmarks'][0]
+    ticks = {k: after[k] - before[k] for k in after}
+    return b['box-steps/s'], b['real_time'], ticks, load
+
+rounds = int(sys.argv[1])
+min_time = float(os.environ.get('MIN_TIME', '1'))
+benches = sys.argv[2:]
+rows = {bch: [] for bch in benches}
+for r in range(rounds):
+    for bch in benches:
+        one = run(bch, 1, min_time)
+        two = run(bch, 2, min_time)
+        ratio = two[0] / one[0]
+        rows[bch].append((one, two, ratio))
+        print(f'round {r} {bch}: 1t {one[0]:.3e} (steal {one[2]["cpu"]}, load {one[3]:.2f})  '
+              f'2t {two[0]:.3e} (steal {two[2]["cpu"]}: cpu0 {two[2]["cpu0"]} cpu1 {two[2]["cpu1"]}, load {two[3]:.2f})  ratio {ratio:.3f}',
+              flush=True)
+for bch, rs in rows.items():
+    clean = [x for x in rs if x[0][2]['cpu'] == 0 and x[1][2]['cpu'] == 0]
+    best1 = max(x[0][0] for x in rs)
+    best2 = max(x[1][0] for x in rs)
+    print(f'{bch}: best 1t {best1:.3e}, best 2t {best2:.3e}, best over best {best2 / best1:.3f}; '
+          f'ratios {", ".join(f"{x[2]:.3f}" for x in rs)}; runs without steal: {len(clean)} of {len(rs)}'
+          + (f', their ratios {", ".join(f"{x[2]:.3f}" for x in clean)}' if clean else ''))
