@@ -353,7 +353,7 @@ struct LawTotals {
 };
 
 // The pair's motion (law_3d::PairMotion): a body that is not dynamic moves without turning.
-PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
+[[gnu::always_inline]] inline PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
     const Vec3 omega_a =
         w.kinds[a] == BodyKind3d::dynamic ? w.scratch.angular_velocity_world_rad_s[a] : Vec3{};
     const Vec3 omega_b =
@@ -365,7 +365,7 @@ PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
 }
 
 // The pair's dashpot coefficients per share: 2 h sqrt(k) times sqrt(M / S) (law_3d::LawConstants).
-PairDashpots pair_dashpots(const LawConstants& k, const ContactPairSums3d& pair) {
+[[gnu::always_inline]] inline PairDashpots pair_dashpots(const LawConstants& k, const ContactPairSums3d& pair) {
     const double root_mass = std::sqrt(pair.dashpot_mass_per_share_kg);
     return {k.cn_per_root_mass * root_mass, k.cs_per_root_mass * root_mass};
 }
