@@ -10,20 +10,6 @@
 
 #include "geometry/vec3.hpp"
 
-// BLOCKDEM_LANES_CLONES, an attribute for a function that holds a loop of lane arithmetic: where
-// the compiler can (GCC on x86-64 ELF), the function is built twice, for plain x86-64 and for AVX,
-// and the loader picks the one the processor runs (target_clones, an ifunc). Why: SSE2's two-operand
-// instructions overwrite a source, so the lanes' code spent about one register copy in six on
-// keeping sources (the 3-D law: 57 of 347 instructions an iteration); AVX's three-operand forms of
-// the same 16-byte operations need none. The same bits on both: each operation is the same IEEE
-// operation on the same two lanes, "avx" brings no fused multiply-add, and the compiler does not
-// reorder floating-point arithmetic. Elsewhere the attribute is empty and the function is built once.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
-#define BLOCKDEM_LANES_CLONES gnu::target_clones("avx", "default")
-#else
-#define BLOCKDEM_LANES_CLONES
-#endif
-
 namespace blockdem {
 
 using DoubleLanes = double __attribute__((vector_size(16)));  ///< two doubles, one a point
