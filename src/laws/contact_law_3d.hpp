@@ -276,7 +276,8 @@ BLOCKDEM_QUAD PairQuads pair_quads(const LawConstants& k, const PairMotion& m, c
 BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuads& m, ContactPoint3d* p,
                                   PairLaneSums& l) {
     const QuadLanes zero = quad(0.0);
-    const QuadLanes share = quad(p[0].stiffness_share, p[1].stiffness_share, p[2].stiffness_share, p[3].stiffness_share);
+    const QuadLanes share =
+        quad(p[0].stiffness_share, p[1].stiffness_share, p[2].stiffness_share, p[3].stiffness_share);
     const QuadLanes overlap_m = quad(p[0].overlap_m, p[1].overlap_m, p[2].overlap_m, p[3].overlap_m);
     const Vec3Quad normal = quad(p[0].normal, p[1].normal, p[2].normal, p[3].normal);
     const Vec3Quad r = quad(p[0].point_m, p[1].point_m, p[2].point_m, p[3].point_m) - m.centroid_a_m;

@@ -456,7 +456,8 @@ template <bool four_lanes>
 // pair_law with four lanes, the whole of it compiled for AVX (its three-operand forms of the
 // two-lane code too), for processors that run it (quad_lanes_usable).
 [[gnu::noinline, gnu::target("avx"), gnu::flatten]] LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
-                                                                           ContactPairSums3d& pair, Vec3 table_step_m) {
+                                                                           ContactPairSums3d& pair,
+                                                                           const Vec3& table_step_m) {
     return pair_law<true>(w, constants, pair, table_step_m);
 }
 #endif
@@ -516,14 +517,12 @@ void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
     const LawConstants constants = law_constants(w.contact, w.dt_s);
     const auto n = static_cast<std::ptrdiff_t>(pairs.size());
+    const auto two_lanes = [&](std::ptrdiff_t i) { return pair_law<false>(w, constants, pairs[i], table_step_m); };
 #if BLOCKDEM_QUAD_LANES
-    const LawTotals t =
-        quad_lanes_usable()
-            ? deterministic_sum(n, [&](std::ptrdiff_t i) { return pair_law_avx(w, constants, pairs[i], table_step_m); })
-            : deterministic_sum(n, [&](std::ptrdiff_t i) { return pair_law<false>(w, constants, pairs[i], table_step_m); });
+    const auto four_lanes = [&](std::ptrdiff_t i) { return pair_law_avx(w, constants, pairs[i], table_step_m); };
+    const LawTotals t = quad_lanes_usable() ? deterministic_sum(n, four_lanes) : deterministic_sum(n, two_lanes);
 #else
-    const LawTotals t =
-        deterministic_sum(n, [&](std::ptrdiff_t i) { return pair_law<false>(w, constants, pairs[i], table_step_m); });
+    const LawTotals t = deterministic_sum(n, two_lanes);
 #endif
     index_pairs_by_body(w.scratch, w.bodies.size());
     parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),

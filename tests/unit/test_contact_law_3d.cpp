@@ -209,7 +209,8 @@ bool compare_four(const Case& c, const ContactPoint3d (&points)[4], const PairLa
     const PairLanes pair_lanes_now = pair_lanes(c.motion, c.dashpots);
     const bool first_took = two_point_law(c.constants, pair_lanes_now, two[0], two[1], two_sums);
     const bool second_took = two_point_law(c.constants, pair_lanes_now, two[2], two[3], two_sums);
-    EXPECT_EQ(four_took, first_took && second_took) << "four lanes take the four points where two lanes take both halves";
+    EXPECT_EQ(four_took, first_took && second_took)
+        << "four lanes take the four points where two lanes take both halves";
     if (!four_took) {
         for (int i = 0; i < 4; ++i) expect_same_point(four[i], points[i]);  // nothing written
         expect_same_lanes(four_sums.force_n, start.force_n, "untouched sums");
