@@ -13,6 +13,7 @@
 #include "laws/coulomb_slider_3d.hpp"
 #include "laws/double_lanes.hpp"
 #include "laws/linear_spring_dashpot.hpp"
+#include "laws/quad_lanes.hpp"
 
 namespace blockdem::law_3d {
 
@@ -246,5 +247,103 @@ inline PairLanes pair_lanes(const PairMotion& m, const PairDashpots& d) {
     q.force_n = lane(force_n, 1);
     return true;
 }
+
+#if BLOCKDEM_QUAD_LANES
+// A pair's motion and dashpots in four lanes, and the law's three constants (PairLanes' and
+// LawConstants' two-lane ones), made once a pair.
+struct PairQuads {
+    Vec3Quad base_velocity_m_s;   ///< [m/s]
+    Vec3Quad turn_rate_rad_s;     ///< [rad/s]
+    Vec3Quad centroid_a_m;        ///< [m]
+    QuadLanes cn_per_share_N_s_m;        ///< [N s/m]
+    QuadLanes minus_cs_per_share_N_s_m;  ///< [N s/m]
+    QuadLanes kn_N_m;             ///< [N/m]
+    QuadLanes ks_dt_N;            ///< [N]
+    QuadLanes mu;
+};
+
+BLOCKDEM_QUAD PairQuads pair_quads(const LawConstants& k, const PairMotion& m, const PairDashpots& d) {
+    return {quad(m.base_velocity_m_s), quad(m.turn_rate_rad_s), quad(m.centroid_a_m),
+            quad(d.cn_per_share_N_s_m), quad(-d.cs_per_share_N_s_m), quad(k.law.kn_N_m), quad(k.law.ks_dt_N),
+            quad(k.law.mu)};
+}
+
+// two_point_law at four points p[0..3] of a pair at once, one lane each, for AVX (laws/quad_lanes.hpp):
+// the same operations in the same order, so each lane's result is its point's own; the sums added
+// to l as two_point_law at p[0], p[1] and then at p[2], p[3] adds them (the same bits). Writes the
+// four points and adds to l only where all four stick inside their caps; returns false, with
+// nothing written, otherwise (two_point_law then takes each two).
+BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuads& m, ContactPoint3d* p,
+                                  PairLaneSums& l) {
+    const QuadLanes zero = quad(0.0);
+    const QuadLanes share =
+        quad(p[0].stiffness_share, p[1].stiffness_share, p[2].stiffness_share, p[3].stiffness_share);
+    const QuadLanes overlap_m = quad(p[0].overlap_m, p[1].overlap_m, p[2].overlap_m, p[3].overlap_m);
+    const Vec3Quad normal = quad(p[0].normal, p[1].normal, p[2].normal, p[3].normal);
+    const Vec3Quad r = quad(p[0].point_m, p[1].point_m, p[2].point_m, p[3].point_m) - m.centroid_a_m;
+    const Vec3Quad relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, r);
+    const QuadLanes normal_speed = dot(relative, normal);
+    const Vec3Quad tangential = relative - normal_speed * normal;
+    // normal_spring_dashpot
+    const QuadLanes spring_n = (m.kn_N_m * share) * overlap_m;
+    const QuadLanes spring_and_dashpot_n = spring_n - (m.cn_per_share_N_s_m * share) * normal_speed;
+    const QuadLanes normal_n = termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
+                                                                               : quad_max(zero, spring_and_dashpot_n);
+    const QuadLanes normal_dashpot_n = normal_n - spring_n;
+    // carry_to_normal_for_slider
+    const Vec3Quad last_spring =
+        quad(p[0].shear.spring_n, p[1].shear.spring_n, p[2].shear.spring_n, p[3].shear.spring_n);
+    const QuadLanes spring_along = dot(last_spring, normal);
+    const Vec3Quad spring_in_plane = last_spring - spring_along * normal;
+    const QuadLanes spring_squared = dot(last_spring, last_spring);
+    const QuadLanes spring_in_plane_squared = spring_squared - spring_along * spring_along;
+    const Vec3Quad carried_spring =
+        select(spring_in_plane_squared > zero, quad_sqrt(spring_squared / spring_in_plane_squared), zero) *
+        spring_in_plane;
+    const Vec3Quad last_dashpot =
+        quad(p[0].shear.dashpot_n, p[1].shear.dashpot_n, p[2].shear.dashpot_n, p[3].shear.dashpot_n);
+    const QuadLanes dashpot_along = dot(last_dashpot, normal);
+    const QuadLanes dashpot_squared = dot(last_dashpot, last_dashpot);
+    const QuadLanes dashpot_in_plane_squared = dashpot_squared - dashpot_along * dashpot_along;
+    const Vec3Quad carried_dashpot =
+        select(dashpot_in_plane_squared > zero, quad_sqrt(dashpot_squared / dashpot_in_plane_squared), zero) *
+        last_dashpot;
+    // the slider, sticking
+    const QuadLanes limit_n = m.mu * quad_max(zero, normal_n);
+    const QuadLanes limit_squared = limit_n * limit_n;
+    const QuadLanes within_below = select(limit_squared >= quad(std::numeric_limits<double>::min()),
+                                          limit_squared * quad(1.0 - 1e-15), quad(-1.0));
+    const Vec3Quad trial = carried_spring - (m.ks_dt_N * share) * tangential;
+    const Vec3Quad dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
+    const Vec3Quad total = trial + dashpot;
+    const QuadLanes trial_squared = dot(trial, trial);
+    if (!all_four((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
+                  (dot(total, total) < within_below)))
+        return false;
+    const QuadLanes last_normal_dashpot_n = quad(p[0].normal_dashpot_n, p[1].normal_dashpot_n,
+                                                 p[2].normal_dashpot_n, p[3].normal_dashpot_n);
+    add_halves(l.normal_dashpot_power_w, (last_normal_dashpot_n + normal_dashpot_n) * normal_speed);
+    add_halves(l.shear_dashpot_power_w, dot(carried_dashpot + dashpot, tangential));
+    add_halves(l.share_overlap_squared_m2, share * overlap_m * overlap_m);
+    add_halves(l.spring_squared_per_share_n2, select(share > zero, trial_squared / share, zero));
+    const Vec3Quad force_n = normal_n * normal + total;
+    add_halves(l.force_n, force_n);
+    add_halves(l.torque_n_m, cross(r, force_n));
+    // Stored from the halves, each vector split once (a lane of a 32-byte vector read on its own
+    // is split again for each lane).
+    const DoubleLanes halves_normal_dashpot_n[2] = {low_half(normal_dashpot_n), high_half(normal_dashpot_n)};
+    const Vec3Lanes halves_trial[2] = {low_half(trial), high_half(trial)};
+    const Vec3Lanes halves_dashpot[2] = {low_half(dashpot), high_half(dashpot)};
+    const Vec3Lanes halves_force_n[2] = {low_half(force_n), high_half(force_n)};
+    for (int i = 0; i < 4; ++i) {
+        const int half = i / 2, j = i % 2;
+        p[i].normal_dashpot_n = halves_normal_dashpot_n[half][j];
+        p[i].shear = {lane(halves_trial[half], j), lane(halves_dashpot[half], j)};
+        p[i].sliding = false;
+        p[i].force_n = lane(halves_force_n[half], j);
+    }
+    return true;
+}
+#endif
 
 }  // namespace blockdem::law_3d

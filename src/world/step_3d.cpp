@@ -347,7 +347,7 @@ struct LawTotals {
 };
 
 // The pair's motion (law_3d::PairMotion): a body that is not dynamic moves without turning.
-PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
+[[gnu::always_inline]] inline PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
     const Vec3 omega_a =
         w.kinds[a] == BodyKind3d::dynamic ? w.scratch.angular_velocity_world_rad_s[a] : Vec3{};
     const Vec3 omega_b =
@@ -359,7 +359,7 @@ PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
 }
 
 // The pair's dashpot coefficients per share: 2 h sqrt(k) times sqrt(M / S) (law_3d::LawConstants).
-PairDashpots pair_dashpots(const LawConstants& k, const ContactPairSums3d& pair) {
+[[gnu::always_inline]] inline PairDashpots pair_dashpots(const LawConstants& k, const ContactPairSums3d& pair) {
     const double root_mass = std::sqrt(pair.dashpot_mass_per_share_kg);
     return {k.cn_per_root_mass * root_mass, k.cs_per_root_mass * root_mass};
 }
@@ -378,30 +378,13 @@ PairDashpots pair_dashpots(const LawConstants& k, const ContactPairSums3d& pair)
     torque_n_m += cross(r, f);
 }
 
-// The law at a pair's points, their forces summed into the pair's slot (the force on b and its
-// moment about a's centroid), the pair's energy terms returned. Two points at a time where both
-// stick inside their caps (two_point_law), one at a time otherwise.
-[[gnu::always_inline]] inline LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
-                                                  Vec3 table_step_m) {
-    ContactPoint3d* points = &w.contacts[pair.first_point];
-    const std::uint32_t a = points[0].key.body_a;
-    const std::uint32_t b = points[0].key.body_b;
-    const PairMotion m = pair_motion(w, a, b);
-    const PairDashpots dashpots = pair_dashpots(constants, pair);
-    const PairLanes both_lanes = pair_lanes(m, dashpots);
-    PairLaneSums l{};
-    PairEnergySums e;
-    Vec3 force_n, torque_n_m;
-    const auto one_point = [&](ContactPoint3d& c) {
-        one_point_law(m, constants, dashpots, c, e, force_n, torque_n_m);
-    };
-    std::uint32_t k = 0;
-    for (; k + 1 < pair.points; k += 2) {
-        if (two_point_law(constants, both_lanes, points[k], points[k + 1], l)) continue;
-        one_point(points[k]);
-        one_point(points[k + 1]);
-    }
-    if (k < pair.points) one_point(points[k]);
+// A pair's sums once its points are taken: the lanes' sums added across lanes to the points' taken
+// one at a time, the force and moment stored in the pair's slot, the energy terms times their
+// factors, and the table's work.
+[[gnu::always_inline]] inline LawTotals pair_totals(const World3d& w, const LawConstants& constants,
+                                                    ContactPairSums3d& pair, std::uint32_t a, std::uint32_t b,
+                                                    const PairLaneSums& l, PairEnergySums e, Vec3 force_n,
+                                                    Vec3 torque_n_m, Vec3 table_step_m) {
     force_n += lane_sum(l.force_n);
     torque_n_m += lane_sum(l.torque_n_m);
     e.share_overlap_squared_m2 += lane_sum(l.share_overlap_squared_m2);
@@ -421,6 +404,57 @@ PairDashpots pair_dashpots(const LawConstants& k, const ContactPairSums3d& pair)
     if (w.kinds[b] == BodyKind3d::driven) t.table_work_j -= dot(force_n, table_step_m);
     return t;
 }
+
+// The law at a pair's points, their forces summed into the pair's slot (the force on b and its
+// moment about a's centroid), the pair's energy terms returned. Two points at a time where both
+// stick inside their caps (two_point_law), one at a time otherwise. With four_lanes (AVX), a pair
+// of four points, the usual face-to-face contact, first goes through four_point_law: where all four
+// stick, its sums are those of two_point_law at its two halves, to the bit, and kept in registers
+// (no point leaves the line, so no address of them is taken); otherwise the pair starts again two
+// points at a time (what four_point_law computed is dropped: it wrote nothing).
+template <bool four_lanes>
+[[gnu::always_inline]] inline LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
+                                                  Vec3 table_step_m) {
+    ContactPoint3d* points = &w.contacts[pair.first_point];
+    const std::uint32_t a = points[0].key.body_a;
+    const std::uint32_t b = points[0].key.body_b;
+    const PairMotion m = pair_motion(w, a, b);
+    const PairDashpots dashpots = pair_dashpots(constants, pair);
+#if BLOCKDEM_QUAD_LANES
+    if constexpr (four_lanes) {
+        if (pair.points == 4) {
+            PairLaneSums l{};
+            if (four_point_law(constants.law.termination, pair_quads(constants, m, dashpots), points, l))
+                return pair_totals(w, constants, pair, a, b, l, PairEnergySums{}, Vec3{}, Vec3{}, table_step_m);
+        }
+    }
+#endif
+    const PairLanes both_lanes = pair_lanes(m, dashpots);
+    PairLaneSums l{};
+    PairEnergySums e;
+    Vec3 force_n, torque_n_m;
+    const auto one_point = [&](ContactPoint3d& c) {
+        one_point_law(m, constants, dashpots, c, e, force_n, torque_n_m);
+    };
+    std::uint32_t k = 0;
+    for (; k + 1 < pair.points; k += 2) {
+        if (two_point_law(constants, both_lanes, points[k], points[k + 1], l)) continue;
+        one_point(points[k]);
+        one_point(points[k + 1]);
+    }
+    if (k < pair.points) one_point(points[k]);
+    return pair_totals(w, constants, pair, a, b, l, e, force_n, torque_n_m, table_step_m);
+}
+
+#if BLOCKDEM_QUAD_LANES
+// pair_law with four lanes, the whole of it compiled for AVX (its three-operand forms of the
+// two-lane code too), for processors that run it (quad_lanes_usable).
+[[gnu::noinline, gnu::target("avx"), gnu::flatten]] LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
+                                                                           ContactPairSums3d& pair,
+                                                                           const Vec3& table_step_m) {
+    return pair_law<true>(w, constants, pair, table_step_m);
+}
+#endif
 
 // Each body's pairs in contact, in table order: a counting sort by body (serial, a few
 // instructions a pair: the pass that added the sums onto the bodies here cost about four times
@@ -476,9 +510,14 @@ void gather_pair_sums(World3d& w, std::uint32_t i) {
 void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
     const LawConstants constants = law_constants(w.contact, w.dt_s);
-    const LawTotals t = deterministic_sum(static_cast<std::ptrdiff_t>(pairs.size()), [&](std::ptrdiff_t i) {
-        return pair_law(w, constants, pairs[i], table_step_m);
-    });
+    const auto n = static_cast<std::ptrdiff_t>(pairs.size());
+    const auto two_lanes = [&](std::ptrdiff_t i) { return pair_law<false>(w, constants, pairs[i], table_step_m); };
+#if BLOCKDEM_QUAD_LANES
+    const auto four_lanes = [&](std::ptrdiff_t i) { return pair_law_avx(w, constants, pairs[i], table_step_m); };
+    const LawTotals t = quad_lanes_usable() ? deterministic_sum(n, four_lanes) : deterministic_sum(n, two_lanes);
+#else
+    const LawTotals t = deterministic_sum(n, two_lanes);
+#endif
     index_pairs_by_body(w.scratch, w.bodies.size());
     parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
                  [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::uint32_t>(i)); });

@@ -5,6 +5,8 @@
 // cap. The forces and the history carried to the next step are compared to the bit (each lane
 // rounds as the scalar expression written the same way); the energy sums to 1e-12 (the lanes add a
 // pair's terms lane by lane, point_law one point after the other: the same terms in another order).
+// four_point_law (AVX), four points at once, is held against two_point_law at its two halves: the
+// points and the sums to the bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -169,6 +171,117 @@ TEST(ContactLaw3d, ASpringAtItsCapAfterATurnIsLeftToTheSlider) {
     }
     EXPECT_GT(taken, 0);  // the sweep reaches caps the lanes take
 }
+
+#if BLOCKDEM_QUAD_LANES
+void expect_same_lanes(DoubleLanes a, DoubleLanes b, const char* what) {
+    EXPECT_EQ(a[0], b[0]) << what;
+    EXPECT_EQ(a[1], b[1]) << what;
+}
+
+void expect_same_lanes(const Vec3Lanes& a, const Vec3Lanes& b, const char* what) {
+    expect_same_lanes(a.x, b.x, what);
+    expect_same_lanes(a.y, b.y, what);
+    expect_same_lanes(a.z, b.z, what);
+}
+
+void expect_same_point(const ContactPoint3d& a, const ContactPoint3d& b) {
+    expect_same_vector(a.force_n, b.force_n, "force");
+    expect_same_vector(a.shear.spring_n, b.shear.spring_n, "shear spring");
+    expect_same_vector(a.shear.dashpot_n, b.shear.dashpot_n, "shear dashpot");
+    EXPECT_EQ(a.normal_dashpot_n, b.normal_dashpot_n);
+    EXPECT_EQ(a.sliding, b.sliding);
+}
+
+// four_point_law in an AVX function, as world/step_3d.cpp's pair_law_avx takes it.
+[[gnu::target("avx"), gnu::flatten]] bool four_point_law_in_avx(const Case& c, ContactPoint3d* p, PairLaneSums& l) {
+    return four_point_law(c.constants.law.termination, pair_quads(c.constants, c.motion, c.dashpots), p, l);
+}
+
+// Runs four_point_law at four points and two_point_law at their two halves; returns whether the
+// four lanes took them.
+// start: the sums of the pair's points before these four (the order of the additions shows only
+// on top of such sums).
+bool compare_four(const Case& c, const ContactPoint3d (&points)[4], const PairLaneSums& start) {
+    ContactPoint3d four[4], two[4];
+    for (int i = 0; i < 4; ++i) four[i] = two[i] = points[i];
+    PairLaneSums four_sums = start, two_sums = start;
+    const bool four_took = four_point_law_in_avx(c, four, four_sums);
+    const PairLanes pair_lanes_now = pair_lanes(c.motion, c.dashpots);
+    const bool first_took = two_point_law(c.constants, pair_lanes_now, two[0], two[1], two_sums);
+    const bool second_took = two_point_law(c.constants, pair_lanes_now, two[2], two[3], two_sums);
+    EXPECT_EQ(four_took, first_took && second_took)
+        << "four lanes take the four points where two lanes take both halves";
+    if (!four_took) {
+        for (int i = 0; i < 4; ++i) expect_same_point(four[i], points[i]);  // nothing written
+        expect_same_lanes(four_sums.force_n, start.force_n, "untouched sums");
+        return false;
+    }
+    for (int i = 0; i < 4; ++i) expect_same_point(four[i], two[i]);
+    // The sums to the bit: four_point_law adds its halves in two_point_law's order.
+    expect_same_lanes(four_sums.force_n, two_sums.force_n, "force");
+    expect_same_lanes(four_sums.torque_n_m, two_sums.torque_n_m, "moment");
+    expect_same_lanes(four_sums.share_overlap_squared_m2, two_sums.share_overlap_squared_m2, "w o^2");
+    expect_same_lanes(four_sums.spring_squared_per_share_n2, two_sums.spring_squared_per_share_n2, "|F_s|^2 / w");
+    expect_same_lanes(four_sums.normal_dashpot_power_w, two_sums.normal_dashpot_power_w, "normal dashpot power");
+    expect_same_lanes(four_sums.shear_dashpot_power_w, two_sums.shear_dashpot_power_w, "shear dashpot power");
+    return true;
+}
+
+TEST(ContactLaw3d, FourPointsInLanesAreTwoPointsTwice) {
+    // four_point_law (AVX) against two_point_law at each half, which the test above holds against
+    // point_law: the four points of one pair drawn as two draws of the ten families (the second's
+    // points under the first's law and motion, so that some stick and some reach their caps).
+    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX on this processor: the four lanes are not run";
+    std::mt19937_64 r(17);
+    int taken = 0, left = 0;
+    constexpr int draws = 50000;
+    for (int k = 0; k < draws; ++k) {
+        const Case c = draw(r, k % 10);
+        const Case d = draw(r, (k + k / 10) % 10);
+        const ContactPoint3d points[4] = {c.points[0], c.points[1], d.points[0], d.points[1]};
+        // Sums of earlier points of the pair, of the size of these points' terms.
+        std::uniform_real_distribution<double> u(-1, 1);
+        const auto some = [&](double scale) { return lanes(scale * u(r), scale * u(r)); };
+        const auto some3 = [&](double scale) { return Vec3Lanes{some(scale), some(scale), some(scale)}; };
+        const PairLaneSums start{some3(10.0), some3(1.0), some(1e-10), some(1e-5), some(1e-3), some(1e-3)};
+        if (compare_four(c, points, start)) ++taken; else ++left;
+        if (::testing::Test::HasFailure()) break;
+    }
+    EXPECT_GT(taken, draws / 20);  // not vacuous: both outcomes are met
+    EXPECT_GT(left, draws / 20);
+    std::printf("four lanes took %d of %d groups of four points\n", taken, draws);
+}
+
+TEST(ContactLaw3d, FourPointsAtTheirCapsAfterATurnGoAsTwo) {
+    // The sweep of ASpringAtItsCapAfterATurnIsLeftToTheSlider through the four lanes.
+    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX on this processor: the four lanes are not run";
+    ContactParameters p{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = 0.0, .h_s = 0.0};
+    Case c;
+    c.constants = law_constants(p, 1e-6);
+    c.dashpots = {0.0, 2000.0};
+    const Vec3 last{-0.37700325163525505, -0.11769282325733366, -0.048260505954373922};
+    const Vec3 n{-0.75951379784397355, 0.3539625117994063, -0.54575574309875963};
+    c.motion = {(1e-4 / (p.ks_N_m * 1e-6)) * carried_into_plane(last, n), {}, {}};
+    double overlap_m = length(last) / p.mu / p.kn_N_m;
+    int taken = 0, left = 0;
+    for (int i = 0; i < 4000; ++i, overlap_m = std::nextafter(overlap_m, 1.0)) {
+        ContactPoint3d points[4];
+        for (int j = 0; j < 4; ++j) {
+            points[j].normal = n;
+            points[j].overlap_m = j == 3 ? overlap_m : 2.0 * overlap_m;  // the last at the cap
+            points[j].stiffness_share = 1.0;
+            points[j].shear = {last, {}};
+        }
+        if (compare_four(c, points, PairLaneSums{})) ++taken; else ++left;
+        if (::testing::Test::HasFailure()) {
+            ADD_FAILURE() << "at overlap " << overlap_m << " m (step " << i << " of the sweep)";
+            break;
+        }
+    }
+    EXPECT_GT(taken, 0);
+    EXPECT_GT(left, 0);
+}
+#endif
 
 }  // namespace
 }  // namespace blockdem
