@@ -156,10 +156,12 @@ void print(double dt_s, const LedgerBreakdown& t) {
                 t.pair_steps, t.share_change_j, t.share_change_abs_j);
 }
 
-// A 200-brick wall (7 courses), 0.1 s of shaking at two steps. Measured (docs/3d.md): balance
-// error 4.2e-3 at 1e-4 s and 3.2e-3 at 5e-5 s (0.10 at both with a full kn a point); the share
-// changes -0.040 and -0.042 J (0.65 % and 0.68 % of the ledger's scale); the jumps' net 0.009 and
-// 0.021 J of 3.7 and 3.4 J born (nearly all relabelled points at the same place).
+// A 200-brick wall (7 courses), 0.1 s of shaking at two steps. Measured (docs/3d.md), the courses
+// placed at their static compression (scenes/s3d_wall_3d.cpp): balance error 2.4e-3 at 1e-4 s and
+// 1.5e-3 at 5e-5 s; the share changes -0.0098 and -0.0121 J (0.15 % and 0.18 % of the ledger's
+// scale); the born and gone points' net 0.010 and 0.012 J of 1.45 and 1.33 J born (nearly all
+// relabelled points at the same place). Placed touching (before), the courses fell onto each
+// other in the settling and rang: 4.2e-3 and 3.2e-3, share changes 0.65 % and 0.68 %.
 TEST(WallLedger3d, ShakenWallLedgerCloses) {
     constexpr int bricks = 200;
     constexpr double shaking_s = 0.1;
@@ -174,16 +176,16 @@ TEST(WallLedger3d, ShakenWallLedgerCloses) {
         EXPECT_LT(t->balance_error, 0.01);
         // (e), unbooked: a share changes while loaded only where the polygon's shape changes at a
         // loaded corner (two corners at one place splitting their turn anew, a cut moving); it
-        // goes both ways and nets below 1 % of the scale (measured 0.65 % and 0.68 %).
+        // goes both ways and nets below 1 % of the scale (measured 0.15 % and 0.18 %).
         EXPECT_LT(std::abs(t->share_change_j), 0.01 * t->scale_j);
         // The points born and gone no longer carry energy in or out: their net is below 1 % of the
-        // scale (measured 0.15 % and 0.35 %; it was 9.4 % and 10 % with a full kn a point), while
+        // scale (measured 0.16 % and 0.18 %; it was 9.4 % and 10 % with a full kn a point), while
         // each of (a) and (b) is about 60 % of it (keys change, the springs at the same place).
         EXPECT_LT(std::abs(t->born_normal_j - t->gone_normal_j), 0.01 * t->scale_j);
-        // The shear springs restarted by key changes: below 0.5 % of the scale (measured 0.25 %).
+        // The shear springs restarted by key changes: below 0.5 % of the scale (measured 0.04 %).
         EXPECT_LT(t->gone_shear_j, 0.005 * t->scale_j);
     }
-    // Halving dt does not make it worse (measured 0.0251 and 0.0195 J): what is left is the
+    // Halving dt does not make it worse (measured 0.0147 and 0.0088 J): what is left is the
     // model's share changes and relabelling, not an error that grows as the step falls.
     EXPECT_LT(std::abs(fine.residual_j), 1.25 * std::abs(coarse.residual_j));
 }
