@@ -1,8 +1,10 @@
 #pragma once
 // The peers' scene S3D (shared/peers/three_d/README.md), so that our figures sit beside Bullet's,
 // ODE's and YADE's on the same wall: N bricks 0.2 x 0.1 x 0.1 m of 2000 kg/m^3 in two wythes,
-// each in running bond, 1 mm head and collar gaps, bed joints touching, on a driven base box
-// shaken out of plane (along y) by a = 0.3 g sin(4 pi t) from rest once the wall has settled.
+// each in running bond, 1 mm head and collar gaps, bed joints closed by the springs' static
+// compression (S3D places them touching; see s3d_wall_3d.cpp, course_sinking_m, for why), on a
+// driven base box shaken out of plane (along y) by a = 0.3 g sin(4 pi t) from rest once the wall
+// has settled.
 // The benchmark (benchmarks/bench_world_3d.cpp) and the thread-count test use it.
 #include <vector>
 
@@ -28,7 +30,8 @@ struct S3dWallDef {
 };
 
 /// The bricks' centres [m] (S3D's layout: C = round(sqrt(N)) bricks a wythe in even courses, C - 1
-/// shifted by half a pitch in odd ones, wythe centres at y = -/+ (t + gap) / 2, base top at z = 0);
+/// shifted by half a pitch in odd ones, wythe centres at y = -/+ (t + gap) / 2, base top at z = 0,
+/// each course lowered by its bed joints' static compression);
 /// returns them and sets per_course to C.
 std::vector<Vec3> s3d_brick_centres(const S3dWallDef& def, int& per_course);
 
