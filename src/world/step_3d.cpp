@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <limits>
 
@@ -289,18 +290,27 @@ void fill_chunk(World3d& w, std::size_t k) {
         const double mass_per_share_kg = reduced_mass(w, a, b) / (by_share ? shares : static_cast<double>(count));
         s.contact_pairs[pair_index] = {touching.candidate, first_point, count, by_share ? mass_per_share_kg : 0.0, {}, {}};
         ContactPoint3d* run = &w.contacts[first_point];
+        // The key as the two 64-bit words it is stored as: the pair's bodies, then the point's
+        // features (a's then b's, adjacent in ContactGeometry3d too). Built as four 32-bit fields
+        // it went through vector registers, about ten instructions a point.
+        std::uint64_t key_words[2];
+        const ContactKey3d bodies{a, b, 0, 0};
+        std::memcpy(key_words, &bodies, sizeof key_words);
+        static_assert(sizeof(ContactKey3d) == sizeof key_words);
+        static_assert(offsetof(ContactGeometry3d, feature_b) == offsetof(ContactGeometry3d, feature_a) + 4);
         for (std::uint32_t j = 0; j < count; ++j) {
             // Written field by field into the table's slot (a default point built and copied in
             // cost 0.3 M instructions a step on the 1000-brick wall). The history is
             // carry_history's to write, this step's state (force, sliding) the law's.
             const ContactGeometry3d& g = points[j];
             ContactPoint3d& p = run[j];
-            p.key = {a, b, g.feature_a, g.feature_b};
+            std::memcpy(&key_words[1], &g.feature_a, sizeof key_words[1]);
+            std::memcpy(static_cast<void*>(&p.key), key_words, sizeof key_words);
             p.point_m = g.point_m;
             p.normal = g.normal;
             p.overlap_m = g.overlap_m;
             p.stiffness_share = g.stiffness_share;
-            p.dashpot_mass_kg = by_share ? g.stiffness_share * mass_per_share_kg : mass_per_share_kg;
+            p.dashpot_mass_kg = (by_share ? g.stiffness_share : 1.0) * mass_per_share_kg;  // 1 M / n: the same bits
         }
         // Where last step's run of the pair is looked for first: where last step's pair of the
         // same rank began (exact while the set of pairs in contact holds; a hint only).
