@@ -5,6 +5,8 @@
 // same pair of features keeps its shear spring; one found for the first time starts at zero, and
 // one not found again is dropped (the 2-D table's rule, contact/contact_table.hpp).
 #include <compare>
+#include <cstddef>
+#include <cstring>
 #include <cstdint>
 #include <vector>
 
@@ -61,5 +63,84 @@ void carry_history(const std::vector<ContactPoint3d>& previous, std::vector<Cont
 /// point there is of run's pair, it is that pair's first and the point before it is not read.
 void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* run, std::size_t count,
                    std::size_t hint, bool hint_starts_a_run = false);
+
+/// p takes the history of last step's point before, of its key: the shear spring is the point's
+/// tangential displacement times its stiffness w ks, so a changed w scales it by w_now / w_before.
+[[gnu::always_inline]] inline void take_history(const ContactPoint3d& before, ContactPoint3d& p) {
+    p.normal_dashpot_n = before.normal_dashpot_n;
+    p.shear = before.shear;
+    const double share_before = before.stiffness_share;
+    if (p.stiffness_share != share_before)
+        p.shear.spring_n = share_before > 0.0 ? (p.stiffness_share / share_before) * p.shear.spring_n : Vec3{};
+}
+
+/// A point found for the first time starts with no history.
+[[gnu::always_inline]] inline void start_history(ContactPoint3d& p) {
+    p.normal_dashpot_n = 0.0;
+    p.shear = {};
+}
+
+namespace contact_key_words {
+// A key's bodies, and its features, each as one 64-bit word: equal where both fields are.
+inline std::uint64_t bodies(const ContactKey3d& k) {
+    static_assert(offsetof(ContactKey3d, body_b) == offsetof(ContactKey3d, body_a) + 4);
+    std::uint64_t w;
+    std::memcpy(&w, &k.body_a, sizeof w);
+    return w;
+}
+inline std::uint64_t features(const ContactKey3d& k) {
+    static_assert(offsetof(ContactKey3d, feature_b) == offsetof(ContactKey3d, feature_a) + 4);
+    std::uint64_t w;
+    std::memcpy(&w, &k.feature_a, sizeof w);
+    return w;
+}
+// The features as one word ordered as the key orders them.
+inline std::uint64_t features_order(const ContactKey3d& k) {
+    return (std::uint64_t{k.feature_a} << 32) | k.feature_b;
+}
+}  // namespace contact_key_words
+
+/// Whether previous[start, end) is exactly the run of key's pair of bodies in previous (sorted by
+/// key): its first and last points are of that pair and the points either side are not. The step
+/// carries last step's run starts; checked, they need not be trusted. Inline, as
+/// carry_history_from_run: called once a pair, a call cost as much as the work.
+inline bool is_run_of(const std::vector<ContactPoint3d>& previous, std::size_t start, std::size_t end,
+                      const ContactKey3d& key) {
+    using contact_key_words::bodies;
+    const std::size_t n = previous.size();
+    if (start >= end || end > n) return false;
+    const std::uint64_t pair = bodies(key);
+    return bodies(previous[start].key) == pair && bodies(previous[end - 1].key) == pair &&
+           (start == 0 || bodies(previous[start - 1].key) != pair) && (end == n || bodies(previous[end].key) != pair);
+}
+
+/// The same as carry_history for a run of count points of current (sorted by key) whose pair of
+/// bodies had last_run[0, last_count) last step (that pair's whole run, is_run_of): a straight
+/// merge of the two runs, comparing features only, with no search and no test of the table's end.
+inline void carry_history_from_run(const ContactPoint3d* last_run, std::size_t last_count, ContactPoint3d* run,
+                                   std::size_t count) {
+    using contact_key_words::features;
+    using contact_key_words::features_order;
+    const ContactPoint3d* q = last_run;
+    const ContactPoint3d* const last_end = last_run + last_count;
+    for (ContactPoint3d* p = run; p != run + count; ++p) {
+        // The usual point kept its key, and last step's point at q is its own: one comparison of
+        // the features says so (the bodies are the run's). Otherwise the walk passes last step's
+        // smaller features (points gone).
+        const std::uint64_t f = features(p->key);
+        bool found = q != last_end && features(q->key) == f;
+        if (!found) {
+            const std::uint64_t order = features_order(p->key);
+            while (q != last_end && features_order(q->key) < order) ++q;
+            found = q != last_end && features(q->key) == f;
+        }
+        if (found) {
+            take_history(*q, *p);
+            ++q;
+        } else {
+            start_history(*p);
+        }
+    }
+}
 
 }  // namespace blockdem

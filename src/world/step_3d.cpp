@@ -312,12 +312,21 @@ void fill_chunk(World3d& w, std::size_t k) {
             p.stiffness_share = g.stiffness_share;
             p.dashpot_mass_kg = (by_share ? g.stiffness_share : 1.0) * mass_per_share_kg;  // 1 M / n: the same bits
         }
-        // Where last step's run of the pair is looked for first: where last step's pair of the
-        // same rank began (exact while the set of pairs in contact holds; a hint only).
-        const bool ranked = pair_index < s.previous_run_starts.size();
-        const std::size_t hint = ranked ? s.previous_run_starts[pair_index] : first_point;
+        // Last step's run of the pair is looked for first where last step's pair of the same rank
+        // was (exact while the set of pairs in contact holds): when it is there, the two runs are
+        // merged straight; else it is searched for from there (a hint only).
         s.run_starts[pair_index] = first_point;
-        carry_history(s.previous, run, count, hint, ranked);
+        const std::size_t ranked_pairs = s.previous_run_starts.size();
+        if (pair_index < ranked_pairs) {
+            const std::size_t start = s.previous_run_starts[pair_index];
+            const std::size_t end = pair_index + 1 < ranked_pairs ? s.previous_run_starts[pair_index + 1] : s.previous.size();
+            if (is_run_of(s.previous, start, end, run[0].key))
+                carry_history_from_run(&s.previous[start], end - start, run, count);
+            else
+                carry_history(s.previous, run, count, start, true);
+        } else {
+            carry_history(s.previous, run, count, first_point);
+        }
         points += count;
         first_point += count;
         ++pair_index;
