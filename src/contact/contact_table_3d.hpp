@@ -100,47 +100,54 @@ inline std::uint64_t features_order(const ContactKey3d& k) {
 }
 }  // namespace contact_key_words
 
-/// Whether previous[start, end) is exactly the run of key's pair of bodies in previous (sorted by
-/// key): its first and last points are of that pair and the points either side are not. The step
-/// carries last step's run starts; checked, they need not be trusted. Inline, as
-/// carry_history_from_run: called once a pair, a call cost as much as the work.
+/// Whether previous[start, end) is the run of key's pair of bodies in previous (sorted by key),
+/// given that start and end are where runs of previous begin (or its end): the step carries last
+/// step's run starts, as carry_history's hint_starts_a_run trusts them (a state file read into
+/// the world clears them: replace_contacts). Inline, as RunHistoryWalk: called once a pair, a
+/// call cost as much as the work.
 inline bool is_run_of(const std::vector<ContactPoint3d>& previous, std::size_t start, std::size_t end,
                       const ContactKey3d& key) {
-    using contact_key_words::bodies;
-    const std::size_t n = previous.size();
-    if (start >= end || end > n) return false;
-    const std::uint64_t pair = bodies(key);
-    return bodies(previous[start].key) == pair && bodies(previous[end - 1].key) == pair &&
-           (start == 0 || bodies(previous[start - 1].key) != pair) && (end == n || bodies(previous[end].key) != pair);
+    return start < end && end <= previous.size() &&
+           contact_key_words::bodies(previous[start].key) == contact_key_words::bodies(key);
 }
 
-/// The same as carry_history for a run of count points of current (sorted by key) whose pair of
-/// bodies had last_run[0, last_count) last step (that pair's whole run, is_run_of): a straight
-/// merge of the two runs, comparing features only, with no search and no test of the table's end.
-inline void carry_history_from_run(const ContactPoint3d* last_run, std::size_t last_count, ContactPoint3d* run,
-                                   std::size_t count) {
-    using contact_key_words::features;
-    using contact_key_words::features_order;
-    const ContactPoint3d* q = last_run;
-    const ContactPoint3d* const last_end = last_run + last_count;
-    for (ContactPoint3d* p = run; p != run + count; ++p) {
+/// carry_history for a run of this step's points (sorted by key), point by point, whose pair of
+/// bodies had the run [q, end) last step (is_run_of): a straight merge of the two runs, comparing
+/// features only, with no search and no test of the table's end. Point by point, so that the
+/// step's fill takes the history as it writes a point (one pass over the run, not two).
+struct RunHistoryWalk {
+    const ContactPoint3d* q;    ///< last step's next point not yet passed
+    const ContactPoint3d* end;  ///< the end of last step's run of the pair
+
+    /// p (this step's, after the points already walked) takes its history.
+    [[gnu::always_inline]] void carry(ContactPoint3d& p) {
+        using contact_key_words::features;
+        using contact_key_words::features_order;
         // The usual point kept its key, and last step's point at q is its own: one comparison of
         // the features says so (the bodies are the run's). Otherwise the walk passes last step's
         // smaller features (points gone).
-        const std::uint64_t f = features(p->key);
-        bool found = q != last_end && features(q->key) == f;
+        const std::uint64_t f = features(p.key);
+        bool found = q != end && features(q->key) == f;
         if (!found) {
-            const std::uint64_t order = features_order(p->key);
-            while (q != last_end && features_order(q->key) < order) ++q;
-            found = q != last_end && features(q->key) == f;
+            const std::uint64_t order = features_order(p.key);
+            while (q != end && features_order(q->key) < order) ++q;
+            found = q != end && features(q->key) == f;
         }
         if (found) {
-            take_history(*q, *p);
+            take_history(*q, p);
             ++q;
         } else {
-            start_history(*p);
+            start_history(p);
         }
     }
+};
+
+/// The same as carry_history for a run of count points of current (sorted by key) whose pair of
+/// bodies had last_run[0, last_count) last step (that pair's whole run, is_run_of).
+inline void carry_history_from_run(const ContactPoint3d* last_run, std::size_t last_count, ContactPoint3d* run,
+                                   std::size_t count) {
+    RunHistoryWalk walk{last_run, last_run + last_count};
+    for (ContactPoint3d* p = run; p != run + count; ++p) walk.carry(*p);
 }
 
 }  // namespace blockdem

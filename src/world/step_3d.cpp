@@ -269,6 +269,36 @@ std::uint32_t lay_out_table(WorldScratch3d& s, std::size_t chunks) {
     return s.chunk_points[chunks];
 }
 
+// Writes a pair's count points into its run of the table from the narrow phase's points, field by
+// field (a default point built and copied in cost 0.3 M instructions a step on the 1000-brick
+// wall), each then handed to take_history(point) as soon as it is written. The history is
+// take_history's to write, this step's state (force, sliding) the law's.
+template <class TakeHistory>
+[[gnu::always_inline]] inline void write_run(std::uint32_t a, std::uint32_t b, const ContactGeometry3d* points,
+                                             std::uint32_t count, bool by_share, double mass_per_share_kg,
+                                             ContactPoint3d* run, TakeHistory take_history) {
+    // The key as the two 64-bit words it is stored as: the pair's bodies, then the point's
+    // features (a's then b's, adjacent in ContactGeometry3d too). Built as four 32-bit fields it
+    // went through vector registers, about ten instructions a point.
+    std::uint64_t key_words[2];
+    const ContactKey3d bodies{a, b, 0, 0};
+    std::memcpy(key_words, &bodies, sizeof key_words);
+    static_assert(sizeof(ContactKey3d) == sizeof key_words);
+    static_assert(offsetof(ContactGeometry3d, feature_b) == offsetof(ContactGeometry3d, feature_a) + 4);
+    const ContactGeometry3d* const end = points + count;
+    for (const ContactGeometry3d* g = points; g != end; ++g, ++run) {
+        ContactPoint3d& p = *run;
+        std::memcpy(&key_words[1], &g->feature_a, sizeof key_words[1]);
+        std::memcpy(static_cast<void*>(&p.key), key_words, sizeof key_words);
+        p.point_m = g->point_m;
+        p.normal = g->normal;
+        p.overlap_m = g->overlap_m;
+        p.stiffness_share = g->stiffness_share;
+        p.dashpot_mass_kg = (by_share ? g->stiffness_share : 1.0) * mass_per_share_kg;  // 1 M / n: the same bits
+        take_history(p);
+    }
+}
+
 // Step 4 for chunk k: its pairs' entries and runs in the table, filled from the chunk's points,
 // with last step's history.
 void fill_chunk(World3d& w, std::size_t k) {
@@ -277,6 +307,7 @@ void fill_chunk(World3d& w, std::size_t k) {
     std::uint32_t pair_index = s.chunk_pairs[k];
     std::uint32_t first_point = s.chunk_points[k];
     const ContactGeometry3d* points = chunk.points.data();
+    const std::size_t ranked_pairs = s.previous_run_starts.size();
     for (const TouchingCandidate3d& touching : chunk.touching) {
         const auto [a, b] = s.pairs[touching.candidate];
         const std::uint32_t count = touching.points;
@@ -290,42 +321,21 @@ void fill_chunk(World3d& w, std::size_t k) {
         const double mass_per_share_kg = reduced_mass(w, a, b) / (by_share ? shares : static_cast<double>(count));
         s.contact_pairs[pair_index] = {touching.candidate, first_point, count, by_share ? mass_per_share_kg : 0.0, {}, {}};
         ContactPoint3d* run = &w.contacts[first_point];
-        // The key as the two 64-bit words it is stored as: the pair's bodies, then the point's
-        // features (a's then b's, adjacent in ContactGeometry3d too). Built as four 32-bit fields
-        // it went through vector registers, about ten instructions a point.
-        std::uint64_t key_words[2];
-        const ContactKey3d bodies{a, b, 0, 0};
-        std::memcpy(key_words, &bodies, sizeof key_words);
-        static_assert(sizeof(ContactKey3d) == sizeof key_words);
-        static_assert(offsetof(ContactGeometry3d, feature_b) == offsetof(ContactGeometry3d, feature_a) + 4);
-        for (std::uint32_t j = 0; j < count; ++j) {
-            // Written field by field into the table's slot (a default point built and copied in
-            // cost 0.3 M instructions a step on the 1000-brick wall). The history is
-            // carry_history's to write, this step's state (force, sliding) the law's.
-            const ContactGeometry3d& g = points[j];
-            ContactPoint3d& p = run[j];
-            std::memcpy(&key_words[1], &g.feature_a, sizeof key_words[1]);
-            std::memcpy(static_cast<void*>(&p.key), key_words, sizeof key_words);
-            p.point_m = g.point_m;
-            p.normal = g.normal;
-            p.overlap_m = g.overlap_m;
-            p.stiffness_share = g.stiffness_share;
-            p.dashpot_mass_kg = (by_share ? g.stiffness_share : 1.0) * mass_per_share_kg;  // 1 M / n: the same bits
-        }
-        // Last step's run of the pair is looked for first where last step's pair of the same rank
-        // was (exact while the set of pairs in contact holds): when it is there, the two runs are
-        // merged straight; else it is searched for from there (a hint only).
         s.run_starts[pair_index] = first_point;
-        const std::size_t ranked_pairs = s.previous_run_starts.size();
-        if (pair_index < ranked_pairs) {
-            const std::size_t start = s.previous_run_starts[pair_index];
-            const std::size_t end = pair_index + 1 < ranked_pairs ? s.previous_run_starts[pair_index + 1] : s.previous.size();
-            if (is_run_of(s.previous, start, end, run[0].key))
-                carry_history_from_run(&s.previous[start], end - start, run, count);
-            else
-                carry_history(s.previous, run, count, start, true);
+        // Last step's run of the pair is looked for first where last step's pair of the same rank
+        // was (exact while the set of pairs in contact holds): when it is there, each point takes
+        // its history as it is written, the two runs merged straight; else the run is written
+        // and then its history searched for from there (a hint only).
+        const bool ranked = pair_index < ranked_pairs;
+        const std::size_t start = ranked ? s.previous_run_starts[pair_index] : first_point;
+        const std::size_t end = pair_index + 1 < ranked_pairs ? s.previous_run_starts[pair_index + 1] : s.previous.size();
+        const ContactKey3d pair_key{a, b, 0, 0};
+        if (ranked && is_run_of(s.previous, start, end, pair_key)) {
+            RunHistoryWalk walk{&s.previous[start], s.previous.data() + end};
+            write_run(a, b, points, count, by_share, mass_per_share_kg, run, [&](ContactPoint3d& p) { walk.carry(p); });
         } else {
-            carry_history(s.previous, run, count, first_point);
+            write_run(a, b, points, count, by_share, mass_per_share_kg, run, [](ContactPoint3d&) {});
+            carry_history(s.previous, run, count, start, ranked);
         }
         points += count;
         first_point += count;
