@@ -271,12 +271,12 @@ std::uint32_t lay_out_table(WorldScratch3d& s, std::size_t chunks) {
 
 // Writes a pair's count points into its run of the table from the narrow phase's points, field by
 // field (a default point built and copied in cost 0.3 M instructions a step on the 1000-brick
-// wall), each then handed to take_history(point) as soon as it is written. The history is
-// take_history's to write, this step's state (force, sliding) the law's.
-template <class TakeHistory>
+// wall), each then handed to carry(point), which gives it its history, as soon as it is written;
+// this step's state (force, sliding) is the law's to write.
+template <class CarryHistory>
 [[gnu::always_inline]] inline void write_run(std::uint32_t a, std::uint32_t b, const ContactGeometry3d* points,
                                              std::uint32_t count, bool by_share, double mass_per_share_kg,
-                                             ContactPoint3d* run, TakeHistory take_history) {
+                                             ContactPoint3d* run, CarryHistory carry) {
     // The key as the two 64-bit words it is stored as: the pair's bodies, then the point's
     // features (a's then b's, adjacent in ContactGeometry3d too). Built as four 32-bit fields it
     // went through vector registers, about ten instructions a point.
@@ -295,7 +295,7 @@ template <class TakeHistory>
         p.overlap_m = g->overlap_m;
         p.stiffness_share = g->stiffness_share;
         p.dashpot_mass_kg = (by_share ? g->stiffness_share : 1.0) * mass_per_share_kg;  // 1 M / n: the same bits
-        take_history(p);
+        carry(p);
     }
 }
 
