@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <compare>
+#include <cstddef>
 #include <cstring>
 
 namespace blockdem {
@@ -70,15 +71,10 @@ void carry_history(const std::vector<ContactPoint3d>& previous, ContactPoint3d* 
             found = q != last_end && order == 0;
         }
         if (found) {
-            p->normal_dashpot_n = q->normal_dashpot_n;
-            p->shear = q->shear;
-            const double before = q->stiffness_share;
-            if (p->stiffness_share != before)
-                p->shear.spring_n = before > 0.0 ? (p->stiffness_share / before) * p->shear.spring_n : Vec3{};
+            take_history(*q, *p);
             ++q;
         } else {
-            p->normal_dashpot_n = 0.0;
-            p->shear = {};
+            start_history(*p);
         }
     }
 }

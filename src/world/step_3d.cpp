@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <limits>
 
@@ -208,9 +209,14 @@ double reduced_mass(const World3d& w, std::uint32_t a, std::uint32_t b) {
     return da ? ma : mb;
 }
 
-// A large scene's candidate pairs are cut into this many chunks for the table's layout, whatever
-// the thread count (world/parallel.hpp, rule 3); a small scene's are one chunk, run serially.
+// A large scene's candidate pairs are cut into this many chunks for the narrow phase and the
+// table's layout, whatever the thread count (world/parallel.hpp, rule 3); a small scene's are one
+// chunk, run serially.
 constexpr std::size_t layout_chunks = 64;
+
+std::size_t candidate_chunk_count(std::size_t candidates) {
+    return static_cast<std::ptrdiff_t>(candidates) >= parallel_threshold ? layout_chunks : std::size_t{1};
+}
 
 // Calls work(k) for each chunk k < chunks, on all threads when there are several.
 template <class Work>
@@ -224,52 +230,116 @@ void for_fixed_chunks(std::size_t chunks, Work work) {
     for (std::ptrdiff_t k = 0; k < count; ++k) work(static_cast<std::size_t>(k));
 }
 
-// The table's layout: each candidate pair with points gets its run, in candidate order. Each
-// fixed chunk of the candidates counts its pairs in contact and their points, a prefix sum over
-// the chunks places them, and each chunk then writes its own entries: the same layout as one
-// serial pass, at any thread count. Returns the number of points.
-std::uint32_t lay_out_table(WorldScratch3d& s) {
+// Step 3 for chunk k of the candidates: the narrow phase at each pair, its points appended to the
+// chunk's flat array, and the pair listed with their number when it has any.
+void find_chunk_points(WorldScratch3d& s, std::size_t k, std::size_t chunks) {
+    CandidateChunk3d& chunk = s.candidate_chunks[k];
+    chunk.points.clear();
+    chunk.touching.clear();
+    ContactScratch3d& clipping = s.clipping[thread_index()];
     const std::size_t candidates = s.pairs.size();
-    const std::size_t chunks =
-        static_cast<std::ptrdiff_t>(candidates) >= parallel_threshold ? layout_chunks : std::size_t{1};
-    auto chunk_begin = [&](std::size_t k) { return candidates * k / chunks; };
-    s.chunk_pairs.assign(chunks + 1, 0);
-    s.chunk_points.assign(chunks + 1, 0);
-    for_fixed_chunks(chunks, [&](std::size_t k) {
-        std::uint32_t pairs = 0;
-        std::uint32_t points = 0;
-        for (std::size_t c = chunk_begin(k); c < chunk_begin(k + 1); ++c) {
-            const auto count = static_cast<std::uint32_t>(s.pair_points[c].size());
-            pairs += count > 0 ? 1 : 0;
-            points += count;
-        }
-        s.chunk_pairs[k + 1] = pairs;
-        s.chunk_points[k + 1] = points;
-    });
+    const std::size_t end = candidates * (k + 1) / chunks;
+    for (std::size_t c = candidates * k / chunks; c < end; ++c) {
+        const BodyPair ab = s.pairs[c];
+        const std::size_t count = polyhedron_contact_3d(s.posed[ab.first], s.posed[ab.second], clipping, chunk.points);
+        if (count > 0) chunk.touching.push_back({static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(count)});
+    }
+}
+
+// The table's layout: each chunk's pairs in contact and their points go after those of the chunks
+// before it (a prefix sum over the chunks, the only serial part), in candidate order: the same
+// layout as one serial pass, at any thread count. Returns the number of points.
+std::uint32_t lay_out_table(WorldScratch3d& s, std::size_t chunks) {
+    s.chunk_pairs.resize(chunks + 1);
+    s.chunk_points.resize(chunks + 1);
+    s.chunk_pairs[0] = 0;
+    s.chunk_points[0] = 0;
     for (std::size_t k = 0; k < chunks; ++k) {
-        s.chunk_pairs[k + 1] += s.chunk_pairs[k];
-        s.chunk_points[k + 1] += s.chunk_points[k];
+        const CandidateChunk3d& chunk = s.candidate_chunks[k];
+        s.chunk_pairs[k + 1] = s.chunk_pairs[k] + static_cast<std::uint32_t>(chunk.touching.size());
+        s.chunk_points[k + 1] = s.chunk_points[k] + static_cast<std::uint32_t>(chunk.points.size());
     }
     s.contact_pairs.resize(s.chunk_pairs[chunks]);
-    for_fixed_chunks(chunks, [&](std::size_t k) {
-        std::uint32_t pair = s.chunk_pairs[k];
-        std::uint32_t point = s.chunk_points[k];
-        for (std::size_t c = chunk_begin(k); c < chunk_begin(k + 1); ++c) {
-            const auto count = static_cast<std::uint32_t>(s.pair_points[c].size());
-            if (count == 0) continue;
-            ContactPairSums3d& entry = s.contact_pairs[pair++];
-            entry = ContactPairSums3d{};
-            entry.candidate = static_cast<std::uint32_t>(c);
-            entry.first_point = point;
-            entry.points = count;
-            point += count;
-        }
-    });
     return s.chunk_points[chunks];
 }
 
-// Steps 3 and 4: this step's points, sorted by key, with last step's history. Each pair's points
-// go to its own slot (in parallel), then into the table in pair order (serially).
+// Writes a pair's count points into its run of the table from the narrow phase's points, field by
+// field (a default point built and copied in cost 0.3 M instructions a step on the 1000-brick
+// wall), each then handed to carry(point), which gives it its history, as soon as it is written;
+// this step's state (force, sliding) is the law's to write.
+template <class CarryHistory>
+[[gnu::always_inline]] inline void write_run(std::uint32_t a, std::uint32_t b, const ContactGeometry3d* points,
+                                             std::uint32_t count, bool by_share, double mass_per_share_kg,
+                                             ContactPoint3d* run, CarryHistory carry) {
+    // The key as the two 64-bit words it is stored as: the pair's bodies, then the point's
+    // features (a's then b's, adjacent in ContactGeometry3d too). Built as four 32-bit fields it
+    // went through vector registers, about ten instructions a point.
+    std::uint64_t key_words[2];
+    const ContactKey3d bodies{a, b, 0, 0};
+    std::memcpy(key_words, &bodies, sizeof key_words);
+    static_assert(sizeof(ContactKey3d) == sizeof key_words);
+    static_assert(offsetof(ContactGeometry3d, feature_b) == offsetof(ContactGeometry3d, feature_a) + 4);
+    const ContactGeometry3d* const end = points + count;
+    for (const ContactGeometry3d* g = points; g != end; ++g, ++run) {
+        ContactPoint3d& p = *run;
+        std::memcpy(&key_words[1], &g->feature_a, sizeof key_words[1]);
+        std::memcpy(static_cast<void*>(&p.key), key_words, sizeof key_words);
+        p.point_m = g->point_m;
+        p.normal = g->normal;
+        p.overlap_m = g->overlap_m;
+        p.stiffness_share = g->stiffness_share;
+        p.dashpot_mass_kg = (by_share ? g->stiffness_share : 1.0) * mass_per_share_kg;  // 1 M / n: the same bits
+        carry(p);
+    }
+}
+
+// Step 4 for chunk k: its pairs' entries and runs in the table, filled from the chunk's points,
+// with last step's history.
+void fill_chunk(World3d& w, std::size_t k) {
+    WorldScratch3d& s = w.scratch;
+    const CandidateChunk3d& chunk = s.candidate_chunks[k];
+    std::uint32_t pair_index = s.chunk_pairs[k];
+    std::uint32_t first_point = s.chunk_points[k];
+    const ContactGeometry3d* points = chunk.points.data();
+    const std::size_t ranked_pairs = s.previous_run_starts.size();
+    for (const TouchingCandidate3d& touching : chunk.touching) {
+        const auto [a, b] = s.pairs[touching.candidate];
+        const std::uint32_t count = touching.points;
+        // The dashpots take the pair's reduced mass M in proportion to the points' stiffness
+        // shares w (the 2-D per-length rule), M w / S, so that every point has the requested
+        // damping ratio and a box landing flat keeps its restitution. M / S is taken once a pair;
+        // where no point has stiffness (S = 0) each takes M / n.
+        double shares = 0.0;
+        for (std::uint32_t j = 0; j < count; ++j) shares += points[j].stiffness_share;
+        const bool by_share = shares > 0.0;
+        const double mass_per_share_kg = reduced_mass(w, a, b) / (by_share ? shares : static_cast<double>(count));
+        s.contact_pairs[pair_index] = {touching.candidate, first_point, count, by_share ? mass_per_share_kg : 0.0, {}, {}};
+        ContactPoint3d* run = &w.contacts[first_point];
+        s.run_starts[pair_index] = first_point;
+        // Last step's run of the pair is looked for first where last step's pair of the same rank
+        // was (exact while the set of pairs in contact holds): when it is there, each point takes
+        // its history as it is written, the two runs merged straight; else the run is written
+        // and then its history searched for from there (a hint only).
+        const bool ranked = pair_index < ranked_pairs;
+        const std::size_t start = ranked ? s.previous_run_starts[pair_index] : first_point;
+        const std::size_t end = pair_index + 1 < ranked_pairs ? s.previous_run_starts[pair_index + 1] : s.previous.size();
+        const ContactKey3d pair_key{a, b, 0, 0};
+        if (ranked && is_run_of(s.previous, start, end, pair_key)) {
+            RunHistoryWalk walk{&s.previous[start], s.previous.data() + end};
+            write_run(a, b, points, count, by_share, mass_per_share_kg, run, [&](ContactPoint3d& p) { walk.carry(p); });
+        } else {
+            write_run(a, b, points, count, by_share, mass_per_share_kg, run, [](ContactPoint3d&) {});
+            carry_history(s.previous, run, count, start, ranked);
+        }
+        points += count;
+        first_point += count;
+        ++pair_index;
+    }
+}
+
+// Steps 3 and 4: this step's points, sorted by key, with last step's history. Each fixed chunk
+// of the candidates finds its pairs' points (in parallel), the chunks are placed in the table
+// (serially), and each fills its pairs' runs with last step's history (in parallel).
 void find_contacts(World3d& w) {
     WorldScratch3d& s = w.scratch;
     s.broad_phase.find_pairs(s.boxes, s.is_static, s.pairs);
@@ -278,55 +348,16 @@ void find_contacts(World3d& w) {
         std::erase_if(s.pairs, [&](const BodyPair& p) {
             return is_taken_out(w.domain, p.first) || is_taken_out(w.domain, p.second);
         });
-    if (s.pair_points.size() < s.pairs.size()) s.pair_points.resize(s.pairs.size());
+    const std::size_t chunks = candidate_chunk_count(s.pairs.size());
+    if (s.candidate_chunks.size() < chunks) s.candidate_chunks.resize(chunks);
     if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
     // s.posed: each body posed for the narrow phase once (pose_body), not once for each pair side.
-    parallel_for(static_cast<std::ptrdiff_t>(s.pairs.size()), [&](std::ptrdiff_t k) {
-        auto& points = s.pair_points[k];
-        points.clear();
-        polyhedron_contact_3d(s.posed[s.pairs[k].first], s.posed[s.pairs[k].second], s.clipping[thread_index()],
-                              points);
-    });
-    // The table's layout first: each pair's run of points (a prefix sum over the pairs, the only
-    // serial part), then the runs filled with last step's history pair by pair in parallel.
+    for_fixed_chunks(chunks, [&](std::size_t k) { find_chunk_points(s, k, chunks); });
     std::swap(s.previous, w.contacts);
     std::swap(s.previous_run_starts, s.run_starts);
-    w.contacts.resize(lay_out_table(s));
+    w.contacts.resize(lay_out_table(s, chunks));
     s.run_starts.resize(s.contact_pairs.size());
-    parallel_for(static_cast<std::ptrdiff_t>(s.contact_pairs.size()), [&](std::ptrdiff_t i) {
-        ContactPairSums3d& pair = s.contact_pairs[i];
-        const auto [a, b] = s.pairs[pair.candidate];
-        const auto& points = s.pair_points[pair.candidate];
-        // The dashpots take the pair's reduced mass M in proportion to the points' stiffness
-        // shares w (the 2-D per-length rule), M w / S, so that every point has the requested
-        // damping ratio and a box landing flat keeps its restitution. M / S is taken once a pair;
-        // where no point has stiffness (S = 0) each takes M / n.
-        double shares = 0.0;
-        for (const ContactGeometry3d& g : points) shares += g.stiffness_share;
-        const bool by_share = shares > 0.0;
-        const double mass_per_share_kg = reduced_mass(w, a, b) / (by_share ? shares : static_cast<double>(points.size()));
-        pair.dashpot_mass_per_share_kg = by_share ? mass_per_share_kg : 0.0;
-        ContactPoint3d* run = &w.contacts[pair.first_point];
-        for (std::uint32_t k = 0; k < pair.points; ++k) {
-            // Written field by field into the table's slot (a default point built and copied in
-            // cost 0.3 M instructions a step on the 1000-brick wall). The history is
-            // carry_history's to write, this step's state (force, sliding) the law's.
-            const ContactGeometry3d& g = points[k];
-            ContactPoint3d& p = run[k];
-            p.key = {a, b, g.feature_a, g.feature_b};
-            p.point_m = g.point_m;
-            p.normal = g.normal;
-            p.overlap_m = g.overlap_m;
-            p.stiffness_share = g.stiffness_share;
-            p.dashpot_mass_kg = by_share ? g.stiffness_share * mass_per_share_kg : mass_per_share_kg;
-        }
-        // Where last step's run of the pair is looked for first: where last step's pair of the
-        // same rank began (exact while the set of pairs in contact holds; a hint only).
-        const bool ranked = static_cast<std::size_t>(i) < s.previous_run_starts.size();
-        const std::size_t hint = ranked ? s.previous_run_starts[i] : pair.first_point;
-        s.run_starts[i] = pair.first_point;
-        carry_history(s.previous, run, pair.points, hint, ranked);
-    });
+    for_fixed_chunks(chunks, [&](std::size_t k) { fill_chunk(w, k); });
 }
 
 // The energy terms of the law, totalled in deterministic chunks (world/parallel.hpp, rule 3).

@@ -48,6 +48,21 @@ struct ContactPairSums3d {
     Vec3 torque_about_a_n_m;        ///< [N m] their moment about a's centroid
 };
 
+/// A candidate pair of a chunk that the narrow phase found touching, and its number of points.
+struct TouchingCandidate3d {
+    std::uint32_t candidate = 0;  ///< index in WorldScratch3d::pairs
+    std::uint32_t points = 0;
+};
+
+/// One fixed chunk of the candidate pairs, as the narrow phase left it (world/step_3d.cpp): its
+/// pairs' points in one flat array, in candidate order, and which of its candidates touch. Flat,
+/// so that the table's fill streams through it (a vector per candidate was a heap block a pair,
+/// scattered), and per chunk, so that the table's layout does not depend on the thread count.
+struct CandidateChunk3d {
+    std::vector<ContactGeometry3d> points;
+    std::vector<TouchingCandidate3d> touching;
+};
+
 /// Arrays rebuilt every step, kept so that a step allocates nothing in steady state.
 struct WorldScratch3d {
     std::vector<std::uint32_t> vertex_start;  ///< per body, its first entry in world_vertices_m (and one past the last)
@@ -63,7 +78,7 @@ struct WorldScratch3d {
     std::vector<Aabb3d> boxes;
     std::vector<std::uint8_t> is_static;
     std::vector<BodyPair> pairs;
-    std::vector<std::vector<ContactGeometry3d>> pair_points;  ///< per candidate pair, its points (kept: no allocation)
+    std::vector<CandidateChunk3d> candidate_chunks;           ///< per fixed chunk of pairs, its points (kept: no allocation)
     std::vector<ContactPoint3d> previous;
     std::vector<ContactPairSums3d> contact_pairs;             ///< this step's pairs in contact, in table order
     std::vector<std::uint32_t> run_starts;                    ///< per pair in contact, its first point in World3d::contacts

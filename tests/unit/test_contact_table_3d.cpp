@@ -110,5 +110,65 @@ TEST(ContactTable3d, RunsCarriedFromRunStartsGiveTheWholeTablesMerge) {
     EXPECT_GT(found_at_hint, 20);
 }
 
+// The step's straight merge: a run whose pair had a run last step (is_run_of at that run's
+// bounds) merged against that run alone by features, with shares that change (the spring scaled
+// by w_now / w_before, and dropped where w was 0), gives the whole table's merge to the bit.
+TEST(ContactTable3d, RunsMergedAgainstTheirPairsLastRunGiveTheWholeTablesMerge) {
+    std::mt19937 random(11);
+    std::uniform_int_distribution<int> share_of(0, 3);
+    const auto runs_of = [](const std::vector<ContactPoint3d>& table) {
+        std::vector<std::pair<std::size_t, std::size_t>> runs;
+        for (std::size_t i = 0; i < table.size(); ++i)
+            if (i == 0 || table[i].key.body_a != table[i - 1].key.body_a ||
+                table[i].key.body_b != table[i - 1].key.body_b)
+                runs.emplace_back(i, i + 1);
+            else
+                runs.back().second = i + 1;
+        return runs;
+    };
+    int straight = 0, searched = 0, scaled = 0;
+    for (int trial = 0; trial < 50; ++trial) {
+        std::vector<ContactPoint3d> previous = random_table(random, 12, 60);
+        for (ContactPoint3d& p : previous) {
+            p.normal_dashpot_n = tag(p.key);
+            p.shear.spring_n = {tag(p.key), -1.0, 0.5};
+            p.stiffness_share = 0.25 * share_of(random);
+        }
+        std::vector<ContactPoint3d> fresh = random_table(random, 12, 60);
+        for (ContactPoint3d& p : fresh) p.stiffness_share = 0.25 * share_of(random);
+        std::vector<ContactPoint3d> whole = fresh;
+        carry_history(previous, whole);
+        const auto last_runs = runs_of(previous);
+        std::vector<ContactPoint3d> runs = fresh;
+        for (const auto& [first, end] : runs_of(fresh)) {
+            const auto last = std::find_if(last_runs.begin(), last_runs.end(), [&](const auto& r) {
+                return is_run_of(previous, r.first, r.second, fresh[first].key);
+            });
+            // Another pair's run is not taken for this one's.
+            for (const auto& r : last_runs)
+                if (previous[r.first].key.body_a != fresh[first].key.body_a ||
+                    previous[r.first].key.body_b != fresh[first].key.body_b)
+                    ASSERT_FALSE(is_run_of(previous, r.first, r.second, fresh[first].key));
+            if (last != last_runs.end()) {
+                carry_history_from_run(&previous[last->first], last->second - last->first, &runs[first], end - first);
+                ++straight;
+            } else {
+                carry_history(previous, &runs[first], end - first, first);
+                ++searched;
+            }
+        }
+        ASSERT_EQ(whole.size(), runs.size());
+        for (std::size_t i = 0; i < whole.size(); ++i) {
+            EXPECT_EQ(whole[i].normal_dashpot_n, runs[i].normal_dashpot_n) << "point " << i;
+            EXPECT_EQ(whole[i].shear.spring_n.x, runs[i].shear.spring_n.x) << "point " << i;
+            EXPECT_EQ(whole[i].shear.spring_n.y, runs[i].shear.spring_n.y) << "point " << i;
+            scaled += whole[i].normal_dashpot_n != 0.0 && whole[i].shear.spring_n.y != -1.0;
+        }
+    }
+    EXPECT_GT(straight, 200);
+    EXPECT_GT(searched, 20);
+    EXPECT_GT(scaled, 100);
+}
+
 }  // namespace
 }  // namespace blockdem
