@@ -4,6 +4,7 @@
 // and a prism's, and on flush faces whose corners lie on the side planes.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "geometry/box_face_clip_3d.hpp"
@@ -396,6 +397,165 @@ TEST(BoxFaceClip3d, NoCornerBelowThePlaneMeansNoPolygonCornerBelow) {
     EXPECT_GT(tally.skipped, 1000);
     EXPECT_GT(tally.clipped, 1000);
     EXPECT_GT(tally.skipped_cut, 100);
+}
+
+}  // namespace
+}  // namespace blockdem
+
+namespace blockdem {
+namespace {
+
+// Two boxes' short path (clip_boxes_from_frames: the incident corners from inc's centre, half
+// lengths and the pair's dots, the rectangle from ref's half lengths) against the general clip
+// (clip_by_face_sides, from the world vertices): where it decides, the same polygon (its corners,
+// keys and order), each corner below the plane in both or in neither, positions within the
+// round-off bound below, and the same shares within 1e-12; where it cannot decide,
+// clip_boxes_where_below is clip_box_face_where_below to the bit.
+struct FramesTally {
+    int decided = 0;     // faces the short path answered
+    int undecided = 0;   // faces it left to the vertices
+    int cut = 0;         // answered faces cut by a side (crossings made)
+    int points = 0;      // corners below the plane compared
+};
+
+struct FrameCorners {
+    const BoxClipCorner3d* polygon;
+    Vec3 at(std::size_t i) const { return {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m}; }
+    bool known(std::size_t i) const { return feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex; }
+};
+
+void expect_frames_as_general(const Posed& a, const Posed& b, FramesTally& tally) {
+    // The pair's dots as the narrow phase takes them: a's direction k . b's j.
+    double dots[3][3];
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j) dots[k][j] = dot(a.directions[k], b.directions[j]);
+    for (bool ref_is_a : {true, false}) {
+        const Posed& r = ref_is_a ? a : b;
+        const Posed& i = ref_is_a ? b : a;
+        const PosedPolyhedron ref = r.view();
+        const PosedPolyhedron inc = i.view();
+        ASSERT_TRUE(r.frame.normals_are_directions && i.frame.normals_are_directions);
+        for (std::uint32_t f = 0; f < r.shape.faces.size(); ++f) {
+            const std::uint32_t inc_face = most_opposed_face(i, r.normals[f]);
+            BoxFaceClip3d frames;
+            if (!clip_boxes_from_frames(ref, f, inc, inc_face, dots, ref_is_a, frames)) {
+                ++tally.undecided;
+                BoxFaceClip3d either, vertices;
+                ASSERT_TRUE(clip_boxes_where_below(ref, f, inc, inc_face, dots, ref_is_a, either));
+                ASSERT_TRUE(clip_box_face_where_below(ref, f, inc, inc_face, vertices));
+                ASSERT_EQ(either.count, vertices.count);
+                for (std::size_t k = 0; k < either.count; ++k) {
+                    EXPECT_EQ(either.corners[k].u_m, vertices.corners[k].u_m);
+                    EXPECT_EQ(either.corners[k].w_m, vertices.corners[k].w_m);
+                    EXPECT_EQ(either.corners[k].feature_reference, vertices.corners[k].feature_reference);
+                }
+                continue;
+            }
+            ++tally.decided;
+            ContactScratch3d general;
+            clip_by_face_sides(ref, f, inc, inc_face, general);
+            const Vec3 n = r.normals[f];
+            const double plane_m = dot(n, r.vertices[r.shape.faces[f][0]]);
+            bool general_below = false;
+            for (const ClipCorner3d& c : general.polygon) general_below = general_below || plane_m - dot(n, c.point_m) > 0.0;
+            if (frames.count == 0) {  // no corner below: the general clip makes no point either
+                EXPECT_FALSE(general_below) << "face " << f;
+                continue;
+            }
+            ASSERT_EQ(frames.count, general.polygon.size()) << "face " << f;
+            // Round-off bound: the coordinates' roundings at the positions' size (1e-14 m at
+            // 123 m) times a small factor; a crossing's is magnified by |h| / |h - h_next|, which
+            // for boxes turned alike cut across is about 1 (the edge runs across the side).
+            const double far_m = std::abs(r.centre.x) + std::abs(r.centre.y) + std::abs(r.centre.z);
+            const double tolerance_m = 1e-14 * (1.0 + far_m);
+            bool any_cut = false;
+            std::vector<Vec3> world(frames.count);
+            std::vector<std::uint8_t> quarter(frames.count);
+            for (std::size_t k = 0; k < frames.count; ++k) {
+                const BoxClipCorner3d& c = frames.corners[k];
+                const ClipCorner3d& g = general.polygon[k];
+                EXPECT_EQ(c.feature_incident, g.feature_incident);
+                EXPECT_EQ(c.feature_reference, g.feature_reference);
+                EXPECT_EQ(c.line_after, g.line_after);
+                EXPECT_EQ(c.line_is_reference, g.line_is_reference);
+                world[k] = frames.world_m(c.u_m, c.v_m, c.w_m);
+                EXPECT_NEAR(length(world[k] - g.point_m), 0.0, tolerance_m) << "face " << f << " corner " << k;
+                EXPECT_EQ(c.w_m < 0.0, plane_m - dot(n, g.point_m) > 0.0) << "face " << f << " corner " << k;
+                if (c.w_m < 0.0) ++tally.points;
+                quarter[k] = feature_kind(g.feature_incident) == FeatureKind3d::vertex;
+                any_cut = any_cut || !quarter[k];
+            }
+            if (any_cut) ++tally.cut;
+            // The shares as the narrow phase takes each polygon.
+            std::vector<double> general_shares(frames.count), frame_shares(frames.count);
+            std::vector<Vec3> general_corners(frames.count);
+            for (std::size_t k = 0; k < frames.count; ++k) general_corners[k] = general.polygon[k].point_m;
+            corner_shares_3d(general_corners.data(), frames.count, general_shares.data(), quarter.data());
+            ASSERT_TRUE(corner_shares_without_groups(FrameCorners{frames.corners}, frames.count, frame_shares.data()));
+            // A turn is an arctangent of ratios of sides, whose round-off (tolerance_m) it divides
+            // by their length: 1e-12, or that where the polygon has a side shorter than a few cm.
+            double shortest_m = std::numeric_limits<double>::infinity();
+            for (std::size_t k = 0; k < frames.count; ++k)
+                shortest_m = std::min(shortest_m, length(general_corners[(k + 1) % frames.count] - general_corners[k]));
+            const double share_tolerance = std::max(1e-12, 4.0 * tolerance_m / shortest_m);
+            for (std::size_t k = 0; k < frames.count; ++k)
+                EXPECT_NEAR(frame_shares[k], general_shares[k], share_tolerance) << "face " << f << " corner " << k;
+        }
+    }
+}
+
+TEST(BoxFaceClip3d, BoxesFromFramesGiveTheGeneralClipOverRandomPosesTurnedAlike) {
+    std::mt19937 random(53);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    const std::vector<Vec3> slab = box_vertices({2.0, 1.0, 0.5}, {});
+    FramesTally tally;
+    for (int trial = 0; trial < 600; ++trial) {
+        // Both turned by one random turn, b by a tiny one more (0 to 1e-7 rad), b pressed into a's
+        // top or its end by up to 1e-4 m and shifted along the face by up to a brick.
+        const Quaternion q = from_rotation_vector({3.0 * u(random), 3.0 * u(random), 3.0 * u(random)});
+        const double tiny = 1e-7 * unit(random);
+        const Quaternion turn = from_rotation_vector({tiny * u(random), tiny * u(random), tiny * u(random)});
+        const bool on_slab = trial % 4 == 0;
+        const bool on_top = trial % 2 == 0;
+        const Vec3 far{trial % 3 == 0 ? 123.4 : 0.0, trial % 3 == 1 ? -7.3 : 0.0, 0.0};
+        const double press_m = 1e-4 * unit(random);
+        const Vec3 offset = on_top ? Vec3{0.2 * u(random), 0.1 * u(random), (on_slab ? 0.3 : 0.1) - press_m}
+                                   : Vec3{(on_slab ? 1.1 : 0.2) - press_m, 0.1 * u(random), 0.1 * u(random)};
+        const Posed a(on_slab ? slab : brick, q, far);
+        const Posed b(brick, turn * q, far + rotate(q, offset));
+        expect_frames_as_general(a, b, tally);
+    }
+    // The faces in contact are decided (900 of 7200, 600 of them cut, 3600 points below the
+    // plane); the others, most with corners on both sides of the plane, fall back to the vertices.
+    EXPECT_GT(tally.decided, 800);
+    EXPECT_GT(tally.cut, 500);
+    EXPECT_GT(tally.points, 3000);
+    EXPECT_GT(tally.undecided, 100);
+}
+
+TEST(BoxFaceClip3d, BoxesFromFramesGiveTheGeneralClipOnTheWallsExactCases) {
+    // Flush faces of equal width (corners on side planes to round-off), half-brick and other
+    // offsets (a corner 1e-11 m inside a side), gaps of 0 and +/- 1e-17 m and pressed ones,
+    // unturned and turned by 1e-7 rad, near the origin and 123 m from it.
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    FramesTally tally;
+    for (double far_m : {0.0, 7.3, 123.4})
+        for (double turn_rad : {0.0, 1e-7, -3e-8})
+            for (double gap_m : {0.0, 1e-17, -1e-17, -1e-6})
+                for (double shift_m : {0.0, 0.1, -0.1, 0.05, 1e-12, 0.19999999999}) {
+                    const Quaternion q = from_rotation_vector({turn_rad, 0.5 * turn_rad, -turn_rad});
+                    const Vec3 base{far_m, 0.3 * far_m, 0.0};
+                    const Posed a(brick, Quaternion{}, base);
+                    expect_frames_as_general(a, Posed(brick, q, base + Vec3{shift_m, 0.0, 0.1 + gap_m}), tally);
+                    expect_frames_as_general(a, Posed(brick, q, base + Vec3{0.2 + gap_m, 0.5 * shift_m, 0.0}), tally);
+                }
+    // 501 faces decided (360 cut, 1920 points), 4683 not: the gaps of 0 and 1e-17 m (corners on
+    // the plane to round-off), the corner 1e-11 m inside a side, the faces not in contact.
+    EXPECT_GT(tally.decided, 400);
+    EXPECT_GT(tally.cut, 300);
+    EXPECT_GT(tally.undecided, 4000);
 }
 
 }  // namespace
