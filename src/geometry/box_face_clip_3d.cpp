@@ -4,7 +4,6 @@
 #include <array>
 #include <bit>
 #include <cmath>
-#include <limits>
 
 namespace blockdem {
 namespace {
@@ -54,20 +53,6 @@ struct RectangleInFrame {
     clip.origin_m = ref.vertices_m[ref.shape->faces[ref_face][0]];
 }
 
-// The rectangle's four sides from its corners.
-[[gnu::always_inline]] inline void set_rectangle_sides(RectangleInFrame& rectangle) {
-    // The sides run along v and u in turn (box edges, along e_v or e_u to round-off and to
-    // box_frame's 1e-12 of the box's size): the first side's longer coordinate says which.
-    const double* corner_u = rectangle.corner_u_m;
-    const double* corner_v = rectangle.corner_v_m;
-    const bool first_along_v = std::abs(corner_v[1] - corner_v[0]) >= std::abs(corner_u[1] - corner_u[0]);
-    for (std::size_t k = 0; k < 4; ++k) {
-        const std::size_t k_next = (k + 1) % 4;
-        rectangle.sides[k] = rectangle_side(first_along_v == (k % 2 == 0), corner_u[k], corner_v[k], corner_u[k_next],
-                                            corner_v[k_next]);
-    }
-}
-
 // The rectangle in the frame (the axes loaded).
 [[gnu::always_inline]] inline void load_rectangle(const PosedPolyhedron& ref, std::uint32_t ref_face,
                                                   const BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
@@ -80,7 +65,16 @@ struct RectangleInFrame {
         rectangle.corner_u_m[k] = dot(r, e_u);
         rectangle.corner_v_m[k] = dot(r, e_v);
     }
-    set_rectangle_sides(rectangle);
+    // The sides run along v and u in turn (box edges, along e_v or e_u to round-off and to
+    // box_frame's 1e-12 of the box's size): the first side's longer coordinate says which.
+    const double* corner_u = rectangle.corner_u_m;
+    const double* corner_v = rectangle.corner_v_m;
+    const bool first_along_v = std::abs(corner_v[1] - corner_v[0]) >= std::abs(corner_u[1] - corner_u[0]);
+    for (std::size_t k = 0; k < 4; ++k) {
+        const std::size_t k_next = (k + 1) % 4;
+        rectangle.sides[k] = rectangle_side(first_along_v == (k % 2 == 0), corner_u[k], corner_v[k], corner_u[k_next],
+                                            corner_v[k_next]);
+    }
 }
 
 // The frame and the rectangle in it: what both clips start from.
@@ -220,27 +214,60 @@ bool clip_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, std::uin
     return true;
 }
 
-// The face as it is, every side skipping (the one pass's polygon, in buffers[0]).
-void write_uncut(const PosedPolyhedron& inc, std::uint32_t inc_face, std::uint32_t ref_face, const FourCorners& face,
-                 BoxFaceClip3d& clip) {
-    FaceCorner* polygon = clip.buffers[0].data();
-    for (std::size_t i = 0; i < 4; ++i)
-        polygon[i] = incident_corner(inc, inc_face, ref_face, i, face.u_m[i], face.v_m[i], face.w_m[i]);
-    clip.count = 4;
-    clip.corners = polygon;
-}
-
-// The one pass's cut of the face's 4 corners by side k alone, written into buffers[1] with its
-// keys: the passes' own cut (the same heights, the same formula), for a face that no other side cuts.
-void cut_by_one_side(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                     std::uint32_t inc_face, const RectangleSide& side, std::size_t k, const FourCorners& face,
-                     BoxFaceClip3d& clip) {
+// The clip in one pass, where it gives the passes' polygon to the bit: when at most one side
+// cuts the face (has a corner beyond its slack). The sides before it then skip, as the passes do
+// (the same heights, the same test); the cut is the passes' own cut of the incident face's
+// corners (the same formula on the same heights); the sides after it skip only if the cut's new
+// corners are inside them, which is decided without computing their heights there: a new corner
+// lies on a side of the face between two of its corners, to round-off (a few 1e-16 of the largest
+// coordinate), so if every corner is inside those sides by half their slack and that half exceeds
+// 1e-12 of the coordinates, so is every new corner. The polygon is written once, with its keys,
+// where it ends: buffers[0] when no side cuts, buffers[1] when one does. Returns false, clip
+// untouched but for its frame, when it cannot say: the passes then decide (a cut by two sides, a
+// corner within half a slack of a side that does not cut).
+bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                      std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
+                      BoxFaceClip3d& clip) {
     constexpr std::size_t count = 4;
+    // A corner's height over a side, sign (coordinate - bound), rounds monotonically with the
+    // coordinate, so the face's highest corner over a side is its least or greatest coordinate
+    // along the side's axis, to the bit: one height a side says whether the side cuts.
+    // Taken pairwise (two independent halves, then one): only the heights' comparisons read them,
+    // which a zero's sign, all that the order could change, does not affect.
+    const auto least = [](const double* x) { return std::min(std::min(x[0], x[1]), std::min(x[2], x[3])); };
+    const auto greatest = [](const double* x) { return std::max(std::max(x[0], x[1]), std::max(x[2], x[3])); };
+    const double least_m[2] = {least(face.u_m), least(face.v_m)};
+    const double greatest_m[2] = {greatest(face.u_m), greatest(face.v_m)};
+    double highest_m[4];  // [m] the highest corner's height over each side
+    unsigned cutting_sides = 0;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const RectangleSide& side = rectangle.sides[k];
+        const double extreme_m = side.sign > 0.0 ? greatest_m[side.axis] : least_m[side.axis];
+        highest_m[k] = side.sign * (extreme_m - side.bound_m);
+        cutting_sides |= static_cast<unsigned>(!(highest_m[k] <= side.slack_m)) << k;
+    }
+    if (cutting_sides == 0) {  // every side skips: the face as it is
+        FaceCorner* polygon = clip.buffers[0].data();
+        for (std::size_t i = 0; i < count; ++i)
+            polygon[i] = incident_corner(inc, inc_face, ref_face, i, face.u_m[i], face.v_m[i], face.w_m[i]);
+        clip.count = count;
+        clip.corners = polygon;
+        return true;
+    }
+    if ((cutting_sides & (cutting_sides - 1)) != 0) return false;  // two sides or more cut
+    const std::size_t k = static_cast<std::size_t>(std::countr_zero(cutting_sides));
+    const double reach_m = std::max(std::max(-least_m[0], greatest_m[0]), std::max(-least_m[1], greatest_m[1]));
+    for (std::size_t j = k + 1; j < 4; ++j) {
+        const double half_slack_m = 0.5 * rectangle.sides[j].slack_m;
+        if (!(highest_m[j] <= half_slack_m && 1e-12 * (std::abs(reach_m) + std::abs(rectangle.sides[j].bound_m)) < half_slack_m))
+            return false;
+    }
     // The incident face's corner and edge numbers read once (the polygon's stores could be read
     // as writes to the lists' entries, but not to where the lists are).
     const std::size_t* corner_ids = inc.shape->faces[inc_face].data();
     const std::uint32_t* edge_ids = inc.edges->face_edges[inc_face].data();
     const std::uint32_t on_reference_face = feature_3d(FeatureKind3d::face, ref_face);
+    const RectangleSide& side = rectangle.sides[k];
     const double* along = side.axis == 0 ? face.u_m : face.v_m;
     double heights[count];
     for (std::size_t i = 0; i < count; ++i) heights[i] = side.sign * (along[i] - side.bound_m);
@@ -270,52 +297,6 @@ void cut_by_one_side(const PosedPolyhedron& ref, std::uint32_t ref_face, const P
     }
     clip.count = clipped;
     clip.corners = cut;
-}
-
-// The clip in one pass, where it gives the passes' polygon to the bit: when at most one side
-// cuts the face (has a corner beyond its slack). The sides before it then skip, as the passes do
-// (the same heights, the same test); the cut is the passes' own cut of the incident face's
-// corners (the same formula on the same heights); the sides after it skip only if the cut's new
-// corners are inside them, which is decided without computing their heights there: a new corner
-// lies on a side of the face between two of its corners, to round-off (a few 1e-16 of the largest
-// coordinate), so if every corner is inside those sides by half their slack and that half exceeds
-// 1e-12 of the coordinates, so is every new corner. The polygon is written once, with its keys,
-// where it ends: buffers[0] when no side cuts, buffers[1] when one does. Returns false, clip
-// untouched but for its frame, when it cannot say: the passes then decide (a cut by two sides, a
-// corner within half a slack of a side that does not cut).
-bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                      std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
-                      BoxFaceClip3d& clip) {
-    // A corner's height over a side, sign (coordinate - bound), rounds monotonically with the
-    // coordinate, so the face's highest corner over a side is its least or greatest coordinate
-    // along the side's axis, to the bit: one height a side says whether the side cuts.
-    // Taken pairwise (two independent halves, then one): only the heights' comparisons read them,
-    // which a zero's sign, all that the order could change, does not affect.
-    const auto least = [](const double* x) { return std::min(std::min(x[0], x[1]), std::min(x[2], x[3])); };
-    const auto greatest = [](const double* x) { return std::max(std::max(x[0], x[1]), std::max(x[2], x[3])); };
-    const double least_m[2] = {least(face.u_m), least(face.v_m)};
-    const double greatest_m[2] = {greatest(face.u_m), greatest(face.v_m)};
-    double highest_m[4];  // [m] the highest corner's height over each side
-    unsigned cutting_sides = 0;
-    for (std::size_t k = 0; k < 4; ++k) {
-        const RectangleSide& side = rectangle.sides[k];
-        const double extreme_m = side.sign > 0.0 ? greatest_m[side.axis] : least_m[side.axis];
-        highest_m[k] = side.sign * (extreme_m - side.bound_m);
-        cutting_sides |= static_cast<unsigned>(!(highest_m[k] <= side.slack_m)) << k;
-    }
-    if (cutting_sides == 0) {  // every side skips: the face as it is
-        write_uncut(inc, inc_face, ref_face, face, clip);
-        return true;
-    }
-    if ((cutting_sides & (cutting_sides - 1)) != 0) return false;  // two sides or more cut
-    const std::size_t k = static_cast<std::size_t>(std::countr_zero(cutting_sides));
-    const double reach_m = std::max(std::max(-least_m[0], greatest_m[0]), std::max(-least_m[1], greatest_m[1]));
-    for (std::size_t j = k + 1; j < 4; ++j) {
-        const double half_slack_m = 0.5 * rectangle.sides[j].slack_m;
-        if (!(highest_m[j] <= half_slack_m && 1e-12 * (std::abs(reach_m) + std::abs(rectangle.sides[j].bound_m)) < half_slack_m))
-            return false;
-    }
-    cut_by_one_side(ref, ref_face, inc, inc_face, rectangle.sides[k], k, face, clip);
     return true;
 }
 
@@ -329,194 +310,7 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     return clip_by_passes(ref, ref_face, inc_face, rectangle, 4, clip);
 }
 
-// Two boxes' face clip from their frames (clip_boxes_where_below). The incident corners are
-// inc's centre +/- h_j d_j (BoxFrame3d::vertex_corner says which signs), so in the reference
-// face's frame each is the centre's (u, v, w), three dots, plus sums of h_j times the pair's dots
-// already taken. The rectangle, from its corner 0 along e_u and e_v, spans 0 to U = +/- 2 h_u
-// and 0 to V = +/- 2 h_v (its corner 0's bits give the signs, its corner 1's which way its side
-// 0 runs). What the vertices give (int11's loaders) differs from this by round-off and by
-// box_frame's tolerances (a vertex 1e-12 of its box's size off its corner, directions square to
-// 1e-12), bounded by error_m; every decision is taken only where the bound cannot turn it.
-struct BoxesInFrame {
-    FourCorners face;
-    double span_m[2];          ///< [m] U and V: the rectangle spans 0 to span_m[axis] along axis
-    double slack_m[2];         ///< [m] the slack of the sides bounding axis (1e-9 of their length)
-    std::size_t side_at_0[2];  ///< the number of the side at 0 along axis
-    std::size_t side_at_span[2];
-    double error_m;  ///< [m] bound on any coordinate's difference from the vertices' (a height's: twice it)
-    double size_m;   ///< [m] the sum of both boxes' edge lengths along their three directions
-};
-
-[[gnu::always_inline]] inline BoxesInFrame boxes_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face,
-                                                          const PosedPolyhedron& inc, std::uint32_t inc_face,
-                                                          const double (*dots)[3], bool ref_is_a,
-                                                          const BoxFaceClip3d& clip) {
-    BoxesInFrame f;
-    const BoxFrame3d& ref_box = *ref.box;
-    const BoxFrame3d& inc_box = *inc.box;
-    const int i = ref_box.face_direction[ref_face];
-    const int along_u = i == 0 ? 1 : 0;  // load_axes's e_u
-    const int along_v = 3 - i - along_u;
-    // e_v = n x e_u is +/- ref's third direction (to round-off and to the directions' squareness).
-    const bool v_along = dot(clip.e_v, ref.directions[along_v]) > 0.0;
-    const double sign_v = v_along ? 1.0 : -1.0;
-    const double sign_n = ref_box.face_sign[ref_face];  // n = sign_n ref's direction i, to the bit
-    const double ref_half_m[3] = {ref_box.half_lengths_m.x, ref_box.half_lengths_m.y, ref_box.half_lengths_m.z};
-    const double inc_half_m[3] = {inc_box.half_lengths_m.x, inc_box.half_lengths_m.y, inc_box.half_lengths_m.z};
-    // The rectangle: from corner 0 towards the other side of each direction.
-    const std::size_t* ref_corners = ref.shape->faces[ref_face].data();
-    const unsigned corner_0 = ref_box.vertex_corner[ref_corners[0]];
-    const unsigned corner_1 = ref_box.vertex_corner[ref_corners[1]];
-    const bool plus_u = ((corner_0 >> along_u) & 1u) == 0;  // corner 0 on the - side: U > 0
-    const bool plus_v = (((corner_0 >> along_v) & 1u) == 0) == v_along;
-    f.span_m[0] = plus_u ? 2.0 * ref_half_m[along_u] : -2.0 * ref_half_m[along_u];
-    f.span_m[1] = plus_v ? 2.0 * ref_half_m[along_v] : -2.0 * ref_half_m[along_v];
-    f.slack_m[0] = 1e-9 * 2.0 * ref_half_m[along_v];  // the sides bounding u run along v
-    f.slack_m[1] = 1e-9 * 2.0 * ref_half_m[along_u];
-    // Side 0 runs from corner 0 along v (a bound on u at 0) or along u (a bound on v at 0); the
-    // sides go round: along v, along u, along v, along u, or the other way.
-    const bool first_along_v = (((corner_0 ^ corner_1) >> along_v) & 1u) != 0;
-    f.side_at_0[0] = first_along_v ? 0 : 3;
-    f.side_at_span[0] = first_along_v ? 2 : 1;
-    f.side_at_0[1] = first_along_v ? 3 : 0;
-    f.side_at_span[1] = first_along_v ? 1 : 2;
-    // The incident corners: h_j d_j in the frame from the dots (ref's direction k . inc's j).
-    const Vec3 r = inc.centroid_m - clip.origin_m;
-    const double centre_u_m = dot(r, clip.e_u), centre_v_m = dot(r, clip.e_v), centre_w_m = dot(r, clip.n);
-    const double* row_u = dots[along_u];
-    const double* row_v = dots[along_v];
-    const double* row_n = dots[i];
-    double half_u_m[3], half_v_m[3], half_w_m[3];
-    for (int j = 0; j < 3; ++j) {
-        const double d_u = ref_is_a ? row_u[j] : dots[j][along_u];
-        const double d_v = ref_is_a ? row_v[j] : dots[j][along_v];
-        const double d_n = ref_is_a ? row_n[j] : dots[j][i];
-        half_u_m[j] = inc_half_m[j] * d_u;
-        half_v_m[j] = sign_v * inc_half_m[j] * d_v;
-        half_w_m[j] = sign_n * inc_half_m[j] * d_n;
-    }
-    // The face lies on one side of inc's direction j0 (its corners share that bit) and its
-    // corners differ along the other two, j1 and j2: the four sums +/- a +/- b formed once a
-    // coordinate, each corner picking its own by its two bits.
-    const int j0 = inc_box.face_direction[inc_face];
-    const int j1 = j0 == 2 ? 0 : j0 + 1;
-    const int j2 = 3 - j0 - j1;
-    const double sign_0 = inc_box.face_sign[inc_face];
-    double sums_m[3][4];  // [u, v, w][bit j1 + 2 bit j2]
-    const double centres_m[3] = {centre_u_m, centre_v_m, centre_w_m};
-    const double* halves_m[3] = {half_u_m, half_v_m, half_w_m};
-    for (int c = 0; c < 3; ++c) {
-        const double base_m = centres_m[c] + sign_0 * halves_m[c][j0];
-        const double a_m = halves_m[c][j1], b_m = halves_m[c][j2];
-        const double minus_a_m = base_m - a_m, plus_a_m = base_m + a_m;
-        sums_m[c][0] = minus_a_m - b_m;
-        sums_m[c][1] = plus_a_m - b_m;
-        sums_m[c][2] = minus_a_m + b_m;
-        sums_m[c][3] = plus_a_m + b_m;
-    }
-    const std::size_t* inc_corners = inc.shape->faces[inc_face].data();
-    for (std::size_t k = 0; k < 4; ++k) {
-        const unsigned corner = inc_box.vertex_corner[inc_corners[k]];
-        const unsigned pick = ((corner >> j1) & 1u) | (((corner >> j2) & 1u) << 1);
-        f.face.u_m[k] = sums_m[0][pick];
-        f.face.v_m[k] = sums_m[1][pick];
-        f.face.w_m[k] = sums_m[2][pick];
-    }
-    // The bound: a few dozen roundings of the positions' size (the vertices are placed where the
-    // world is, these from the offset between the boxes), and 1e-11 of the boxes' size for what
-    // box_frame lets a box be off a true box (e_v then 3e-12 off ref's third direction).
-    const auto l1 = [](Vec3 x) { return std::abs(x.x) + std::abs(x.y) + std::abs(x.z); };
-    f.size_m = 2.0 * (ref_half_m[0] + ref_half_m[1] + ref_half_m[2] + inc_half_m[0] + inc_half_m[1] + inc_half_m[2]);
-    constexpr double unit_round_off = 0.5 * std::numeric_limits<double>::epsilon();
-    f.error_m = 64.0 * unit_round_off * (l1(inc.centroid_m) + l1(clip.origin_m) + f.size_m) + 1e-11 * (l1(r) + f.size_m);
-    return f;
-}
-
-// clip_boxes_where_below's decisions on the frames' coordinates, where error_m cannot turn them;
-// false where it could (the caller then takes the vertices). Each corner must be below the plane
-// by more than the bound, or all above it (no point, as clip_box_face_where_below says); each
-// side's highest corner (the face's extreme along its axis, as the one pass takes it) must
-// differ from the slack by more than twice the bound, so that a side that does not cut has every
-// corner, and every corner a cut makes between two of them, inside it by that margin in either
-// clip; at most one side cuts. For that side, each corner's height must differ from the slack
-// by the margin and exceed 1e-8 of the boxes' size: a cut's new side along an incident edge is
-// at least as long as the height of its corner there (a coordinate changes along an edge by at
-// most its length), so no side of the polygon is short (corner_shares_without_groups's 1e-9 of
-// the longest, which is below the incident face's diagonal) in either clip. The face as it is,
-// or the one pass's cut, is then the passes' polygon here and there: the same corners, keys and
-// order, the positions to round-off.
-bool decide_boxes_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                           std::uint32_t inc_face, const BoxesInFrame& f, BoxFaceClip3d& clip) {
-    const double error_m = f.error_m;
-    bool all_below = true, all_above = true;
-    for (std::size_t k = 0; k < 4; ++k) {
-        all_below &= f.face.w_m[k] < -error_m;
-        all_above &= f.face.w_m[k] > error_m;
-    }
-    if (all_above) {
-        clip.count = 0;
-        clip.corners = clip.buffers[0].data();
-        return true;
-    }
-    if (!all_below) return false;
-    const auto least = [](const double* x) { return std::min(std::min(x[0], x[1]), std::min(x[2], x[3])); };
-    const auto greatest = [](const double* x) { return std::max(std::max(x[0], x[1]), std::max(x[2], x[3])); };
-    const double margin_m = 2.0 * error_m;
-    // Per axis: the sides at 0 and at the span, one facing - and one facing +.
-    RectangleSide sides[2][2];  // [axis][0: the side at the lesser bound, 1: at the greater]
-    std::size_t side_numbers[2][2];
-    unsigned cuts = 0;  // bit 2 axis + which
-    bool decided = true;
-    for (int axis = 0; axis < 2; ++axis) {
-        const double* x = axis == 0 ? f.face.u_m : f.face.v_m;
-        const double span_m = f.span_m[axis];
-        const double lower_m = std::min(0.0, span_m), upper_m = std::max(0.0, span_m);
-        const double slack_m = f.slack_m[axis];
-        sides[axis][0] = {axis, -1.0, lower_m, slack_m};
-        sides[axis][1] = {axis, 1.0, upper_m, slack_m};
-        side_numbers[axis][0] = span_m > 0.0 ? f.side_at_0[axis] : f.side_at_span[axis];
-        side_numbers[axis][1] = span_m > 0.0 ? f.side_at_span[axis] : f.side_at_0[axis];
-        const double below_m = lower_m - least(x);     // the highest corner over the lesser side
-        const double above_m = greatest(x) - upper_m;  // and over the greater
-        decided &= std::abs(below_m - slack_m) > margin_m;
-        decided &= std::abs(above_m - slack_m) > margin_m;
-        cuts |= static_cast<unsigned>(below_m > slack_m) << (2 * axis);
-        cuts |= static_cast<unsigned>(above_m > slack_m) << (2 * axis + 1);
-    }
-    if (!decided) return false;
-    if (cuts == 0) {
-        write_uncut(inc, inc_face, ref_face, f.face, clip);
-        return true;
-    }
-    if ((cuts & (cuts - 1)) != 0) return false;  // two sides or more cut
-    const unsigned cut = static_cast<unsigned>(std::countr_zero(cuts));
-    const RectangleSide& side = sides[cut >> 1][cut & 1u];
-    const double* along = side.axis == 0 ? f.face.u_m : f.face.v_m;
-    const double shortest_piece_m = 1e-8 * f.size_m + margin_m;
-    for (std::size_t c = 0; c < 4; ++c) {
-        const double height_m = side.sign * (along[c] - side.bound_m);
-        decided &= std::abs(height_m - side.slack_m) > margin_m;
-        decided &= std::abs(height_m) > shortest_piece_m;
-    }
-    if (!decided) return false;
-    cut_by_one_side(ref, ref_face, inc, inc_face, side, side_numbers[cut >> 1][cut & 1u], f.face, clip);
-    return true;
-}
-
 }  // namespace
-
-bool clip_boxes_from_frames(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                            std::uint32_t inc_face, const double (*dots)[3], bool ref_is_a, BoxFaceClip3d& clip) {
-    load_axes(ref, ref_face, clip);
-    return decide_boxes_in_frame(ref, ref_face, inc, inc_face,
-                                 boxes_in_frame(ref, ref_face, inc, inc_face, dots, ref_is_a, clip), clip);
-}
-
-bool clip_boxes_where_below(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                            std::uint32_t inc_face, const double (*dots)[3], bool ref_is_a, BoxFaceClip3d& clip) {
-    return clip_boxes_from_frames(ref, ref_face, inc, inc_face, dots, ref_is_a, clip) ||
-           clip_box_face_where_below(ref, ref_face, inc, inc_face, clip);
-}
 
 bool box_face_clip_applies(const PosedPolyhedron& ref, const PosedPolyhedron& inc, std::uint32_t inc_face) {
     return ref.box != nullptr && ref.box->is_box && inc.shape->faces[inc_face].size() <= box_clip_most_incident_corners;

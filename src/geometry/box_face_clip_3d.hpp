@@ -65,22 +65,6 @@ bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, 
 bool clip_box_face_where_below(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                                std::uint32_t inc_face, BoxFaceClip3d& clip);
 
-/// clip_box_face_where_below for two boxes whose face normals are their directions to the bit
-/// (BoxFrame3d::normals_are_directions), from their frames: the incident corners from inc's
-/// centre, half lengths and the pair's dots (ref's direction k . inc's direction j is
-/// dots[k][j] when ref_is_a, dots[j][k] otherwise), the rectangle from ref's half lengths, so
-/// that no vertex is read nor turned into the frame. Where no corner lies within round-off (and
-/// box_frame's tolerances) of a decision and at most one side cuts, this is that clip's polygon,
-/// the same corners, keys and order, the positions to round-off; elsewhere it is that clip.
-/// Why: a wall's bed joints, two bricks turned alike cut across by one side, spent more on
-/// reading and turning vertices than on clipping (docs/performance.md, "Branch face6").
-bool clip_boxes_where_below(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                            std::uint32_t inc_face, const double (*dots)[3], bool ref_is_a, BoxFaceClip3d& clip);
-
-/// clip_boxes_where_below's short path alone: false, clip unspecified, where it cannot decide.
-bool clip_boxes_from_frames(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                            std::uint32_t inc_face, const double (*dots)[3], bool ref_is_a, BoxFaceClip3d& clip);
-
 /// The Sutherland-Hodgman passes alone, side by side (what clip_box_face_in_frame stands for).
 bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                              std::uint32_t inc_face, BoxFaceClip3d& clip);

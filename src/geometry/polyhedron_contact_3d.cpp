@@ -473,7 +473,7 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
     // polygon is read in the face's frame.
     if (pair != nullptr) {
         BoxFaceClip3d clip;
-        if (clip_boxes_where_below(ref, ref_face, inc, inc_face, pair->dots, ref_is_a, clip)) {
+        if (clip_box_face_where_below(ref, ref_face, inc, inc_face, clip)) {
             box_face_points(clip, ref_is_a, true, out);
             return;
         }
