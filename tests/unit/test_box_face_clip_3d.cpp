@@ -4,6 +4,7 @@
 // and a prism's, and on flush faces whose corners lie on the side planes.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 
 #include "geometry/box_face_clip_3d.hpp"
@@ -396,6 +397,194 @@ TEST(BoxFaceClip3d, NoCornerBelowThePlaneMeansNoPolygonCornerBelow) {
     EXPECT_GT(tally.skipped, 1000);
     EXPECT_GT(tally.clipped, 1000);
     EXPECT_GT(tally.skipped_cut, 100);
+}
+
+}  // namespace
+}  // namespace blockdem
+
+namespace blockdem {
+namespace {
+
+// The narrow phase's clip of two boxes (clip_box_face_where_below, its polygon in the
+// reference face's frame) against the general clip (clip_by_face_sides, in the world) on boxes
+// turned alike, as a wall's are: the same polygon (its corners, keys and order), each corner
+// below the plane in both or in neither, positions within the round-off bound below, and the
+// same shares within 1e-12, or within what a short side of the polygon makes of the positions'
+// round-off. Why: it is the check a shorter path for such boxes must pass (docs/performance.md,
+// "Branch face6": one from the boxes' frames was written, passed it and was measured slower).
+struct AlikeTally {
+    int clipped = 0;  // faces with a corner below the plane
+    int skipped = 0;  // faces with none (no point)
+    int cut = 0;      // clipped faces cut by a side (crossings made)
+    int points = 0;   // corners below the plane compared
+    int near_decision = 0;  // faces with a corner within round-off of a decision, not compared
+};
+
+struct FrameCorners {
+    const BoxClipCorner3d* polygon;
+    Vec3 at(std::size_t i) const { return {polygon[i].u_m, polygon[i].v_m, polygon[i].w_m}; }
+    bool known(std::size_t i) const { return feature_kind(polygon[i].feature_incident) == FeatureKind3d::vertex; }
+};
+
+void expect_where_below_as_general(const Posed& a, const Posed& b, AlikeTally& tally) {
+    for (bool ref_is_a : {true, false}) {
+        const Posed& r = ref_is_a ? a : b;
+        const Posed& i = ref_is_a ? b : a;
+        const PosedPolyhedron ref = r.view();
+        const PosedPolyhedron inc = i.view();
+        // The face the narrow phase clips for these poses: the one facing the other box's centre.
+        std::uint32_t f = 0;
+        for (std::uint32_t g = 1; g < r.shape.faces.size(); ++g)
+            if (dot(r.normals[g], i.centre - r.centre) > dot(r.normals[f], i.centre - r.centre)) f = g;
+        {
+            const std::uint32_t inc_face = most_opposed_face(i, r.normals[f]);
+            BoxFaceClip3d frames;
+            ASSERT_TRUE(clip_box_face_where_below(ref, f, inc, inc_face, frames));
+            ContactScratch3d general;
+            clip_by_face_sides(ref, f, inc, inc_face, general);
+            const Vec3 n = r.normals[f];
+            const double plane_m = dot(n, r.vertices[r.shape.faces[f][0]]);
+            // A face with a corner within round-off of a decision (on the plane, or at a side's
+            // slack) may be decided either way by either clip: none is asked of it here (a
+            // short path must leave such faces to the vertices' clip, as the narrow phase has them).
+            const double far_m = std::abs(r.centre.x) + std::abs(r.centre.y) + std::abs(r.centre.z);
+            const double round_off_m = 1e-14 * (1.0 + far_m);
+            bool near_decision = false;
+            const auto& ref_corners = r.shape.faces[f];
+            for (std::size_t c : i.shape.faces[inc_face]) {
+                const Vec3 p = i.vertices[c];
+                near_decision = near_decision || std::abs(plane_m - dot(n, p)) <= round_off_m;
+                for (std::size_t k = 0; k < ref_corners.size(); ++k) {
+                    const Vec3 p0 = r.vertices[ref_corners[k]];
+                    const Vec3 edge = r.vertices[ref_corners[(k + 1) % ref_corners.size()]] - p0;
+                    const double height_m = dot(normalized(cross(edge, n)), p - p0);
+                    near_decision = near_decision || std::abs(height_m - 1e-9 * length(edge)) <= 4.0 * round_off_m;
+                }
+            }
+            // Round-off bound: the coordinates' roundings at the positions' size (1e-14 m at
+            // 123 m) times a small factor; an incident edge's crossing of a side is magnified by
+            // the crossing's conditioning, 1 / |sin| of the angle between the edge and the side
+            // plane (about 1 where boxes turned alike are cut across, up to 1e7 where an edge
+            // turned by 1e-7 rad runs along a side plane and crosses it).
+            const auto conditioning = [&](const ClipCorner3d& g) {
+                if (feature_kind(g.feature_incident) != FeatureKind3d::edge) return 1.0;
+                const Vec3 along = i.directions[i.edges.edge_direction[feature_index(g.feature_incident)]];
+                const Vec3 side = normalized(cross(r.directions[r.edges.edge_direction[feature_index(g.feature_reference)]], n));
+                return 1.0 + 1.0 / std::max(std::abs(dot(along, side)), 1e-12);
+            };
+            double tolerance_m = round_off_m;
+            for (const ClipCorner3d& g : general.polygon) tolerance_m = std::max(tolerance_m, round_off_m * conditioning(g));
+            // A crossing within its round-off of the plane is such a decision too, and so is one
+            // of an edge within 1e-6 rad of the side plane it crosses: where it lands along the
+            // edge, and whether the clip keeps the sliver it cuts, is round-off.
+            for (const ClipCorner3d& g : general.polygon)
+                near_decision = near_decision || conditioning(g) > 1e6 ||
+                                std::abs(plane_m - dot(n, g.point_m)) <= 4.0 * round_off_m * conditioning(g);
+            if (near_decision) {
+                ++tally.near_decision;
+                return;
+            }
+            bool general_below = false;
+            for (const ClipCorner3d& c : general.polygon) general_below = general_below || plane_m - dot(n, c.point_m) > 0.0;
+            if (frames.count == 0) {  // no corner below: the general clip makes no point either
+                EXPECT_FALSE(general_below) << "face " << f;
+                ++tally.skipped;
+                return;
+            }
+            ++tally.clipped;
+            ASSERT_EQ(frames.count, general.polygon.size()) << "face " << f;
+            bool any_cut = false;
+            std::vector<Vec3> world(frames.count);
+            std::vector<std::uint8_t> quarter(frames.count);
+            for (std::size_t k = 0; k < frames.count; ++k) {
+                const BoxClipCorner3d& c = frames.corners[k];
+                const ClipCorner3d& g = general.polygon[k];
+                EXPECT_EQ(c.feature_incident, g.feature_incident);
+                EXPECT_EQ(c.feature_reference, g.feature_reference);
+                EXPECT_EQ(c.line_after, g.line_after);
+                EXPECT_EQ(c.line_is_reference, g.line_is_reference);
+                world[k] = frames.world_m(c.u_m, c.v_m, c.w_m);
+                EXPECT_NEAR(length(world[k] - g.point_m), 0.0, tolerance_m) << "face " << f << " corner " << k;
+                EXPECT_EQ(c.w_m < 0.0, plane_m - dot(n, g.point_m) > 0.0) << "face " << f << " corner " << k;
+                if (c.w_m < 0.0) ++tally.points;
+                quarter[k] = feature_kind(g.feature_incident) == FeatureKind3d::vertex;
+                any_cut = any_cut || !quarter[k];
+            }
+            if (any_cut) ++tally.cut;
+            // The shares as the narrow phase takes each polygon.
+            std::vector<double> general_shares(frames.count), frame_shares(frames.count);
+            std::vector<Vec3> general_corners(frames.count);
+            for (std::size_t k = 0; k < frames.count; ++k) general_corners[k] = general.polygon[k].point_m;
+            corner_shares_3d(general_corners.data(), frames.count, general_shares.data(), quarter.data());
+            // As box_face_points takes them: without groups, or on a copy where a side is short.
+            if (!corner_shares_without_groups(FrameCorners{frames.corners}, frames.count, frame_shares.data())) {
+                std::vector<Vec3> in_frame(frames.count);
+                for (std::size_t k = 0; k < frames.count; ++k) in_frame[k] = FrameCorners{frames.corners}.at(k);
+                corner_shares_3d(in_frame.data(), frames.count, frame_shares.data());
+            }
+            // A turn is an arctangent of ratios of sides, whose round-off (tolerance_m) it divides
+            // by their length: 1e-12, or that where the polygon has a side shorter than a few cm.
+            double shortest_m = std::numeric_limits<double>::infinity();
+            for (std::size_t k = 0; k < frames.count; ++k)
+                shortest_m = std::min(shortest_m, length(general_corners[(k + 1) % frames.count] - general_corners[k]));
+            const double share_tolerance = std::max(1e-12, 4.0 * tolerance_m / shortest_m);
+            for (std::size_t k = 0; k < frames.count; ++k)
+                EXPECT_NEAR(frame_shares[k], general_shares[k], share_tolerance) << "face " << f << " corner " << k;
+        }
+    }
+}
+
+TEST(BoxFaceClip3d, BoxesTurnedAlikeGiveTheGeneralClipOverRandomPoses) {
+    std::mt19937 random(53);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    const std::vector<Vec3> slab = box_vertices({2.0, 1.0, 0.5}, {});
+    AlikeTally tally;
+    for (int trial = 0; trial < 600; ++trial) {
+        // Both turned by one random turn, b by a tiny one more (0 to 1e-7 rad), b pressed into a's
+        // top or its end by up to 1e-4 m and shifted along the face by up to a brick.
+        const Quaternion q = from_rotation_vector({3.0 * u(random), 3.0 * u(random), 3.0 * u(random)});
+        const double tiny = 1e-7 * unit(random);
+        const Quaternion turn = from_rotation_vector({tiny * u(random), tiny * u(random), tiny * u(random)});
+        const bool on_slab = trial % 4 == 0;
+        const bool on_top = trial % 2 == 0;
+        const Vec3 far{trial % 3 == 0 ? 123.4 : 0.0, trial % 3 == 1 ? -7.3 : 0.0, 0.0};
+        const double press_m = 1e-4 * unit(random);
+        const Vec3 offset = on_top ? Vec3{0.2 * u(random), 0.1 * u(random), (on_slab ? 0.3 : 0.1) - press_m}
+                                   : Vec3{(on_slab ? 1.1 : 0.2) - press_m, 0.1 * u(random), 0.1 * u(random)};
+        const Posed a(on_slab ? slab : brick, q, far);
+        const Posed b(brick, turn * q, far + rotate(q, offset));
+        expect_where_below_as_general(a, b, tally);
+    }
+    // Every pair is clipped (1200 faces, 1050 of them cut, 4800 points); none is near a decision.
+    EXPECT_GT(tally.clipped, 1000);
+    EXPECT_GT(tally.cut, 900);
+    EXPECT_GT(tally.points, 4000);
+}
+
+TEST(BoxFaceClip3d, BoxesTurnedAlikeGiveTheGeneralClipOnTheWallsExactCases) {
+    // Flush faces of equal width (corners on side planes to round-off), half-brick and other
+    // offsets (a corner 1e-11 m inside a side), gaps of 0 and +/- 1e-17 m and pressed ones,
+    // unturned and turned by 1e-7 rad, near the origin and 123 m from it.
+    const std::vector<Vec3> brick = box_vertices({0.2, 0.1, 0.1}, {});
+    AlikeTally tally;
+    for (double far_m : {0.0, 7.3, 123.4})
+        for (double turn_rad : {0.0, 1e-7, -3e-8})
+            for (double gap_m : {0.0, 1e-17, -1e-17, -1e-6})
+                for (double shift_m : {0.0, 0.1, -0.1, 0.05, 1e-12, 0.19999999999}) {
+                    const Quaternion q = from_rotation_vector({turn_rad, 0.5 * turn_rad, -turn_rad});
+                    const Vec3 base{far_m, 0.3 * far_m, 0.0};
+                    const Posed a(brick, Quaternion{}, base);
+                    expect_where_below_as_general(a, Posed(brick, q, base + Vec3{shift_m, 0.0, 0.1 + gap_m}), tally);
+                    expect_where_below_as_general(a, Posed(brick, q, base + Vec3{0.2 + gap_m, 0.5 * shift_m, 0.0}), tally);
+                }
+    // 220 faces clipped (196 cut, 712 points), 13 with no corner below, 325 near a decision (the
+    // gaps of 0 and 1e-17 m, the edges along a side plane).
+    EXPECT_GT(tally.clipped, 200);
+    EXPECT_GT(tally.cut, 150);
+    EXPECT_GT(tally.skipped, 5);
+    EXPECT_GT(tally.near_decision, 200);
 }
 
 }  // namespace
