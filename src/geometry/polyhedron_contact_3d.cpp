@@ -463,9 +463,15 @@ void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_
         const DoubleLanes xy = origin_xy + lanes(c.u_m) * e_u_xy + lanes(c.v_m) * e_v_xy + lanes(half_w_m) * n_xy;
         const double z = clip.origin_m.z + c.u_m * clip.e_u.z + c.v_m * clip.e_v.z + half_w_m * clip.n.z;
         // Made where it is stored (a point built aside was then copied), its features chosen
-        // rather than swapped after.
+        // rather than swapped after. A plain struct built from parentheses is C++20's (P0960);
+        // Clang before 16 lacks it (the fuzz and sanitizer builds), and takes the braced copy.
+#if defined(__cpp_aggregate_paren_init)
         out.emplace_back(Vec3{xy[0], xy[1], z}, normal, -c.w_m, ref_is_a ? c.feature_reference : c.feature_incident,
                          ref_is_a ? c.feature_incident : c.feature_reference, shares[i]);
+#else
+        out.push_back({Vec3{xy[0], xy[1], z}, normal, -c.w_m, ref_is_a ? c.feature_reference : c.feature_incident,
+                       ref_is_a ? c.feature_incident : c.feature_reference, shares[i]});
+#endif
     }
 }
 
