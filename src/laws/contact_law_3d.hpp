@@ -158,6 +158,26 @@ struct PairLaneSums {
     DoubleLanes shear_dashpot_power_w;               ///< [W]
 };
 
+// A pair's sums over all its points, whichever way each point was taken: the force on b, its
+// moment about a's centroid, and the energy terms (world/step_3d.cpp's pair_totals takes them).
+struct PairSums {
+    Vec3 force_n;     ///< [N]
+    Vec3 torque_n_m;  ///< [N m] about a's centroid
+    PairEnergySums e;
+};
+
+// The sums of a pair whose points went two at a time (l) or one at a time (e, force_n, torque_n_m):
+// the lanes added across to the single points' sums.
+inline PairSums pair_sums(const PairLaneSums& l, PairEnergySums e, Vec3 force_n, Vec3 torque_n_m) {
+    force_n += lane_sum(l.force_n);
+    torque_n_m += lane_sum(l.torque_n_m);
+    e.share_overlap_squared_m2 += lane_sum(l.share_overlap_squared_m2);
+    e.spring_squared_per_share_n2 += lane_sum(l.spring_squared_per_share_n2);
+    e.normal_dashpot_power_w += lane_sum(l.normal_dashpot_power_w);
+    e.shear_dashpot_power_w += lane_sum(l.shear_dashpot_power_w);
+    return {force_n, torque_n_m, e};
+}
+
 // A pair's motion and dashpots in both lanes, made once a pair (a lane made from a double is a copy
 // and a shuffle: made a point, they were 19 instructions an iteration).
 struct PairLanes {
@@ -268,13 +288,48 @@ BLOCKDEM_QUAD PairQuads pair_quads(const LawConstants& k, const PairMotion& m, c
             quad(k.law.mu)};
 }
 
+// The terms four_point_law adds up, one lane a point, not yet summed: a pair of four points sums
+// them across the lanes at once (pair_sums), where two_point_law's sums took each vector's halves,
+// then its two lanes.
+struct PairQuadTerms {
+    Vec3Quad force_n;                        ///< [N]
+    Vec3Quad torque_n_m;                     ///< [N m] about a's centroid
+    QuadLanes share_overlap_squared_m2;      ///< [m^2] as PairEnergySums
+    QuadLanes spring_squared_per_share_n2;   ///< [N^2]
+    QuadLanes normal_dashpot_power_w;        ///< [W]
+    QuadLanes shear_dashpot_power_w;         ///< [W]
+};
+
+// The terms t added to two-lane sums l as two_point_law at p[0], p[1] and then at p[2], p[3] adds
+// them (the same bits).
+BLOCKDEM_QUAD void add_halves(PairLaneSums& l, const PairQuadTerms& t) {
+    blockdem::add_halves(l.normal_dashpot_power_w, t.normal_dashpot_power_w);
+    blockdem::add_halves(l.shear_dashpot_power_w, t.shear_dashpot_power_w);
+    blockdem::add_halves(l.share_overlap_squared_m2, t.share_overlap_squared_m2);
+    blockdem::add_halves(l.spring_squared_per_share_n2, t.spring_squared_per_share_n2);
+    blockdem::add_halves(l.force_n, t.force_n);
+    blockdem::add_halves(l.torque_n_m, t.torque_n_m);
+}
+
+// The sums of a pair whose four points all went through four_point_law: each term's four lanes
+// summed as pair_sums sums two_point_law's lanes after the two halves (the same bits but for the
+// sign of a sum of zeros), ten vectors in three groups (quad_lanes.hpp, sums_across_lanes).
+BLOCKDEM_QUAD PairSums pair_sums(const PairQuadTerms& t) {
+    const QuadLanes force_and_x = sums_across_lanes(t.force_n.x, t.force_n.y, t.force_n.z, t.torque_n_m.x);
+    const QuadLanes torque_and_dashpots = sums_across_lanes(t.torque_n_m.y, t.torque_n_m.z, t.normal_dashpot_power_w,
+                                                            t.shear_dashpot_power_w);
+    const DoubleLanes springs = sums_across_lanes(t.share_overlap_squared_m2, t.spring_squared_per_share_n2);
+    return {{force_and_x[0], force_and_x[1], force_and_x[2]},
+            {force_and_x[3], torque_and_dashpots[0], torque_and_dashpots[1]},
+            {springs[0], springs[1], torque_and_dashpots[2], torque_and_dashpots[3], 0.0}};
+}
+
 // two_point_law at four points p[0..3] of a pair at once, one lane each, for AVX (laws/quad_lanes.hpp):
-// the same operations in the same order, so each lane's result is its point's own; the sums added
-// to l as two_point_law at p[0], p[1] and then at p[2], p[3] adds them (the same bits). Writes the
-// four points and adds to l only where all four stick inside their caps; returns false, with
-// nothing written, otherwise (two_point_law then takes each two).
+// the same operations in the same order, so each lane's result is its point's own; the terms to sum
+// left in t, one lane a point. Writes the four points and t only where all four stick inside their
+// caps; returns false, with nothing written, otherwise (two_point_law then takes each two).
 BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuads& m, ContactPoint3d* p,
-                                  PairLaneSums& l) {
+                                  PairQuadTerms& t) {
     const QuadLanes zero = quad(0.0);
     const QuadLanes share =
         quad(p[0].stiffness_share, p[1].stiffness_share, p[2].stiffness_share, p[3].stiffness_share);
@@ -322,13 +377,13 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
         return false;
     const QuadLanes last_normal_dashpot_n = quad(p[0].normal_dashpot_n, p[1].normal_dashpot_n,
                                                  p[2].normal_dashpot_n, p[3].normal_dashpot_n);
-    add_halves(l.normal_dashpot_power_w, (last_normal_dashpot_n + normal_dashpot_n) * normal_speed);
-    add_halves(l.shear_dashpot_power_w, dot(carried_dashpot + dashpot, tangential));
-    add_halves(l.share_overlap_squared_m2, share * overlap_m * overlap_m);
-    add_halves(l.spring_squared_per_share_n2, select(share > zero, trial_squared / share, zero));
+    t.normal_dashpot_power_w = (last_normal_dashpot_n + normal_dashpot_n) * normal_speed;
+    t.shear_dashpot_power_w = dot(carried_dashpot + dashpot, tangential);
+    t.share_overlap_squared_m2 = share * overlap_m * overlap_m;
+    t.spring_squared_per_share_n2 = select(share > zero, trial_squared / share, zero);
     const Vec3Quad force_n = normal_n * normal + total;
-    add_halves(l.force_n, force_n);
-    add_halves(l.torque_n_m, cross(r, force_n));
+    t.force_n = force_n;
+    t.torque_n_m = cross(r, force_n);
     // Stored from the halves, each vector split once (a lane of a 32-byte vector read on its own
     // is split again for each lane).
     const DoubleLanes halves_normal_dashpot_n[2] = {low_half(normal_dashpot_n), high_half(normal_dashpot_n)};

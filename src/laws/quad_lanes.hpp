@@ -84,6 +84,22 @@ BLOCKDEM_QUAD void add_halves(Vec3Lanes& s, const Vec3Quad& v) {
     add_halves(s.z, v.z);
 }
 
+/// Four vectors each summed across its four lanes, returned as {sum a, sum b, sum c, sum d}: each
+/// (v0 + v2) + (v1 + v3), as add_halves onto zero and then lane_sum add them (the same bits but for
+/// the sign of a sum of zeros). Two 128-bit swaps and an add a pair of vectors, and one horizontal
+/// add for the four: 7 instructions, where each vector's halves, its two lanes and the stores of
+/// its sums took about 7 a vector.
+BLOCKDEM_QUAD QuadLanes sums_across_lanes(QuadLanes a, QuadLanes b, QuadLanes c, QuadLanes d) {
+    const QuadLanes ac = __builtin_ia32_vperm2f128_pd256(a, c, 0x20) + __builtin_ia32_vperm2f128_pd256(a, c, 0x31);
+    const QuadLanes bd = __builtin_ia32_vperm2f128_pd256(b, d, 0x20) + __builtin_ia32_vperm2f128_pd256(b, d, 0x31);
+    return __builtin_ia32_haddpd256(ac, bd);  // {ac0 + ac1, bd0 + bd1, ac2 + ac3, bd2 + bd3}
+}
+/// Two vectors each summed across its four lanes, {sum a, sum b}, as sums_across_lanes does.
+BLOCKDEM_QUAD DoubleLanes sums_across_lanes(QuadLanes a, QuadLanes b) {
+    const QuadLanes ab = __builtin_ia32_vperm2f128_pd256(a, b, 0x20) + __builtin_ia32_vperm2f128_pd256(a, b, 0x31);
+    return __builtin_ia32_haddpd(low_half(ab), high_half(ab));
+}
+
 #else
 
 inline bool quad_lanes_usable() { return false; }

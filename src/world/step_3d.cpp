@@ -378,21 +378,15 @@ struct LawTotals {
     torque_n_m += cross(r, f);
 }
 
-// A pair's sums once its points are taken: the lanes' sums added across lanes to the points' taken
-// one at a time, the force and moment stored in the pair's slot, the energy terms times their
-// factors, and the table's work.
+// A pair's totals once its points are summed (law_3d::pair_sums): the force and moment stored in the
+// pair's slot, the energy terms times their factors, and the table's work.
 [[gnu::always_inline]] inline LawTotals pair_totals(const World3d& w, const LawConstants& constants,
                                                     ContactPairSums3d& pair, std::uint32_t a, std::uint32_t b,
-                                                    const PairLaneSums& l, PairEnergySums e, Vec3 force_n,
-                                                    Vec3 torque_n_m, Vec3 table_step_m) {
-    force_n += lane_sum(l.force_n);
-    torque_n_m += lane_sum(l.torque_n_m);
-    e.share_overlap_squared_m2 += lane_sum(l.share_overlap_squared_m2);
-    e.spring_squared_per_share_n2 += lane_sum(l.spring_squared_per_share_n2);
-    e.normal_dashpot_power_w += lane_sum(l.normal_dashpot_power_w);
-    e.shear_dashpot_power_w += lane_sum(l.shear_dashpot_power_w);
+                                                    const PairSums& s, const Vec3& table_step_m) {
+    const Vec3 force_n = s.force_n;
+    const PairEnergySums& e = s.e;
     pair.force_n = force_n;
-    pair.torque_about_a_n_m = torque_n_m;
+    pair.torque_about_a_n_m = s.torque_n_m;
     LawTotals t;
     t.elastic_j = constants.half_kn_N_m * e.share_overlap_squared_m2 +
                   constants.half_per_ks_m_N * e.spring_squared_per_share_n2;
@@ -414,7 +408,7 @@ struct LawTotals {
 // points at a time (what four_point_law computed is dropped: it wrote nothing).
 template <bool four_lanes>
 [[gnu::always_inline]] inline LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
-                                                  Vec3 table_step_m) {
+                                                  const Vec3& table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
@@ -423,9 +417,9 @@ template <bool four_lanes>
 #if BLOCKDEM_QUAD_LANES
     if constexpr (four_lanes) {
         if (pair.points == 4) {
-            PairLaneSums l{};
-            if (four_point_law(constants.law.termination, pair_quads(constants, m, dashpots), points, l))
-                return pair_totals(w, constants, pair, a, b, l, PairEnergySums{}, Vec3{}, Vec3{}, table_step_m);
+            PairQuadTerms t;
+            if (four_point_law(constants.law.termination, pair_quads(constants, m, dashpots), points, t))
+                return pair_totals(w, constants, pair, a, b, pair_sums(t), table_step_m);
         }
     }
 #endif
@@ -443,7 +437,7 @@ template <bool four_lanes>
         one_point(points[k + 1]);
     }
     if (k < pair.points) one_point(points[k]);
-    return pair_totals(w, constants, pair, a, b, l, e, force_n, torque_n_m, table_step_m);
+    return pair_totals(w, constants, pair, a, b, pair_sums(l, e, force_n, torque_n_m), table_step_m);
 }
 
 #if BLOCKDEM_QUAD_LANES
