@@ -401,12 +401,7 @@ struct LawTotals {
 
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
 // moment about a's centroid), the pair's energy terms returned. Two points at a time where both
-// stick inside their caps (two_point_law), one at a time otherwise. With four_lanes (AVX), a pair
-// of four points, the usual face-to-face contact, first goes through four_point_law: where all four
-// stick, its sums are those of two_point_law at its two halves, to the bit, and kept in registers
-// (no point leaves the line, so no address of them is taken); otherwise the pair starts again two
-// points at a time (what four_point_law computed is dropped: it wrote nothing).
-template <bool four_lanes>
+// stick inside their caps (two_point_law), one at a time otherwise.
 [[gnu::always_inline]] inline LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
                                                   const Vec3& table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
@@ -414,15 +409,6 @@ template <bool four_lanes>
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
     const PairDashpots dashpots = pair_dashpots(constants, pair);
-#if BLOCKDEM_QUAD_LANES
-    if constexpr (four_lanes) {
-        if (pair.points == 4) {
-            PairQuadTerms t;
-            if (four_point_law(constants.law.termination, pair_quads(constants, m, dashpots), points, t))
-                return pair_totals(w, constants, pair, a, b, pair_sums(t), table_step_m);
-        }
-    }
-#endif
     const PairLanes both_lanes = pair_lanes(m, dashpots);
     PairLaneSums l{};
     PairEnergySums e;
@@ -441,12 +427,34 @@ template <bool four_lanes>
 }
 
 #if BLOCKDEM_QUAD_LANES
-// pair_law with four lanes, the whole of it compiled for AVX (its three-operand forms of the
-// two-lane code too), for processors that run it (quad_lanes_usable).
+// pair_law compiled for AVX (its three-operand forms of the two-lane code), for the pairs that
+// pair_law_avx leaves to it. Out of line, so that the four-point path keeps none of this path's
+// values (the motion in memory for one_point_law, the two-lane constants) nor its registers.
+[[gnu::noinline, gnu::target("avx"), gnu::flatten]] LawTotals pair_law_in_twos_avx(World3d& w,
+                                                                                   const LawConstants& constants,
+                                                                                   ContactPairSums3d& pair,
+                                                                                   const Vec3& table_step_m) {
+    return pair_law(w, constants, pair, table_step_m);
+}
+
+// pair_law with four lanes, for processors that run AVX (quad_lanes_usable): a pair of four points,
+// the usual face-to-face contact, goes through four_point_law, and where all four stick its sums
+// are those of two_point_law at its two halves, to the bit; otherwise, or with other than four
+// points, the pair goes to pair_law_in_twos_avx (what four_point_law computed is dropped: it wrote
+// nothing).
 [[gnu::noinline, gnu::target("avx"), gnu::flatten]] LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
                                                                            ContactPairSums3d& pair,
                                                                            const Vec3& table_step_m) {
-    return pair_law<true>(w, constants, pair, table_step_m);
+    if (pair.points == 4) {
+        ContactPoint3d* points = &w.contacts[pair.first_point];
+        const std::uint32_t a = points[0].key.body_a;
+        const std::uint32_t b = points[0].key.body_b;
+        PairQuadTerms t;
+        if (four_point_law(constants.law.termination,
+                           pair_quads(constants, pair_motion(w, a, b), pair_dashpots(constants, pair)), points, t))
+            return pair_totals(w, constants, pair, a, b, pair_sums(t), table_step_m);
+    }
+    return pair_law_in_twos_avx(w, constants, pair, table_step_m);
 }
 #endif
 
@@ -505,7 +513,7 @@ void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
     const LawConstants constants = law_constants(w.contact, w.dt_s);
     const auto n = static_cast<std::ptrdiff_t>(pairs.size());
-    const auto two_lanes = [&](std::ptrdiff_t i) { return pair_law<false>(w, constants, pairs[i], table_step_m); };
+    const auto two_lanes = [&](std::ptrdiff_t i) { return pair_law(w, constants, pairs[i], table_step_m); };
 #if BLOCKDEM_QUAD_LANES
     const auto four_lanes = [&](std::ptrdiff_t i) { return pair_law_avx(w, constants, pairs[i], table_step_m); };
     const LawTotals t = quad_lanes_usable() ? deterministic_sum(n, four_lanes) : deterministic_sum(n, two_lanes);
