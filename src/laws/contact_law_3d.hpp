@@ -6,6 +6,8 @@
 // caps. In a header of its own so that a test can hold the two forms against each other.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 
 #include "contact/contact_table_3d.hpp"
@@ -324,6 +326,34 @@ BLOCKDEM_QUAD PairSums pair_sums(const PairQuadTerms& t) {
             {springs[0], springs[1], torque_and_dashpots[2], torque_and_dashpots[3], 0.0}};
 }
 
+// The law's results at four points p[0..3], one lane a point, written into the points: the lanes
+// transposed so that each point's normal dashpot and shear spring (four doubles side by side) go as
+// one 32-byte store, its shear dashpot's and force's x and y as two 16-byte ones, their z and the
+// flag one at a time (written a value at a time from the vectors' halves, GCC kept the halves
+// spilled: about 110 instructions a pair, about 45 now).
+BLOCKDEM_QUAD void store_four(ContactPoint3d* p, QuadLanes normal_dashpot_n, const Vec3Quad& spring_n,
+                              const Vec3Quad& dashpot_n, const Vec3Quad& force_n) {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double) && offsetof(ShearHistory3d, dashpot_n) == sizeof(Vec3));
+    constexpr std::size_t history_at = offsetof(ContactPoint3d, normal_dashpot_n);
+    static_assert(offsetof(ContactPoint3d, shear) == history_at + sizeof(double));
+    constexpr std::size_t dashpot_at = offsetof(ContactPoint3d, shear) + offsetof(ShearHistory3d, dashpot_n);
+    constexpr std::size_t force_at = offsetof(ContactPoint3d, force_n);
+    QuadLanes history[4], xy[4];
+    transpose(normal_dashpot_n, spring_n.x, spring_n.y, spring_n.z, history);
+    transpose(dashpot_n.x, dashpot_n.y, force_n.x, force_n.y, xy);
+#pragma GCC unroll 4  // a loop, it kept the transposed vectors in memory to index them
+    for (int i = 0; i < 4; ++i) {
+        auto* bytes = reinterpret_cast<unsigned char*>(&p[i]);
+        std::memcpy(bytes + history_at, &history[i], sizeof(QuadLanes));
+        const DoubleLanes dashpot_xy = low_half(xy[i]), force_xy = high_half(xy[i]);
+        std::memcpy(bytes + dashpot_at, &dashpot_xy, sizeof(DoubleLanes));
+        std::memcpy(bytes + force_at, &force_xy, sizeof(DoubleLanes));
+        p[i].shear.dashpot_n.z = dashpot_n.z[i];
+        p[i].force_n.z = force_n.z[i];
+        p[i].sliding = false;
+    }
+}
+
 // two_point_law at four points p[0..3] of a pair at once, one lane each, for AVX (laws/quad_lanes.hpp):
 // the same operations in the same order, so each lane's result is its point's own; the terms to sum
 // left in t, one lane a point. Writes the four points and t only where all four stick inside their
@@ -384,19 +414,7 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
     const Vec3Quad force_n = normal_n * normal + total;
     t.force_n = force_n;
     t.torque_n_m = cross(r, force_n);
-    // Stored from the halves, each vector split once (a lane of a 32-byte vector read on its own
-    // is split again for each lane).
-    const DoubleLanes halves_normal_dashpot_n[2] = {low_half(normal_dashpot_n), high_half(normal_dashpot_n)};
-    const Vec3Lanes halves_trial[2] = {low_half(trial), high_half(trial)};
-    const Vec3Lanes halves_dashpot[2] = {low_half(dashpot), high_half(dashpot)};
-    const Vec3Lanes halves_force_n[2] = {low_half(force_n), high_half(force_n)};
-    for (int i = 0; i < 4; ++i) {
-        const int half = i / 2, j = i % 2;
-        p[i].normal_dashpot_n = halves_normal_dashpot_n[half][j];
-        p[i].shear = {lane(halves_trial[half], j), lane(halves_dashpot[half], j)};
-        p[i].sliding = false;
-        p[i].force_n = lane(halves_force_n[half], j);
-    }
+    store_four(p, normal_dashpot_n, trial, dashpot, force_n);
     return true;
 }
 #endif

@@ -84,6 +84,19 @@ BLOCKDEM_QUAD void add_halves(Vec3Lanes& s, const Vec3Quad& v) {
     add_halves(s.z, v.z);
 }
 
+/// The four vectors' lanes transposed: out[i] = {a_i, b_i, c_i, d_i}, the four values of point i
+/// side by side (four unpacks and four 128-bit swaps).
+BLOCKDEM_QUAD void transpose(QuadLanes a, QuadLanes b, QuadLanes c, QuadLanes d, QuadLanes (&out)[4]) {
+    const QuadLanes ab_even = __builtin_ia32_unpcklpd256(a, b);  // {a0, b0, a2, b2}
+    const QuadLanes ab_odd = __builtin_ia32_unpckhpd256(a, b);   // {a1, b1, a3, b3}
+    const QuadLanes cd_even = __builtin_ia32_unpcklpd256(c, d);
+    const QuadLanes cd_odd = __builtin_ia32_unpckhpd256(c, d);
+    out[0] = __builtin_ia32_vperm2f128_pd256(ab_even, cd_even, 0x20);
+    out[1] = __builtin_ia32_vperm2f128_pd256(ab_odd, cd_odd, 0x20);
+    out[2] = __builtin_ia32_vperm2f128_pd256(ab_even, cd_even, 0x31);
+    out[3] = __builtin_ia32_vperm2f128_pd256(ab_odd, cd_odd, 0x31);
+}
+
 /// Four vectors each summed across its four lanes, returned as {sum a, sum b, sum c, sum d}: each
 /// (v0 + v2) + (v1 + v3), as add_halves onto zero and then lane_sum add them (the same bits but for
 /// the sign of a sum of zeros). Two 128-bit swaps and an add a pair of vectors, and one horizontal
