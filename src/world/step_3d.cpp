@@ -464,9 +464,12 @@ struct LawTotals {
                                                                             ContactPairSums3d* pairs,
                                                                             std::ptrdiff_t begin, std::ptrdiff_t end,
                                                                             const Vec3& table_step_m) {
+    // Summed in a local, not in the returned value: that one is the caller's memory, which GCC wrote
+    // at every pair (a pair's writes might have reached it, to the compiler).
     LawTotals sum{};
     for (std::ptrdiff_t i = begin; i < end; ++i) sum += pair_law_avx(w, constants, pairs[i], table_step_m);
-    return sum;
+    const LawTotals total = sum;
+    return total;
 }
 #endif
 
