@@ -385,14 +385,6 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
     const Vec3Quad carried_spring =
         select(spring_in_plane_squared > zero, quad_sqrt(spring_squared / spring_in_plane_squared), zero) *
         spring_in_plane;
-    const Vec3Quad last_dashpot =
-        quad(p[0].shear.dashpot_n, p[1].shear.dashpot_n, p[2].shear.dashpot_n, p[3].shear.dashpot_n);
-    const QuadLanes dashpot_along = dot(last_dashpot, normal);
-    const QuadLanes dashpot_squared = dot(last_dashpot, last_dashpot);
-    const QuadLanes dashpot_in_plane_squared = dashpot_squared - dashpot_along * dashpot_along;
-    const Vec3Quad carried_dashpot =
-        select(dashpot_in_plane_squared > zero, quad_sqrt(dashpot_squared / dashpot_in_plane_squared), zero) *
-        last_dashpot;
     // the slider, sticking
     const QuadLanes limit_n = m.mu * quad_max(zero, normal_n);
     const QuadLanes limit_squared = limit_n * limit_n;
@@ -405,6 +397,16 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
     if (!all_four((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
                   (dot(total, total) < within_below)))
         return false;
+    // Last step's shear dashpot carried into the plane only now: only the energy term needs it, and
+    // read before the test its vectors were kept in memory across it.
+    const Vec3Quad last_dashpot =
+        quad(p[0].shear.dashpot_n, p[1].shear.dashpot_n, p[2].shear.dashpot_n, p[3].shear.dashpot_n);
+    const QuadLanes dashpot_along = dot(last_dashpot, normal);
+    const QuadLanes dashpot_squared = dot(last_dashpot, last_dashpot);
+    const QuadLanes dashpot_in_plane_squared = dashpot_squared - dashpot_along * dashpot_along;
+    const Vec3Quad carried_dashpot =
+        select(dashpot_in_plane_squared > zero, quad_sqrt(dashpot_squared / dashpot_in_plane_squared), zero) *
+        last_dashpot;
     const QuadLanes last_normal_dashpot_n = quad(p[0].normal_dashpot_n, p[1].normal_dashpot_n,
                                                  p[2].normal_dashpot_n, p[3].normal_dashpot_n);
     t.normal_dashpot_power_w = (last_normal_dashpot_n + normal_dashpot_n) * normal_speed;
