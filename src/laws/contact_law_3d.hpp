@@ -271,23 +271,32 @@ inline PairLanes pair_lanes(const PairMotion& m, const PairDashpots& d) {
 }
 
 #if BLOCKDEM_QUAD_LANES
-// A pair's motion and dashpots in four lanes, and the law's three constants (PairLanes' and
-// LawConstants' two-lane ones), made once a pair.
+// The law's three constants in four lanes (LawConstants' two-lane ones) and its termination, made
+// once for many pairs (world/step_3d.cpp: once a chunk of pairs), so that each pair reads them from
+// memory: made a pair, they were broadcast again at every pair and kept in spills.
+struct LawQuads {
+    QuadLanes kn_N_m;             ///< [N/m]
+    QuadLanes ks_dt_N;            ///< [N]
+    QuadLanes mu;
+    ContactTermination termination = ContactTermination::no_tension;
+};
+
+BLOCKDEM_QUAD LawQuads law_quads(const LawConstants& k) {
+    return {quad(k.law.kn_N_m), quad(k.law.ks_dt_N), quad(k.law.mu), k.law.termination};
+}
+
+// A pair's motion and dashpots in four lanes (PairLanes'), made once a pair.
 struct PairQuads {
     Vec3Quad base_velocity_m_s;   ///< [m/s]
     Vec3Quad turn_rate_rad_s;     ///< [rad/s]
     Vec3Quad centroid_a_m;        ///< [m]
     QuadLanes cn_per_share_N_s_m;        ///< [N s/m]
     QuadLanes minus_cs_per_share_N_s_m;  ///< [N s/m]
-    QuadLanes kn_N_m;             ///< [N/m]
-    QuadLanes ks_dt_N;            ///< [N]
-    QuadLanes mu;
 };
 
-BLOCKDEM_QUAD PairQuads pair_quads(const LawConstants& k, const PairMotion& m, const PairDashpots& d) {
+BLOCKDEM_QUAD PairQuads pair_quads(const PairMotion& m, const PairDashpots& d) {
     return {quad(m.base_velocity_m_s), quad(m.turn_rate_rad_s), quad(m.centroid_a_m),
-            quad(d.cn_per_share_N_s_m), quad(-d.cs_per_share_N_s_m), quad(k.law.kn_N_m), quad(k.law.ks_dt_N),
-            quad(k.law.mu)};
+            quad(d.cn_per_share_N_s_m), quad(-d.cs_per_share_N_s_m)};
 }
 
 // The terms four_point_law adds up, one lane a point, not yet summed: a pair of four points sums
@@ -358,8 +367,7 @@ BLOCKDEM_QUAD void store_four(ContactPoint3d* p, QuadLanes normal_dashpot_n, con
 // the same operations in the same order, so each lane's result is its point's own; the terms to sum
 // left in t, one lane a point. Writes the four points and t only where all four stick inside their
 // caps; returns false, with nothing written, otherwise (two_point_law then takes each two).
-BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuads& m, ContactPoint3d* p,
-                                  PairQuadTerms& t) {
+BLOCKDEM_QUAD bool four_point_law(const LawQuads& law, const PairQuads& m, ContactPoint3d* p, PairQuadTerms& t) {
     const QuadLanes zero = quad(0.0);
     const QuadLanes share =
         quad(p[0].stiffness_share, p[1].stiffness_share, p[2].stiffness_share, p[3].stiffness_share);
@@ -370,9 +378,9 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
     const QuadLanes normal_speed = dot(relative, normal);
     const Vec3Quad tangential = relative - normal_speed * normal;
     // normal_spring_dashpot
-    const QuadLanes spring_n = (m.kn_N_m * share) * overlap_m;
+    const QuadLanes spring_n = (law.kn_N_m * share) * overlap_m;
     const QuadLanes spring_and_dashpot_n = spring_n - (m.cn_per_share_N_s_m * share) * normal_speed;
-    const QuadLanes normal_n = termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
+    const QuadLanes normal_n = law.termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
                                                                                : quad_max(zero, spring_and_dashpot_n);
     const QuadLanes normal_dashpot_n = normal_n - spring_n;
     // carry_to_normal_for_slider
@@ -386,11 +394,11 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
         select(spring_in_plane_squared > zero, quad_sqrt(spring_squared / spring_in_plane_squared), zero) *
         spring_in_plane;
     // the slider, sticking
-    const QuadLanes limit_n = m.mu * quad_max(zero, normal_n);
+    const QuadLanes limit_n = law.mu * quad_max(zero, normal_n);
     const QuadLanes limit_squared = limit_n * limit_n;
     const QuadLanes within_below = select(limit_squared >= quad(std::numeric_limits<double>::min()),
                                           limit_squared * quad(1.0 - 1e-15), quad(-1.0));
-    const Vec3Quad trial = carried_spring - (m.ks_dt_N * share) * tangential;
+    const Vec3Quad trial = carried_spring - (law.ks_dt_N * share) * tangential;
     const Vec3Quad dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
     const Vec3Quad total = trial + dashpot;
     const QuadLanes trial_squared = dot(trial, trial);

@@ -443,15 +443,14 @@ struct LawTotals {
 // points, the pair goes to pair_law_in_twos_avx (what four_point_law computed is dropped: it wrote
 // nothing).
 [[gnu::always_inline, gnu::target("avx")]] inline LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
-                                                                         ContactPairSums3d& pair,
+                                                                         const LawQuads& law, ContactPairSums3d& pair,
                                                                          const Vec3& table_step_m) {
     if (pair.points == 4) {
         ContactPoint3d* points = &w.contacts[pair.first_point];
         const std::uint32_t a = points[0].key.body_a;
         const std::uint32_t b = points[0].key.body_b;
         PairQuadTerms t;
-        if (four_point_law(constants.law.termination,
-                           pair_quads(constants, pair_motion(w, a, b), pair_dashpots(constants, pair)), points, t))
+        if (four_point_law(law, pair_quads(pair_motion(w, a, b), pair_dashpots(constants, pair)), points, t))
             return pair_totals(w, constants, pair, a, b, pair_sums(t), table_step_m);
     }
     return pair_law_in_twos_avx(w, constants, pair, table_step_m);
@@ -466,8 +465,9 @@ struct LawTotals {
                                                                             const Vec3& table_step_m) {
     // Summed in a local, not in the returned value: that one is the caller's memory, which GCC wrote
     // at every pair (a pair's writes might have reached it, to the compiler).
+    const LawQuads law = law_quads(constants);
     LawTotals sum{};
-    for (std::ptrdiff_t i = begin; i < end; ++i) sum += pair_law_avx(w, constants, pairs[i], table_step_m);
+    for (std::ptrdiff_t i = begin; i < end; ++i) sum += pair_law_avx(w, constants, law, pairs[i], table_step_m);
     const LawTotals total = sum;
     return total;
 }

@@ -198,7 +198,7 @@ void expect_same_point(const ContactPoint3d& a, const ContactPoint3d& b) {
 [[gnu::target("avx"), gnu::flatten]] bool four_point_law_in_avx(const Case& c, ContactPoint3d* p, PairLaneSums& l,
                                                                  PairSums& sums) {
     PairQuadTerms t;
-    if (!four_point_law(c.constants.law.termination, pair_quads(c.constants, c.motion, c.dashpots), p, t))
+    if (!four_point_law(law_quads(c.constants), pair_quads(c.motion, c.dashpots), p, t))
         return false;
     add_halves(l, t);
     sums = pair_sums(t);
