@@ -363,7 +363,7 @@ BLOCKDEM_QUAD void store_four(ContactPoint3d* p, QuadLanes normal_dashpot_n, con
     }
 }
 
-// two_point_law at four points p[0..3] of a pair at once, one lane each, for AVX (laws/quad_lanes.hpp):
+// two_point_law at four points p[0..3] of a pair at once, one lane each, for AVX2 (laws/quad_lanes.hpp):
 // the same operations in the same order, so each lane's result is its point's own; the terms to sum
 // left in t, one lane a point. Writes the four points and t only where all four stick inside their
 // caps; returns false, with nothing written, otherwise (two_point_law then takes each two).

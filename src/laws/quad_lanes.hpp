@@ -1,13 +1,15 @@
 #pragma once
 // Four doubles side by side, one a contact point, and 3-D vectors of them: two boxes touching face
 // to face touch at four points, and the 3-D law takes the four at once (laws/contact_law_3d.hpp,
-// four_point_law) where the processor has AVX, whose 32-byte operations serve four points as
-// SSE2's 16-byte ones (laws/double_lanes.hpp) serve two, with three operands (no register copy to
-// keep a source). Built only where GCC builds for x86-64 ELF (BLOCKDEM_QUAD_LANES); every function
-// here is compiled for AVX and inlined into a caller compiled for AVX (world/step_3d.cpp picks that
-// caller at run time, quad_lanes_usable), so the rest of the program stays plain x86-64. Each lane
-// rounds as the scalar expression written the same way (AVX has no fused multiply-add), so a
-// lane's result is its point's own, as in two lanes.
+// four_point_law) where the processor has AVX2, whose 32-byte operations (AVX's) serve four points
+// as SSE2's 16-byte ones (laws/double_lanes.hpp) serve two, with three operands (no register copy
+// to keep a source); AVX2 rather than AVX alone for its broadcast of a register in one instruction
+// (AVX takes two: a pair's motion, made in scalars, is broadcast into eleven vectors). Built only
+// where GCC builds for x86-64 ELF (BLOCKDEM_QUAD_LANES); every function here is compiled for AVX2
+// and inlined into a caller compiled for AVX2 (world/step_3d.cpp picks that caller at run time,
+// quad_lanes_usable), so the rest of the program stays plain x86-64. Each lane rounds as the scalar
+// expression written the same way (no fused multiply-add: that is FMA's, not enabled), so a lane's
+// result is its point's own, as in two lanes.
 #include "laws/double_lanes.hpp"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && defined(__ELF__)
@@ -20,14 +22,14 @@ namespace blockdem {
 
 #if BLOCKDEM_QUAD_LANES
 
-/// Whether this processor and its operating system run AVX (GCC's check includes the OS's saving of
+/// Whether this processor and its operating system run AVX2 (GCC's check includes the OS's saving of
 /// the 32-byte registers).
-inline bool quad_lanes_usable() { return __builtin_cpu_supports("avx"); }
+inline bool quad_lanes_usable() { return __builtin_cpu_supports("avx2"); }
 
-// For a function of four lanes: compiled for AVX. Not always_inline: a caller compiled for plain
-// x86-64 that is itself always inlined into an AVX one (world/step_3d.cpp's pair_law) may not take it
-// in its own body; the AVX caller takes the whole by gnu::flatten.
-#define BLOCKDEM_QUAD [[gnu::target("avx")]] inline
+// For a function of four lanes: compiled for AVX2. Not always_inline: a caller compiled for plain
+// x86-64 that is itself always inlined into an AVX2 one (world/step_3d.cpp's pair_law) may not take
+// it in its own body; the AVX2 caller takes the whole by gnu::flatten.
+#define BLOCKDEM_QUAD [[gnu::target("avx2")]] inline
 
 using QuadLanes = double __attribute__((vector_size(32)));  ///< four doubles, one a point
 using QuadMask = long long __attribute__((vector_size(32)));  ///< all bits set in a lane where true

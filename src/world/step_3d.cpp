@@ -427,22 +427,22 @@ struct LawTotals {
 }
 
 #if BLOCKDEM_QUAD_LANES
-// pair_law compiled for AVX (its three-operand forms of the two-lane code), for the pairs that
+// pair_law compiled for AVX2 (AVX's three-operand forms of the two-lane code), for the pairs that
 // pair_law_avx leaves to it. Out of line, so that the four-point path keeps none of this path's
 // values (the motion in memory for one_point_law, the two-lane constants) nor its registers.
-[[gnu::noinline, gnu::target("avx"), gnu::flatten]] LawTotals pair_law_in_twos_avx(World3d& w,
+[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals pair_law_in_twos_avx(World3d& w,
                                                                                    const LawConstants& constants,
                                                                                    ContactPairSums3d& pair,
                                                                                    const Vec3& table_step_m) {
     return pair_law(w, constants, pair, table_step_m);
 }
 
-// pair_law with four lanes, for processors that run AVX (quad_lanes_usable): a pair of four points,
+// pair_law with four lanes, for processors that run AVX2 (quad_lanes_usable): a pair of four points,
 // the usual face-to-face contact, goes through four_point_law, and where all four stick its sums
 // are those of two_point_law at its two halves, to the bit; otherwise, or with other than four
 // points, the pair goes to pair_law_in_twos_avx (what four_point_law computed is dropped: it wrote
 // nothing).
-[[gnu::always_inline, gnu::target("avx")]] inline LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
+[[gnu::always_inline, gnu::target("avx2")]] inline LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
                                                                          const LawQuads& law, ContactPairSums3d& pair,
                                                                          const Vec3& table_step_m) {
     if (pair.points == 4) {
@@ -459,7 +459,7 @@ struct LawTotals {
 // pair_law_avx at pairs begin .. end - 1, their totals summed in order from zero (a chunk of
 // deterministic_sum_of_chunks): one call a chunk, not a pair, so that no pair pays a call, the
 // registers' saving and the frame, and the law's constants stay put across the pairs.
-[[gnu::noinline, gnu::target("avx"), gnu::flatten]] LawTotals pair_laws_avx(World3d& w, const LawConstants& constants,
+[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals pair_laws_avx(World3d& w, const LawConstants& constants,
                                                                             ContactPairSums3d* pairs,
                                                                             std::ptrdiff_t begin, std::ptrdiff_t end,
                                                                             const Vec3& table_step_m) {

@@ -5,7 +5,7 @@
 // cap. The forces and the history carried to the next step are compared to the bit (each lane
 // rounds as the scalar expression written the same way); the energy sums to 1e-12 (the lanes add a
 // pair's terms lane by lane, point_law one point after the other: the same terms in another order).
-// four_point_law (AVX), four points at once, is held against two_point_law at its two halves: the
+// four_point_law (AVX2), four points at once, is held against two_point_law at its two halves: the
 // points and the sums to the bit.
 #include <gtest/gtest.h>
 
@@ -192,10 +192,10 @@ void expect_same_point(const ContactPoint3d& a, const ContactPoint3d& b) {
     EXPECT_EQ(a.sliding, b.sliding);
 }
 
-// four_point_law in an AVX function, as world/step_3d.cpp's pair_law_avx takes it.
+// four_point_law in an AVX2 function, as world/step_3d.cpp's pair_law_avx takes it.
 // Its terms are added to l at its two halves (add_halves), and summed across the lanes as a pair
 // of four points sums them (pair_sums) into sums.
-[[gnu::target("avx"), gnu::flatten]] bool four_point_law_in_avx(const Case& c, ContactPoint3d* p, PairLaneSums& l,
+[[gnu::target("avx2"), gnu::flatten]] bool four_point_law_in_avx(const Case& c, ContactPoint3d* p, PairLaneSums& l,
                                                                  PairSums& sums) {
     PairQuadTerms t;
     if (!four_point_law(law_quads(c.constants), pair_quads(c.motion, c.dashpots), p, t))
@@ -254,10 +254,10 @@ bool compare_four(const Case& c, const ContactPoint3d (&points)[4], const PairLa
 }
 
 TEST(ContactLaw3d, FourPointsInLanesAreTwoPointsTwice) {
-    // four_point_law (AVX) against two_point_law at each half, which the test above holds against
+    // four_point_law (AVX2) against two_point_law at each half, which the test above holds against
     // point_law: the four points of one pair drawn as two draws of the ten families (the second's
     // points under the first's law and motion, so that some stick and some reach their caps).
-    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX on this processor: the four lanes are not run";
+    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX2 on this processor: the four lanes are not run";
     std::mt19937_64 r(17);
     int taken = 0, left = 0;
     constexpr int draws = 50000;
@@ -280,7 +280,7 @@ TEST(ContactLaw3d, FourPointsInLanesAreTwoPointsTwice) {
 
 TEST(ContactLaw3d, FourPointsAtTheirCapsAfterATurnGoAsTwo) {
     // The sweep of ASpringAtItsCapAfterATurnIsLeftToTheSlider through the four lanes.
-    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX on this processor: the four lanes are not run";
+    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX2 on this processor: the four lanes are not run";
     ContactParameters p{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = 0.0, .h_s = 0.0};
     Case c;
     c.constants = law_constants(p, 1e-6);
