@@ -369,11 +369,24 @@ BLOCKDEM_QUAD void store_four(ContactPoint3d* p, QuadLanes normal_dashpot_n, con
 // caps; returns false, with nothing written, otherwise (two_point_law then takes each two).
 BLOCKDEM_QUAD bool four_point_law(const LawQuads& law, const PairQuads& m, ContactPoint3d* p, PairQuadTerms& t) {
     const QuadLanes zero = quad(0.0);
-    const QuadLanes share =
-        quad(p[0].stiffness_share, p[1].stiffness_share, p[2].stiffness_share, p[3].stiffness_share);
-    const QuadLanes overlap_m = quad(p[0].overlap_m, p[1].overlap_m, p[2].overlap_m, p[3].overlap_m);
-    const Vec3Quad normal = quad(p[0].normal, p[1].normal, p[2].normal, p[3].normal);
-    const Vec3Quad r = quad(p[0].point_m, p[1].point_m, p[2].point_m, p[3].point_m) - m.centroid_a_m;
+    // The points' fields read four doubles at a time, transposed: the point and the normal's x, then
+    // the normal's y and z, the overlap and the share (side by side in ContactPoint3d).
+    static_assert(offsetof(ContactPoint3d, normal) == offsetof(ContactPoint3d, point_m) + sizeof(Vec3) &&
+                  offsetof(ContactPoint3d, overlap_m) == offsetof(ContactPoint3d, normal) + sizeof(Vec3) &&
+                  offsetof(ContactPoint3d, stiffness_share) == offsetof(ContactPoint3d, overlap_m) + sizeof(double));
+    const unsigned char* bytes[4] = {reinterpret_cast<const unsigned char*>(&p[0]),
+                                     reinterpret_cast<const unsigned char*>(&p[1]),
+                                     reinterpret_cast<const unsigned char*>(&p[2]),
+                                     reinterpret_cast<const unsigned char*>(&p[3])};
+    constexpr std::size_t first = offsetof(ContactPoint3d, point_m);
+    constexpr std::size_t second = offsetof(ContactPoint3d, normal) + sizeof(double);
+    QuadLanes point_and_x[4], yz_overlap_share[4];
+    load_transposed(bytes[0] + first, bytes[1] + first, bytes[2] + first, bytes[3] + first, point_and_x);
+    load_transposed(bytes[0] + second, bytes[1] + second, bytes[2] + second, bytes[3] + second, yz_overlap_share);
+    const QuadLanes share = yz_overlap_share[3];
+    const QuadLanes overlap_m = yz_overlap_share[2];
+    const Vec3Quad normal{point_and_x[3], yz_overlap_share[0], yz_overlap_share[1]};
+    const Vec3Quad r = Vec3Quad{point_and_x[0], point_and_x[1], point_and_x[2]} - m.centroid_a_m;
     const Vec3Quad relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, r);
     const QuadLanes normal_speed = dot(relative, normal);
     const Vec3Quad tangential = relative - normal_speed * normal;
