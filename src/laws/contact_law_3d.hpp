@@ -6,6 +6,8 @@
 // caps. In a header of its own so that a test can hold the two forms against each other.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <limits>
 
 #include "contact/contact_table_3d.hpp"
@@ -158,6 +160,26 @@ struct PairLaneSums {
     DoubleLanes shear_dashpot_power_w;               ///< [W]
 };
 
+// A pair's sums over all its points, whichever way each point was taken: the force on b, its
+// moment about a's centroid, and the energy terms (world/step_3d.cpp's pair_totals takes them).
+struct PairSums {
+    Vec3 force_n;     ///< [N]
+    Vec3 torque_n_m;  ///< [N m] about a's centroid
+    PairEnergySums e;
+};
+
+// The sums of a pair whose points went two at a time (l) or one at a time (e, force_n, torque_n_m):
+// the lanes added across to the single points' sums.
+inline PairSums pair_sums(const PairLaneSums& l, PairEnergySums e, Vec3 force_n, Vec3 torque_n_m) {
+    force_n += lane_sum(l.force_n);
+    torque_n_m += lane_sum(l.torque_n_m);
+    e.share_overlap_squared_m2 += lane_sum(l.share_overlap_squared_m2);
+    e.spring_squared_per_share_n2 += lane_sum(l.spring_squared_per_share_n2);
+    e.normal_dashpot_power_w += lane_sum(l.normal_dashpot_power_w);
+    e.shear_dashpot_power_w += lane_sum(l.shear_dashpot_power_w);
+    return {force_n, torque_n_m, e};
+}
+
 // A pair's motion and dashpots in both lanes, made once a pair (a lane made from a double is a copy
 // and a shuffle: made a point, they were 19 instructions an iteration).
 struct PairLanes {
@@ -249,45 +271,129 @@ inline PairLanes pair_lanes(const PairMotion& m, const PairDashpots& d) {
 }
 
 #if BLOCKDEM_QUAD_LANES
-// A pair's motion and dashpots in four lanes, and the law's three constants (PairLanes' and
-// LawConstants' two-lane ones), made once a pair.
+// The law's three constants in four lanes (LawConstants' two-lane ones) and its termination, made
+// once for many pairs (world/step_3d.cpp: once a chunk of pairs), so that each pair reads them from
+// memory: made a pair, they were broadcast again at every pair and kept in spills.
+struct LawQuads {
+    QuadLanes kn_N_m;             ///< [N/m]
+    QuadLanes ks_dt_N;            ///< [N]
+    QuadLanes mu;
+    ContactTermination termination = ContactTermination::no_tension;
+};
+
+BLOCKDEM_QUAD LawQuads law_quads(const LawConstants& k) {
+    return {quad(k.law.kn_N_m), quad(k.law.ks_dt_N), quad(k.law.mu), k.law.termination};
+}
+
+// A pair's motion and dashpots in four lanes (PairLanes'), made once a pair.
 struct PairQuads {
     Vec3Quad base_velocity_m_s;   ///< [m/s]
     Vec3Quad turn_rate_rad_s;     ///< [rad/s]
     Vec3Quad centroid_a_m;        ///< [m]
     QuadLanes cn_per_share_N_s_m;        ///< [N s/m]
     QuadLanes minus_cs_per_share_N_s_m;  ///< [N s/m]
-    QuadLanes kn_N_m;             ///< [N/m]
-    QuadLanes ks_dt_N;            ///< [N]
-    QuadLanes mu;
 };
 
-BLOCKDEM_QUAD PairQuads pair_quads(const LawConstants& k, const PairMotion& m, const PairDashpots& d) {
+BLOCKDEM_QUAD PairQuads pair_quads(const PairMotion& m, const PairDashpots& d) {
     return {quad(m.base_velocity_m_s), quad(m.turn_rate_rad_s), quad(m.centroid_a_m),
-            quad(d.cn_per_share_N_s_m), quad(-d.cs_per_share_N_s_m), quad(k.law.kn_N_m), quad(k.law.ks_dt_N),
-            quad(k.law.mu)};
+            quad(d.cn_per_share_N_s_m), quad(-d.cs_per_share_N_s_m)};
 }
 
-// two_point_law at four points p[0..3] of a pair at once, one lane each, for AVX (laws/quad_lanes.hpp):
-// the same operations in the same order, so each lane's result is its point's own; the sums added
-// to l as two_point_law at p[0], p[1] and then at p[2], p[3] adds them (the same bits). Writes the
-// four points and adds to l only where all four stick inside their caps; returns false, with
-// nothing written, otherwise (two_point_law then takes each two).
-BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuads& m, ContactPoint3d* p,
-                                  PairLaneSums& l) {
+// The terms four_point_law adds up, one lane a point, not yet summed: a pair of four points sums
+// them across the lanes at once (pair_sums), where two_point_law's sums took each vector's halves,
+// then its two lanes.
+struct PairQuadTerms {
+    Vec3Quad force_n;                        ///< [N]
+    Vec3Quad torque_n_m;                     ///< [N m] about a's centroid
+    QuadLanes share_overlap_squared_m2;      ///< [m^2] as PairEnergySums
+    QuadLanes spring_squared_per_share_n2;   ///< [N^2]
+    QuadLanes normal_dashpot_power_w;        ///< [W]
+    QuadLanes shear_dashpot_power_w;         ///< [W]
+};
+
+// The terms t added to two-lane sums l as two_point_law at p[0], p[1] and then at p[2], p[3] adds
+// them (the same bits).
+BLOCKDEM_QUAD void add_halves(PairLaneSums& l, const PairQuadTerms& t) {
+    blockdem::add_halves(l.normal_dashpot_power_w, t.normal_dashpot_power_w);
+    blockdem::add_halves(l.shear_dashpot_power_w, t.shear_dashpot_power_w);
+    blockdem::add_halves(l.share_overlap_squared_m2, t.share_overlap_squared_m2);
+    blockdem::add_halves(l.spring_squared_per_share_n2, t.spring_squared_per_share_n2);
+    blockdem::add_halves(l.force_n, t.force_n);
+    blockdem::add_halves(l.torque_n_m, t.torque_n_m);
+}
+
+// The sums of a pair whose four points all went through four_point_law: each term's four lanes
+// summed as pair_sums sums two_point_law's lanes after the two halves (the same bits but for the
+// sign of a sum of zeros), ten vectors in three groups (quad_lanes.hpp, sums_across_lanes).
+BLOCKDEM_QUAD PairSums pair_sums(const PairQuadTerms& t) {
+    const QuadLanes force_and_x = sums_across_lanes(t.force_n.x, t.force_n.y, t.force_n.z, t.torque_n_m.x);
+    const QuadLanes torque_and_dashpots = sums_across_lanes(t.torque_n_m.y, t.torque_n_m.z, t.normal_dashpot_power_w,
+                                                            t.shear_dashpot_power_w);
+    const DoubleLanes springs = sums_across_lanes(t.share_overlap_squared_m2, t.spring_squared_per_share_n2);
+    return {{force_and_x[0], force_and_x[1], force_and_x[2]},
+            {force_and_x[3], torque_and_dashpots[0], torque_and_dashpots[1]},
+            {springs[0], springs[1], torque_and_dashpots[2], torque_and_dashpots[3], 0.0}};
+}
+
+// The law's results at four points p[0..3], one lane a point, written into the points: the lanes
+// transposed so that each point's normal dashpot and shear spring (four doubles side by side) go as
+// one 32-byte store, its shear dashpot's and force's x and y as two 16-byte ones, their z and the
+// flag one at a time (written a value at a time from the vectors' halves, GCC kept the halves
+// spilled: about 110 instructions a pair, about 45 now).
+BLOCKDEM_QUAD void store_four(ContactPoint3d* p, QuadLanes normal_dashpot_n, const Vec3Quad& spring_n,
+                              const Vec3Quad& dashpot_n, const Vec3Quad& force_n) {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double) && offsetof(ShearHistory3d, dashpot_n) == sizeof(Vec3));
+    constexpr std::size_t history_at = offsetof(ContactPoint3d, normal_dashpot_n);
+    static_assert(offsetof(ContactPoint3d, shear) == history_at + sizeof(double));
+    constexpr std::size_t dashpot_at = offsetof(ContactPoint3d, shear) + offsetof(ShearHistory3d, dashpot_n);
+    constexpr std::size_t force_at = offsetof(ContactPoint3d, force_n);
+    QuadLanes history[4], xy[4];
+    transpose(normal_dashpot_n, spring_n.x, spring_n.y, spring_n.z, history);
+    transpose(dashpot_n.x, dashpot_n.y, force_n.x, force_n.y, xy);
+#pragma GCC unroll 4  // a loop, it kept the transposed vectors in memory to index them
+    for (int i = 0; i < 4; ++i) {
+        auto* bytes = reinterpret_cast<unsigned char*>(&p[i]);
+        std::memcpy(bytes + history_at, &history[i], sizeof(QuadLanes));
+        const DoubleLanes dashpot_xy = low_half(xy[i]), force_xy = high_half(xy[i]);
+        std::memcpy(bytes + dashpot_at, &dashpot_xy, sizeof(DoubleLanes));
+        std::memcpy(bytes + force_at, &force_xy, sizeof(DoubleLanes));
+        p[i].shear.dashpot_n.z = dashpot_n.z[i];
+        p[i].force_n.z = force_n.z[i];
+        p[i].sliding = false;
+    }
+}
+
+// two_point_law at four points p[0..3] of a pair at once, one lane each, for AVX2 (laws/quad_lanes.hpp):
+// the same operations in the same order, so each lane's result is its point's own; the terms to sum
+// left in t, one lane a point. Writes the four points and t only where all four stick inside their
+// caps; returns false, with nothing written, otherwise (two_point_law then takes each two).
+BLOCKDEM_QUAD bool four_point_law(const LawQuads& law, const PairQuads& m, ContactPoint3d* p, PairQuadTerms& t) {
     const QuadLanes zero = quad(0.0);
-    const QuadLanes share =
-        quad(p[0].stiffness_share, p[1].stiffness_share, p[2].stiffness_share, p[3].stiffness_share);
-    const QuadLanes overlap_m = quad(p[0].overlap_m, p[1].overlap_m, p[2].overlap_m, p[3].overlap_m);
-    const Vec3Quad normal = quad(p[0].normal, p[1].normal, p[2].normal, p[3].normal);
-    const Vec3Quad r = quad(p[0].point_m, p[1].point_m, p[2].point_m, p[3].point_m) - m.centroid_a_m;
+    // The points' fields read four doubles at a time, transposed: the point and the normal's x, then
+    // the normal's y and z, the overlap and the share (side by side in ContactPoint3d).
+    static_assert(offsetof(ContactPoint3d, normal) == offsetof(ContactPoint3d, point_m) + sizeof(Vec3) &&
+                  offsetof(ContactPoint3d, overlap_m) == offsetof(ContactPoint3d, normal) + sizeof(Vec3) &&
+                  offsetof(ContactPoint3d, stiffness_share) == offsetof(ContactPoint3d, overlap_m) + sizeof(double));
+    const unsigned char* bytes[4] = {reinterpret_cast<const unsigned char*>(&p[0]),
+                                     reinterpret_cast<const unsigned char*>(&p[1]),
+                                     reinterpret_cast<const unsigned char*>(&p[2]),
+                                     reinterpret_cast<const unsigned char*>(&p[3])};
+    constexpr std::size_t first = offsetof(ContactPoint3d, point_m);
+    constexpr std::size_t second = offsetof(ContactPoint3d, normal) + sizeof(double);
+    QuadLanes point_and_x[4], yz_overlap_share[4];
+    load_transposed(bytes[0] + first, bytes[1] + first, bytes[2] + first, bytes[3] + first, point_and_x);
+    load_transposed(bytes[0] + second, bytes[1] + second, bytes[2] + second, bytes[3] + second, yz_overlap_share);
+    const QuadLanes share = yz_overlap_share[3];
+    const QuadLanes overlap_m = yz_overlap_share[2];
+    const Vec3Quad normal{point_and_x[3], yz_overlap_share[0], yz_overlap_share[1]};
+    const Vec3Quad r = Vec3Quad{point_and_x[0], point_and_x[1], point_and_x[2]} - m.centroid_a_m;
     const Vec3Quad relative = m.base_velocity_m_s + cross(m.turn_rate_rad_s, r);
     const QuadLanes normal_speed = dot(relative, normal);
     const Vec3Quad tangential = relative - normal_speed * normal;
     // normal_spring_dashpot
-    const QuadLanes spring_n = (m.kn_N_m * share) * overlap_m;
+    const QuadLanes spring_n = (law.kn_N_m * share) * overlap_m;
     const QuadLanes spring_and_dashpot_n = spring_n - (m.cn_per_share_N_s_m * share) * normal_speed;
-    const QuadLanes normal_n = termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
+    const QuadLanes normal_n = law.termination == ContactTermination::zero_overlap ? spring_and_dashpot_n
                                                                                : quad_max(zero, spring_and_dashpot_n);
     const QuadLanes normal_dashpot_n = normal_n - spring_n;
     // carry_to_normal_for_slider
@@ -300,6 +406,20 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
     const Vec3Quad carried_spring =
         select(spring_in_plane_squared > zero, quad_sqrt(spring_squared / spring_in_plane_squared), zero) *
         spring_in_plane;
+    // the slider, sticking
+    const QuadLanes limit_n = law.mu * quad_max(zero, normal_n);
+    const QuadLanes limit_squared = limit_n * limit_n;
+    const QuadLanes within_below = select(limit_squared >= quad(std::numeric_limits<double>::min()),
+                                          limit_squared * quad(1.0 - 1e-15), quad(-1.0));
+    const Vec3Quad trial = carried_spring - (law.ks_dt_N * share) * tangential;
+    const Vec3Quad dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
+    const Vec3Quad total = trial + dashpot;
+    const QuadLanes trial_squared = dot(trial, trial);
+    if (!all_four((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
+                  (dot(total, total) < within_below)))
+        return false;
+    // Last step's shear dashpot carried into the plane only now: only the energy term needs it, and
+    // read before the test its vectors were kept in memory across it.
     const Vec3Quad last_dashpot =
         quad(p[0].shear.dashpot_n, p[1].shear.dashpot_n, p[2].shear.dashpot_n, p[3].shear.dashpot_n);
     const QuadLanes dashpot_along = dot(last_dashpot, normal);
@@ -308,40 +428,16 @@ BLOCKDEM_QUAD bool four_point_law(ContactTermination termination, const PairQuad
     const Vec3Quad carried_dashpot =
         select(dashpot_in_plane_squared > zero, quad_sqrt(dashpot_squared / dashpot_in_plane_squared), zero) *
         last_dashpot;
-    // the slider, sticking
-    const QuadLanes limit_n = m.mu * quad_max(zero, normal_n);
-    const QuadLanes limit_squared = limit_n * limit_n;
-    const QuadLanes within_below = select(limit_squared >= quad(std::numeric_limits<double>::min()),
-                                          limit_squared * quad(1.0 - 1e-15), quad(-1.0));
-    const Vec3Quad trial = carried_spring - (m.ks_dt_N * share) * tangential;
-    const Vec3Quad dashpot = (m.minus_cs_per_share_N_s_m * share) * tangential;
-    const Vec3Quad total = trial + dashpot;
-    const QuadLanes trial_squared = dot(trial, trial);
-    if (!all_four((dot(carried_spring, carried_spring) < within_below) & (trial_squared < within_below) &
-                  (dot(total, total) < within_below)))
-        return false;
     const QuadLanes last_normal_dashpot_n = quad(p[0].normal_dashpot_n, p[1].normal_dashpot_n,
                                                  p[2].normal_dashpot_n, p[3].normal_dashpot_n);
-    add_halves(l.normal_dashpot_power_w, (last_normal_dashpot_n + normal_dashpot_n) * normal_speed);
-    add_halves(l.shear_dashpot_power_w, dot(carried_dashpot + dashpot, tangential));
-    add_halves(l.share_overlap_squared_m2, share * overlap_m * overlap_m);
-    add_halves(l.spring_squared_per_share_n2, select(share > zero, trial_squared / share, zero));
+    t.normal_dashpot_power_w = (last_normal_dashpot_n + normal_dashpot_n) * normal_speed;
+    t.shear_dashpot_power_w = dot(carried_dashpot + dashpot, tangential);
+    t.share_overlap_squared_m2 = share * overlap_m * overlap_m;
+    t.spring_squared_per_share_n2 = select(share > zero, trial_squared / share, zero);
     const Vec3Quad force_n = normal_n * normal + total;
-    add_halves(l.force_n, force_n);
-    add_halves(l.torque_n_m, cross(r, force_n));
-    // Stored from the halves, each vector split once (a lane of a 32-byte vector read on its own
-    // is split again for each lane).
-    const DoubleLanes halves_normal_dashpot_n[2] = {low_half(normal_dashpot_n), high_half(normal_dashpot_n)};
-    const Vec3Lanes halves_trial[2] = {low_half(trial), high_half(trial)};
-    const Vec3Lanes halves_dashpot[2] = {low_half(dashpot), high_half(dashpot)};
-    const Vec3Lanes halves_force_n[2] = {low_half(force_n), high_half(force_n)};
-    for (int i = 0; i < 4; ++i) {
-        const int half = i / 2, j = i % 2;
-        p[i].normal_dashpot_n = halves_normal_dashpot_n[half][j];
-        p[i].shear = {lane(halves_trial[half], j), lane(halves_dashpot[half], j)};
-        p[i].sliding = false;
-        p[i].force_n = lane(halves_force_n[half], j);
-    }
+    t.force_n = force_n;
+    t.torque_n_m = cross(r, force_n);
+    store_four(p, normal_dashpot_n, trial, dashpot, force_n);
     return true;
 }
 #endif

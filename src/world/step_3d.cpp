@@ -409,21 +409,15 @@ struct LawTotals {
     torque_n_m += cross(r, f);
 }
 
-// A pair's sums once its points are taken: the lanes' sums added across lanes to the points' taken
-// one at a time, the force and moment stored in the pair's slot, the energy terms times their
-// factors, and the table's work.
+// A pair's totals once its points are summed (law_3d::pair_sums): the force and moment stored in the
+// pair's slot, the energy terms times their factors, and the table's work.
 [[gnu::always_inline]] inline LawTotals pair_totals(const World3d& w, const LawConstants& constants,
                                                     ContactPairSums3d& pair, std::uint32_t a, std::uint32_t b,
-                                                    const PairLaneSums& l, PairEnergySums e, Vec3 force_n,
-                                                    Vec3 torque_n_m, Vec3 table_step_m) {
-    force_n += lane_sum(l.force_n);
-    torque_n_m += lane_sum(l.torque_n_m);
-    e.share_overlap_squared_m2 += lane_sum(l.share_overlap_squared_m2);
-    e.spring_squared_per_share_n2 += lane_sum(l.spring_squared_per_share_n2);
-    e.normal_dashpot_power_w += lane_sum(l.normal_dashpot_power_w);
-    e.shear_dashpot_power_w += lane_sum(l.shear_dashpot_power_w);
+                                                    const PairSums& s, const Vec3& table_step_m) {
+    const Vec3 force_n = s.force_n;
+    const PairEnergySums& e = s.e;
     pair.force_n = force_n;
-    pair.torque_about_a_n_m = torque_n_m;
+    pair.torque_about_a_n_m = s.torque_n_m;
     LawTotals t;
     t.elastic_j = constants.half_kn_N_m * e.share_overlap_squared_m2 +
                   constants.half_per_ks_m_N * e.spring_squared_per_share_n2;
@@ -438,28 +432,14 @@ struct LawTotals {
 
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
 // moment about a's centroid), the pair's energy terms returned. Two points at a time where both
-// stick inside their caps (two_point_law), one at a time otherwise. With four_lanes (AVX), a pair
-// of four points, the usual face-to-face contact, first goes through four_point_law: where all four
-// stick, its sums are those of two_point_law at its two halves, to the bit, and kept in registers
-// (no point leaves the line, so no address of them is taken); otherwise the pair starts again two
-// points at a time (what four_point_law computed is dropped: it wrote nothing).
-template <bool four_lanes>
+// stick inside their caps (two_point_law), one at a time otherwise.
 [[gnu::always_inline]] inline LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
-                                                  Vec3 table_step_m) {
+                                                  const Vec3& table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
     const std::uint32_t b = points[0].key.body_b;
     const PairMotion m = pair_motion(w, a, b);
     const PairDashpots dashpots = pair_dashpots(constants, pair);
-#if BLOCKDEM_QUAD_LANES
-    if constexpr (four_lanes) {
-        if (pair.points == 4) {
-            PairLaneSums l{};
-            if (four_point_law(constants.law.termination, pair_quads(constants, m, dashpots), points, l))
-                return pair_totals(w, constants, pair, a, b, l, PairEnergySums{}, Vec3{}, Vec3{}, table_step_m);
-        }
-    }
-#endif
     const PairLanes both_lanes = pair_lanes(m, dashpots);
     PairLaneSums l{};
     PairEnergySums e;
@@ -474,16 +454,53 @@ template <bool four_lanes>
         one_point(points[k + 1]);
     }
     if (k < pair.points) one_point(points[k]);
-    return pair_totals(w, constants, pair, a, b, l, e, force_n, torque_n_m, table_step_m);
+    return pair_totals(w, constants, pair, a, b, pair_sums(l, e, force_n, torque_n_m), table_step_m);
 }
 
 #if BLOCKDEM_QUAD_LANES
-// pair_law with four lanes, the whole of it compiled for AVX (its three-operand forms of the
-// two-lane code too), for processors that run it (quad_lanes_usable).
-[[gnu::noinline, gnu::target("avx"), gnu::flatten]] LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
-                                                                           ContactPairSums3d& pair,
-                                                                           const Vec3& table_step_m) {
-    return pair_law<true>(w, constants, pair, table_step_m);
+// pair_law compiled for AVX2 (AVX's three-operand forms of the two-lane code), for the pairs that
+// pair_law_avx leaves to it. Out of line, so that the four-point path keeps none of this path's
+// values (the motion in memory for one_point_law, the two-lane constants) nor its registers.
+[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals pair_law_in_twos_avx(World3d& w,
+                                                                                   const LawConstants& constants,
+                                                                                   ContactPairSums3d& pair,
+                                                                                   const Vec3& table_step_m) {
+    return pair_law(w, constants, pair, table_step_m);
+}
+
+// pair_law with four lanes, for processors that run AVX2 (quad_lanes_usable): a pair of four points,
+// the usual face-to-face contact, goes through four_point_law, and where all four stick its sums
+// are those of two_point_law at its two halves, to the bit; otherwise, or with other than four
+// points, the pair goes to pair_law_in_twos_avx (what four_point_law computed is dropped: it wrote
+// nothing).
+[[gnu::always_inline, gnu::target("avx2")]] inline LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
+                                                                         const LawQuads& law, ContactPairSums3d& pair,
+                                                                         const Vec3& table_step_m) {
+    if (pair.points == 4) {
+        ContactPoint3d* points = &w.contacts[pair.first_point];
+        const std::uint32_t a = points[0].key.body_a;
+        const std::uint32_t b = points[0].key.body_b;
+        PairQuadTerms t;
+        if (four_point_law(law, pair_quads(pair_motion(w, a, b), pair_dashpots(constants, pair)), points, t))
+            return pair_totals(w, constants, pair, a, b, pair_sums(t), table_step_m);
+    }
+    return pair_law_in_twos_avx(w, constants, pair, table_step_m);
+}
+
+// pair_law_avx at pairs begin .. end - 1, their totals summed in order from zero (a chunk of
+// deterministic_sum_of_chunks): one call a chunk, not a pair, so that no pair pays a call, the
+// registers' saving and the frame, and the law's constants stay put across the pairs.
+[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals pair_laws_avx(World3d& w, const LawConstants& constants,
+                                                                            ContactPairSums3d* pairs,
+                                                                            std::ptrdiff_t begin, std::ptrdiff_t end,
+                                                                            const Vec3& table_step_m) {
+    // Summed in a local, not in the returned value: that one is the caller's memory, which GCC wrote
+    // at every pair (a pair's writes might have reached it, to the compiler).
+    const LawQuads law = law_quads(constants);
+    LawTotals sum{};
+    for (std::ptrdiff_t i = begin; i < end; ++i) sum += pair_law_avx(w, constants, law, pairs[i], table_step_m);
+    const LawTotals total = sum;
+    return total;
 }
 #endif
 
@@ -512,8 +529,10 @@ void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
 // pair onto its two bodies did: the same terms in the same order, so the same bits at any thread
 // count. About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
 // The sums are kept in locals and stored once: added in the body's slot, each was stored and read
-// again at every pair (the pair's doubles might have been the body's, to the compiler).
-void gather_pair_sums(World3d& w, std::uint32_t i) {
+// again at every pair (the pair's doubles might have been the body's, to the compiler). Inlined
+// into parallel_for's loop: a call a body, with its frame and its reads of the index's arrays, was
+// about 15 instructions of its 150.
+[[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::uint32_t i) {
     const WorldScratch3d& s = w.scratch;
     RigidBody3d& body = w.bodies[i];
     const Vec3 position_m = body.position_m;
@@ -542,10 +561,13 @@ void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
     const LawConstants constants = law_constants(w.contact, w.dt_s);
     const auto n = static_cast<std::ptrdiff_t>(pairs.size());
-    const auto two_lanes = [&](std::ptrdiff_t i) { return pair_law<false>(w, constants, pairs[i], table_step_m); };
+    const auto two_lanes = [&](std::ptrdiff_t i) { return pair_law(w, constants, pairs[i], table_step_m); };
 #if BLOCKDEM_QUAD_LANES
-    const auto four_lanes = [&](std::ptrdiff_t i) { return pair_law_avx(w, constants, pairs[i], table_step_m); };
-    const LawTotals t = quad_lanes_usable() ? deterministic_sum(n, four_lanes) : deterministic_sum(n, two_lanes);
+    const auto four_lanes = [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+        return pair_laws_avx(w, constants, pairs.data(), begin, end, table_step_m);
+    };
+    const LawTotals t =
+        quad_lanes_usable() ? deterministic_sum_of_chunks(n, four_lanes) : deterministic_sum(n, two_lanes);
 #else
     const LawTotals t = deterministic_sum(n, two_lanes);
 #endif

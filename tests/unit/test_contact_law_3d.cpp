@@ -5,7 +5,7 @@
 // cap. The forces and the history carried to the next step are compared to the bit (each lane
 // rounds as the scalar expression written the same way); the energy sums to 1e-12 (the lanes add a
 // pair's terms lane by lane, point_law one point after the other: the same terms in another order).
-// four_point_law (AVX), four points at once, is held against two_point_law at its two halves: the
+// four_point_law (AVX2), four points at once, is held against two_point_law at its two halves: the
 // points and the sums to the bit.
 #include <gtest/gtest.h>
 
@@ -192,9 +192,27 @@ void expect_same_point(const ContactPoint3d& a, const ContactPoint3d& b) {
     EXPECT_EQ(a.sliding, b.sliding);
 }
 
-// four_point_law in an AVX function, as world/step_3d.cpp's pair_law_avx takes it.
-[[gnu::target("avx"), gnu::flatten]] bool four_point_law_in_avx(const Case& c, ContactPoint3d* p, PairLaneSums& l) {
-    return four_point_law(c.constants.law.termination, pair_quads(c.constants, c.motion, c.dashpots), p, l);
+// four_point_law in an AVX2 function, as world/step_3d.cpp's pair_law_avx takes it.
+// Its terms are added to l at its two halves (add_halves), and summed across the lanes as a pair
+// of four points sums them (pair_sums) into sums.
+[[gnu::target("avx2"), gnu::flatten]] bool four_point_law_in_avx(const Case& c, ContactPoint3d* p, PairLaneSums& l,
+                                                                 PairSums& sums) {
+    PairQuadTerms t;
+    if (!four_point_law(law_quads(c.constants), pair_quads(c.motion, c.dashpots), p, t))
+        return false;
+    add_halves(l, t);
+    sums = pair_sums(t);
+    return true;
+}
+
+void expect_same_sums(const PairSums& a, const PairSums& b) {
+    expect_same_vector(a.force_n, b.force_n, "force");
+    expect_same_vector(a.torque_n_m, b.torque_n_m, "moment");
+    EXPECT_EQ(a.e.share_overlap_squared_m2, b.e.share_overlap_squared_m2);
+    EXPECT_EQ(a.e.spring_squared_per_share_n2, b.e.spring_squared_per_share_n2);
+    EXPECT_EQ(a.e.normal_dashpot_power_w, b.e.normal_dashpot_power_w);
+    EXPECT_EQ(a.e.shear_dashpot_power_w, b.e.shear_dashpot_power_w);
+    EXPECT_EQ(a.e.friction_j, b.e.friction_j);
 }
 
 // Runs four_point_law at four points and two_point_law at their two halves; returns whether the
@@ -205,7 +223,8 @@ bool compare_four(const Case& c, const ContactPoint3d (&points)[4], const PairLa
     ContactPoint3d four[4], two[4];
     for (int i = 0; i < 4; ++i) four[i] = two[i] = points[i];
     PairLaneSums four_sums = start, two_sums = start;
-    const bool four_took = four_point_law_in_avx(c, four, four_sums);
+    PairSums four_pair_sums;
+    const bool four_took = four_point_law_in_avx(c, four, four_sums, four_pair_sums);
     const PairLanes pair_lanes_now = pair_lanes(c.motion, c.dashpots);
     const bool first_took = two_point_law(c.constants, pair_lanes_now, two[0], two[1], two_sums);
     const bool second_took = two_point_law(c.constants, pair_lanes_now, two[2], two[3], two_sums);
@@ -224,14 +243,21 @@ bool compare_four(const Case& c, const ContactPoint3d (&points)[4], const PairLa
     expect_same_lanes(four_sums.spring_squared_per_share_n2, two_sums.spring_squared_per_share_n2, "|F_s|^2 / w");
     expect_same_lanes(four_sums.normal_dashpot_power_w, two_sums.normal_dashpot_power_w, "normal dashpot power");
     expect_same_lanes(four_sums.shear_dashpot_power_w, two_sums.shear_dashpot_power_w, "shear dashpot power");
+    // A pair of these four points alone: its sums across the four lanes are those of the two-lane
+    // sums from zero added across their lanes, to the bit (step_3d.cpp's two paths).
+    ContactPoint3d alone[4] = {points[0], points[1], points[2], points[3]};
+    PairLaneSums halves_from_zero{};
+    two_point_law(c.constants, pair_lanes_now, alone[0], alone[1], halves_from_zero);
+    two_point_law(c.constants, pair_lanes_now, alone[2], alone[3], halves_from_zero);
+    expect_same_sums(four_pair_sums, pair_sums(halves_from_zero, PairEnergySums{}, Vec3{}, Vec3{}));
     return true;
 }
 
 TEST(ContactLaw3d, FourPointsInLanesAreTwoPointsTwice) {
-    // four_point_law (AVX) against two_point_law at each half, which the test above holds against
+    // four_point_law (AVX2) against two_point_law at each half, which the test above holds against
     // point_law: the four points of one pair drawn as two draws of the ten families (the second's
     // points under the first's law and motion, so that some stick and some reach their caps).
-    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX on this processor: the four lanes are not run";
+    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX2 on this processor: the four lanes are not run";
     std::mt19937_64 r(17);
     int taken = 0, left = 0;
     constexpr int draws = 50000;
@@ -254,7 +280,7 @@ TEST(ContactLaw3d, FourPointsInLanesAreTwoPointsTwice) {
 
 TEST(ContactLaw3d, FourPointsAtTheirCapsAfterATurnGoAsTwo) {
     // The sweep of ASpringAtItsCapAfterATurnIsLeftToTheSlider through the four lanes.
-    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX on this processor: the four lanes are not run";
+    if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX2 on this processor: the four lanes are not run";
     ContactParameters p{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = 0.0, .h_s = 0.0};
     Case c;
     c.constants = law_constants(p, 1e-6);
