@@ -24,22 +24,18 @@ struct ContactKey3d {
     friend constexpr auto operator<=>(const ContactKey3d&, const ContactKey3d&) = default;
 };
 
-/// The fields the next step's history merge reads (the key, the share, the history) come first,
-/// in 80 bytes: that merge reads them from last step's whole table, and with them spread over
-/// the point's 176 bytes it touched about 2.7 cache lines a point, where 80 bytes touch about 2.2.
 struct ContactPoint3d {
     ContactKey3d key;
-    double stiffness_share = 1.0;   ///< [-] its share w of kn and ks (geometry/corner_share_3d.hpp)
-    // History carried to the next step.
-    double normal_dashpot_n = 0.0;  ///< [N] last step's normal dashpot force on b
-    ShearHistory3d shear;           ///< [N] shear spring and dashpot force on b, in the tangent plane
-    // This step's geometry.
     Vec3 point_m;                   ///< [m]
     Vec3 normal;                    ///< unit, from a to b
     double overlap_m = 0.0;         ///< [m] > 0
+    double stiffness_share = 1.0;   ///< [-] its share w of kn and ks (geometry/corner_share_3d.hpp)
     double dashpot_mass_kg = 0.0;   ///< [kg] the pair's reduced mass shared by the points' w
-    Vec3 force_n;                   ///< [N] this step's force on b (minus it on a), world frame
+    // History carried to the next step.
+    double normal_dashpot_n = 0.0;  ///< [N] last step's normal dashpot force on b
+    ShearHistory3d shear;           ///< [N] shear spring and dashpot force on b, in the tangent plane
     bool sliding = false;           ///< this step's state, for output
+    Vec3 force_n;                   ///< [N] this step's force on b (minus it on a), world frame
 };
 
 /// The law's parameters at a point: kn and ks times its stiffness share (the dashpots follow
