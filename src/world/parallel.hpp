@@ -63,48 +63,15 @@ void parallel_for_runs(std::ptrdiff_t n, Run run) {
     for (std::ptrdiff_t r = 0; r < runs; ++r) run(r * length, std::min(n, (r + 1) * length));
 }
 
-/// deterministic_sum of terms whose chunks are summed by chunk_sum(begin, end): it must return
-/// Value{} plus the terms of begin .. end - 1 added in order, as deterministic_sum's chunk does;
-/// then the total is the same bits as deterministic_sum's. For terms worked by a function
-/// compiled apart (world/vex_clones.hpp): one call a chunk, not a term.
+/// The chunked sum of rule 3, each chunk's sum made by chunk_sum(begin, end): deterministic_sum
+/// below when it adds Value{} and the terms of begin .. end - 1 in order. Called directly for terms
+/// worked by a function compiled apart (world/vex_clones.hpp): one call a chunk, not a term.
 template <class ChunkSum>
 auto deterministic_sum_of_chunks(std::ptrdiff_t n, ChunkSum chunk_sum) {
     using Value = std::decay_t<decltype(chunk_sum(std::ptrdiff_t{0}, std::ptrdiff_t{0}))>;
     const std::ptrdiff_t chunk = run_length(n);
     const std::ptrdiff_t chunks = (n + chunk - 1) / chunk;
     if (chunks <= 1) return n > 0 ? chunk_sum(std::ptrdiff_t{0}, n) : Value{};
-    union Slot {  // as in deterministic_sum: constructed by its chunk, no memset of all slots
-        Slot() {}
-        Value value;
-    };
-    Slot partial[max_sum_chunks];
-    if (n >= parallel_threshold) {
-#pragma omp parallel for schedule(dynamic)
-        for (std::ptrdiff_t c = 0; c < chunks; ++c)
-            std::construct_at(&partial[c].value, chunk_sum(c * chunk, std::min(n, (c + 1) * chunk)));
-    } else {
-        for (std::ptrdiff_t c = 0; c < chunks; ++c)
-            std::construct_at(&partial[c].value, chunk_sum(c * chunk, std::min(n, (c + 1) * chunk)));
-    }
-    Value total{};
-    for (std::ptrdiff_t c = 0; c < chunks; ++c) total += partial[c].value;
-    return total;
-}
-
-/// sum_{i < n} term(i), in the chunked order of rule 3 (parallel over chunks when n is large).
-/// The value may be a double or a small struct of totals with +=, summed member by member; a
-/// term may also write its own item's slots (rule 1), so one pass can both update and total.
-template <class Term>
-auto deterministic_sum(std::ptrdiff_t n, Term term) {
-    using Value = std::decay_t<decltype(term(std::ptrdiff_t{0}))>;
-    const std::ptrdiff_t chunk = run_length(n);
-    const std::ptrdiff_t chunks = (n + chunk - 1) / chunk;
-    auto sum_range = [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
-        Value s{};
-        for (std::ptrdiff_t i = begin; i < end; ++i) s += term(i);
-        return s;
-    };
-    if (chunks <= 1) return sum_range(0, n);
     // On the stack: the step allocates nothing. Left uninitialised, each used slot constructed
     // by its chunk: a Value with default members, zeroed for all max_sum_chunks slots at every
     // call, was a 57 kB memset twice a step (1 % of a wall's step, docs/performance.md).
@@ -118,14 +85,28 @@ auto deterministic_sum(std::ptrdiff_t n, Term term) {
     if (n >= parallel_threshold) {
 #pragma omp parallel for schedule(dynamic)
         for (std::ptrdiff_t c = 0; c < chunks; ++c)
-            std::construct_at(&partial[c].value, sum_range(c * chunk, std::min(n, (c + 1) * chunk)));
+            std::construct_at(&partial[c].value, chunk_sum(c * chunk, std::min(n, (c + 1) * chunk)));
     } else {
         for (std::ptrdiff_t c = 0; c < chunks; ++c)
-            std::construct_at(&partial[c].value, sum_range(c * chunk, std::min(n, (c + 1) * chunk)));
+            std::construct_at(&partial[c].value, chunk_sum(c * chunk, std::min(n, (c + 1) * chunk)));
     }
     Value total{};
     for (std::ptrdiff_t c = 0; c < chunks; ++c) total += partial[c].value;
     return total;
+}
+
+/// sum_{i < n} term(i), in the chunked order of rule 3 (parallel over chunks when n is large):
+/// each chunk's terms added in order from Value{}. The value may be a double or a small struct
+/// of totals with +=, summed member by member; a term may also write its own item's slots (rule
+/// 1), so one pass can both update and total.
+template <class Term>
+auto deterministic_sum(std::ptrdiff_t n, Term term) {
+    using Value = std::decay_t<decltype(term(std::ptrdiff_t{0}))>;
+    return deterministic_sum_of_chunks(n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+        Value s{};
+        for (std::ptrdiff_t i = begin; i < end; ++i) s += term(i);
+        return s;
+    });
 }
 
 }  // namespace blockdem
