@@ -141,8 +141,10 @@ TEST(ContactTable3d, RunsMergedAgainstTheirPairsLastRunGiveTheWholeTablesMerge) 
         const auto last_runs = runs_of(previous);
         std::vector<ContactPoint3d> runs = fresh;
         for (const auto& [first, end] : runs_of(fresh)) {
+            // The key copied out: Clang before 16 cannot capture a structured binding.
+            const ContactKey3d key = fresh[first].key;
             const auto last = std::find_if(last_runs.begin(), last_runs.end(), [&](const auto& r) {
-                return is_run_of(previous, r.first, r.second, fresh[first].key);
+                return is_run_of(previous, r.first, r.second, key);
             });
             // Another pair's run is not taken for this one's.
             for (const auto& r : last_runs)
