@@ -138,30 +138,45 @@ TEST(ContactLaw3d, TwoPointsInLanesAreEachPointsOwnLaw) {
                 taken[5], draws / 10);
 }
 
+// The cap sweep's case: a history laid into a plane 43 degrees from this step's normal, a slip
+// that shrinks the carried spring by 1e-4 of its length in the step, and the overlap at which the
+// spring's length is the cap mu kn o (the sweep goes up from there, ulp by ulp).
+struct CapSweep {
+    Case law;
+    Vec3 last_spring_n;      ///< [N] last step's spring
+    Vec3 normal;             ///< this step's
+    double first_overlap_m;  ///< [m]
+};
+
+CapSweep cap_sweep() {
+    const ContactParameters p{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = 0.0, .h_s = 0.0};
+    CapSweep sweep;
+    sweep.law.constants = law_constants(p, 1e-6);
+    sweep.law.dashpots = {0.0, 2000.0};
+    sweep.last_spring_n = {-0.37700325163525505, -0.11769282325733366, -0.048260505954373922};
+    sweep.normal = {-0.75951379784397355, 0.3539625117994063, -0.54575574309875963};
+    sweep.law.motion = {(1e-4 / (p.ks_N_m * 1e-6)) * carried_into_plane(sweep.last_spring_n, sweep.normal), {}, {}};
+    sweep.first_overlap_m = length(sweep.last_spring_n) / p.mu / p.kn_N_m;
+    return sweep;
+}
+
 TEST(ContactLaw3d, ASpringAtItsCapAfterATurnIsLeftToTheSlider) {
     // A history laid into a plane 43 degrees from this step's normal, its spring's length swept
     // ulp by ulp through the cap mu kn o: the carry into the new plane rounds the length up by up
     // to 14 ulps, so the lanes' cap test must be the carried spring's own square (last step's
     // square let a spring at the cap stick in the lanes and slide in the slider, keeping a
     // shear dashpot force the slider drops).
-    ContactParameters p{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = 0.0, .h_s = 0.0};
-    Case c;
-    c.constants = law_constants(p, 1e-6);
-    c.dashpots = {0.0, 2000.0};
-    const Vec3 last{-0.37700325163525505, -0.11769282325733366, -0.048260505954373922};
-    const Vec3 n{-0.75951379784397355, 0.3539625117994063, -0.54575574309875963};
-    const Vec3 carried = carried_into_plane(last, n);
-    // A slip that shrinks the carried spring by 1e-4 of its length in the step.
-    c.motion = {(1e-4 / (p.ks_N_m * 1e-6)) * carried, {}, {}};
-    double overlap_m = length(last) / p.mu / p.kn_N_m;
+    const CapSweep sweep = cap_sweep();
+    Case c = sweep.law;
+    double overlap_m = sweep.first_overlap_m;
     int taken = 0;
     for (int i = 0; i < 4000; ++i, overlap_m = std::nextafter(overlap_m, 1.0)) {
         for (ContactPoint3d& pt : c.points) {
             pt = ContactPoint3d{};
-            pt.normal = n;
+            pt.normal = sweep.normal;
             pt.overlap_m = overlap_m;
             pt.stiffness_share = 1.0;
-            pt.shear = {last, {}};
+            pt.shear = {sweep.last_spring_n, {}};
         }
         if (compare(c)) ++taken;
         if (::testing::Test::HasFailure()) {
@@ -281,22 +296,17 @@ TEST(ContactLaw3d, FourPointsInLanesAreTwoPointsTwice) {
 TEST(ContactLaw3d, FourPointsAtTheirCapsAfterATurnGoAsTwo) {
     // The sweep of ASpringAtItsCapAfterATurnIsLeftToTheSlider through the four lanes.
     if (!quad_lanes_usable()) GTEST_SKIP() << "no AVX2 on this processor: the four lanes are not run";
-    ContactParameters p{.kn_N_m = 1e6, .ks_N_m = 1e6, .mu = 0.5, .h_n = 0.0, .h_s = 0.0};
-    Case c;
-    c.constants = law_constants(p, 1e-6);
-    c.dashpots = {0.0, 2000.0};
-    const Vec3 last{-0.37700325163525505, -0.11769282325733366, -0.048260505954373922};
-    const Vec3 n{-0.75951379784397355, 0.3539625117994063, -0.54575574309875963};
-    c.motion = {(1e-4 / (p.ks_N_m * 1e-6)) * carried_into_plane(last, n), {}, {}};
-    double overlap_m = length(last) / p.mu / p.kn_N_m;
+    const CapSweep sweep = cap_sweep();
+    const Case& c = sweep.law;
+    double overlap_m = sweep.first_overlap_m;
     int taken = 0, left = 0;
     for (int i = 0; i < 4000; ++i, overlap_m = std::nextafter(overlap_m, 1.0)) {
         ContactPoint3d points[4];
         for (int j = 0; j < 4; ++j) {
-            points[j].normal = n;
+            points[j].normal = sweep.normal;
             points[j].overlap_m = j == 3 ? overlap_m : 2.0 * overlap_m;  // the last at the cap
             points[j].stiffness_share = 1.0;
-            points[j].shear = {last, {}};
+            points[j].shear = {sweep.last_spring_n, {}};
         }
         if (compare_four(c, points, PairLaneSums{})) ++taken; else ++left;
         if (::testing::Test::HasFailure()) {
