@@ -2,11 +2,14 @@
 """The S3D wall's 1e4 bricks on one thread and on two, by the wall clock, alternated, with the ticks the
 host stole from this VM during each run.
 
-usage: MIN_TIME=1 thread_ratio_3d.py ROUNDS BENCH [BENCH ...]
+usage: MIN_TIME=1 [PROBE=core_probe] thread_ratio_3d.py ROUNDS BENCH [BENCH ...]
   each round runs every BENCH (a blockdem_bench) at 1 then 2 threads:
   OMP_NUM_THREADS=t BENCH --benchmark_filter=BrickWall3d/10000/t/ --benchmark_min_time=MIN_TIME
 Steal is the 8th number of /proc/stat's cpu lines, read before and after each run; the summary
 gives the best-over-best ratio and the ratios of the rounds in which neither run saw any.
+With PROBE (scripts/threads/core_probe.c, built), each round first prints what two threads of pure
+arithmetic and of a memory stream get over one at that moment: the host's share of the two vCPUs,
+which steal ticks do not show.
 """
 import json, os, subprocess, sys
 
@@ -34,7 +37,11 @@ rounds = int(sys.argv[1])
 min_time = float(os.environ.get('MIN_TIME', '1'))
 benches = sys.argv[2:]
 rows = {bch: [] for bch in benches}
+probe = os.environ.get('PROBE')
 for r in range(rounds):
+    if probe:
+        print(f'round {r} probe: ' + subprocess.run([probe], capture_output=True, text=True, check=True).stdout.strip(),
+              flush=True)
     for bch in benches:
         one = run(bch, 1, min_time)
         two = run(bch, 2, min_time)
