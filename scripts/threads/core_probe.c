@@ -12,20 +12,24 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-// Eight independent multiply-add chains on doubles (no FMA contraction across them matters: the
-// point is the core's arithmetic units, not the result). Returns operations done.
+// 32 independent multiply-add chains on doubles: enough for the core's floating-point pipes to be
+// the limit, not a chain's latency, so that a second thread on the same physical core (an SMT
+// sibling) has no idle pipe to take and the pair gets about 1x, where two cores get 2x.
+// Returns operations done.
+enum { chains = 32 };
 static double compute_for(double seconds, double* sink) {
-    double x[8] = {1.0, 1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7};
+    double x[chains];
+    for (int k = 0; k < chains; ++k) x[k] = 1.0 + 0.01 * k;
     const double a = 0.999999, b = 1e-7;
     double ops = 0.0;
     const double start = omp_get_wtime();
     while (omp_get_wtime() - start < seconds) {
         for (int i = 0; i < 100000; ++i)
-            for (int k = 0; k < 8; ++k) x[k] = x[k] * a + b;
-        ops += 1.6e6;
+            for (int k = 0; k < chains; ++k) x[k] = x[k] * a + b;
+        ops += 2.0 * chains * 100000;
     }
     double s = 0.0;
-    for (int k = 0; k < 8; ++k) s += x[k];
+    for (int k = 0; k < chains; ++k) s += x[k];
     *sink += s;
     return ops;
 }
