@@ -44,7 +44,7 @@ struct RectangleInFrame {
 // face's plane, e_v = n x e_u, so that (e_u, e_v, n) is right-handed as the general clip's sides
 // assume.
 [[gnu::always_inline]] inline void load_axes(const PosedPolyhedron& ref, std::uint32_t ref_face, BoxFaceClip3d& clip) {
-    const Vec3 n = ref.face_normals[ref_face];
+    const Vec3 n = face_normal(ref, ref_face);
     const int normal_direction = ref.box->face_direction[ref_face];
     const Vec3 e_u = ref.directions[normal_direction == 0 ? 1 : 0];
     clip.e_u = e_u;

@@ -50,30 +50,59 @@ void place_driven_body(World3d& w, std::size_t i, Vec3 displacement_m, Vec3 velo
     b.velocity_at_t_m_s = velocity_m_s;
 }
 
-// The offsets of each body's entries in the flat pose arrays, when the bodies changed.
+// What the narrow phase's views are made from now (world/world_3d.hpp, PosedSources3d).
+PosedSources3d posed_sources(const World3d& w) {
+    const WorldScratch3d& s = w.scratch;
+    return {w.bodies.data(),         w.edges.data(),      w.box_frames.data(),
+            s.world_vertices_m.data(), s.world_normals.data(), s.world_directions.data(), w.bodies.size()};
+}
+
+// Each body's view for the narrow phase: pointers to its shape, edges, frame and centroid and to its
+// runs in the pose arrays. None of them moves while those arrays keep their buffers, so the views
+// are written here, when one of the buffers is another, and not by every step's pose (72 B a body
+// a step, in a loop bound by its stores).
+void point_posed_views(World3d& w) {
+    WorldScratch3d& s = w.scratch;
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        const RigidBody3d& b = w.bodies[i];
+        s.posed[i] = {&b.shape,
+                      &w.edges[i],
+                      s.world_vertices_m.data() + s.vertex_start[i],
+                      s.world_normals.data() + s.face_start[i],
+                      s.world_directions.data() + s.direction_start[i],
+                      &b.position_m,
+                      &w.box_frames[i]};
+    }
+    s.posed_sources = posed_sources(w);
+}
+
+// The offsets of each body's entries in the flat pose arrays, when the bodies changed, and the
+// narrow phase's views when what they point into did (a body added, a world copied).
 void size_pose_arrays(World3d& w) {
     WorldScratch3d& s = w.scratch;
     const std::size_t n = w.bodies.size();
-    if (s.vertex_start.size() == n + 1) return;
-    s.vertex_start.assign(n + 1, 0);
-    s.face_start.assign(n + 1, 0);
-    s.direction_start.assign(n + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        s.vertex_start[i + 1] = s.vertex_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.vertices_m.size());
-        s.face_start[i + 1] = s.face_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.face_normals.size());
-        s.direction_start[i + 1] = s.direction_start[i] + static_cast<std::uint32_t>(w.edges[i].directions.size());
+    if (s.vertex_start.size() != n + 1) {
+        s.vertex_start.assign(n + 1, 0);
+        s.face_start.assign(n + 1, 0);
+        s.direction_start.assign(n + 1, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            s.vertex_start[i + 1] = s.vertex_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.vertices_m.size());
+            s.face_start[i + 1] = s.face_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.face_normals.size());
+            s.direction_start[i + 1] = s.direction_start[i] + static_cast<std::uint32_t>(w.edges[i].directions.size());
+        }
+        s.world_vertices_m.resize(s.vertex_start[n]);
+        s.world_normals.resize(s.face_start[n]);
+        s.world_directions.resize(s.direction_start[n]);
+        s.body_directions.resize(s.direction_start[n]);
+        for (std::size_t i = 0; i < n; ++i)
+            std::copy(w.edges[i].directions.begin(), w.edges[i].directions.end(), &s.body_directions[s.direction_start[i]]);
+        s.angular_velocity_world_rad_s.resize(n);
+        s.rotations.resize(n);
+        s.boxes.resize(n);
+        s.is_static.resize(n);
+        s.posed.resize(n);
     }
-    s.world_vertices_m.resize(s.vertex_start[n]);
-    s.world_normals.resize(s.face_start[n]);
-    s.world_directions.resize(s.direction_start[n]);
-    s.body_directions.resize(s.direction_start[n]);
-    for (std::size_t i = 0; i < n; ++i)
-        std::copy(w.edges[i].directions.begin(), w.edges[i].directions.end(), &s.body_directions[s.direction_start[i]]);
-    s.angular_velocity_world_rad_s.resize(n);
-    s.rotations.resize(n);
-    s.boxes.resize(n);
-    s.is_static.resize(n);
-    s.posed.resize(n);
+    if (!(s.posed_sources == posed_sources(w))) point_posed_views(w);
 }
 
 // The 8 corners centre +/- a +/- b +/- c, corner k on the + side of a when bit 0 of k is set, of
@@ -160,10 +189,9 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
     return box;
 }
 
-// Step 2: each body's vertices, normals and edge directions in the world frame, its box, and the
-// view of it the narrow phase reads (WorldScratch3d::posed, written here so that the bodies are
-// gone through once), from its orientation's matrix (one a body, kept for the kick and the
-// drift). What is read from the body is read before the first store, for pose_box's reason.
+// Step 2: each body's vertices, normals and edge directions in the world frame and its box, where
+// the narrow phase's view of it points (WorldScratch3d::posed), from its orientation's matrix (one
+// a body, kept for the kick and the drift). What is read from the body is read before the first store, for pose_box's reason.
 // Inlined into pose_run, for pose_box's other reason.
 [[gnu::always_inline]] inline void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
@@ -184,7 +212,6 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
     s.rotations[i] = rotation;
     s.angular_velocity_world_rad_s[i] = omega_world_rad_s;
     s.is_static[i] = is_static;
-    s.posed[i] = {&b.shape, &edges, vertices, normals, directions, centre_m, &frame};
 }
 
 // Steps 1 and 2 for bodies begin .. end - 1, and their forces set to gravity for step 5

@@ -63,6 +63,22 @@ struct CandidateChunk3d {
     std::vector<TouchingCandidate3d> touching;
 };
 
+/// What the narrow phase's views of the bodies (WorldScratch3d::posed) point into: the world's
+/// arrays of bodies, edges and frames, the pose arrays, and the number of bodies. A view's
+/// pointers follow from these and the pose arrays' offsets alone, so while they are the same the
+/// views are (world/step_3d.cpp, size_pose_arrays); a world copied, a vector grown or replaced by
+/// another changes one of them, and the views are written again.
+struct PosedSources3d {
+    const void* bodies = nullptr;
+    const void* edges = nullptr;
+    const void* box_frames = nullptr;
+    const Vec3* vertices_m = nullptr;
+    const Vec3* normals = nullptr;
+    const Vec3* directions = nullptr;
+    std::size_t count = 0;
+    bool operator==(const PosedSources3d&) const = default;
+};
+
 /// Arrays rebuilt every step, kept so that a step allocates nothing in steady state.
 struct WorldScratch3d {
     std::vector<std::uint32_t> vertex_start;  ///< per body, its first entry in world_vertices_m (and one past the last)
@@ -88,7 +104,8 @@ struct WorldScratch3d {
     std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
     std::vector<std::uint32_t> body_pairs;                    ///< per body, its pairs in contact (indices in contact_pairs), in table order
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
-    std::vector<PosedPolyhedron> posed;                       ///< per body, as the narrow phase reads it (once a step, not once a pair side)
+    std::vector<PosedPolyhedron> posed;                       ///< per body, as the narrow phase reads it (pointers into the pose arrays)
+    PosedSources3d posed_sources;                             ///< what posed was written from (size_pose_arrays)
     SkinPairList3d broad_phase;                               ///< the grid, searched again only when a body left its skin
 };
 
