@@ -50,6 +50,11 @@ void place_driven_body(World3d& w, std::size_t i, Vec3 displacement_m, Vec3 velo
     b.velocity_at_t_m_s = velocity_m_s;
 }
 
+// Whether the pose stores a body's turned face normals: not for a box whose normals are its
+// directions to the bit, whose normals the narrow phase reads from its directions
+// (geometry/polyhedron_contact_3d.hpp, face_normal): 144 B a box a step not written.
+bool stores_normals(const BoxFrame3d& frame) { return !(frame.is_box && frame.normals_are_directions); }
+
 // What the narrow phase's views are made from now (world/world_3d.hpp, PosedSources3d).
 PosedSources3d posed_sources(const World3d& w) {
     const WorldScratch3d& s = w.scratch;
@@ -68,7 +73,7 @@ void point_posed_views(World3d& w) {
         s.posed[i] = {&b.shape,
                       &w.edges[i],
                       s.world_vertices_m.data() + s.vertex_start[i],
-                      s.world_normals.data() + s.face_start[i],
+                      stores_normals(w.box_frames[i]) ? s.world_normals.data() + s.face_start[i] : nullptr,
                       s.world_directions.data() + s.direction_start[i],
                       &b.position_m,
                       &w.box_frames[i]};
@@ -87,7 +92,8 @@ void size_pose_arrays(World3d& w) {
         s.direction_start.assign(n + 1, 0);
         for (std::size_t i = 0; i < n; ++i) {
             s.vertex_start[i + 1] = s.vertex_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.vertices_m.size());
-            s.face_start[i + 1] = s.face_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.face_normals.size());
+            const std::size_t normals = stores_normals(w.box_frames[i]) ? w.bodies[i].shape.face_normals.size() : 0;
+            s.face_start[i + 1] = s.face_start[i] + static_cast<std::uint32_t>(normals);
             s.direction_start[i + 1] = s.direction_start[i] + static_cast<std::uint32_t>(w.edges[i].directions.size());
         }
         s.world_vertices_m.resize(s.vertex_start[n]);
@@ -119,8 +125,8 @@ void size_pose_arrays(World3d& w) {
 }
 
 // A box posed from its orientation's matrix: its 3 world edge directions d_i, its 8 corners
-// centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 in its vertex order, its 6 face normals, and its
-// bounding box centre +/- sum h_i |d_i|. Why: 9 products and 42 sums for the corners where
+// centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 in its vertex order, its 6 face normals where it
+// stores them, and its bounding box centre +/- sum h_i |d_i|. Why: 9 products and 42 sums for the corners where
 // turning each vertex costs 15 operations (120 a box), and 15 for the bounding box where the
 // corners' minima and maxima cost 42. The corners are the box the narrow phase tests
 // (geometry/box_frame_3d.hpp: its separating axes use h_i and d_i), and they differ from the
@@ -136,21 +142,10 @@ void size_pose_arrays(World3d& w) {
     const PackedVec3 d[3] = {turn * body_directions[0], turn * body_directions[1], turn * body_directions[2]};
     const Vec3 h = frame.half_lengths_m;
     const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
-    // Turning -d gives exactly minus turning d (round-to-nearest is symmetric), so a normal that
-    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it: d_i goes to
-    // the face along +d_i and -d_i (its sign bit flipped, as the product by -1 flips it) to the
-    // one along -d_i (face_of), so no product by the face's sign nor read of its direction a
-    // face. The faces are read into a local first: a store through normals could alias the frame.
-    if (frame.normals_are_directions) {
-        std::size_t face_of[3][2];
-        for (std::size_t k = 0; k < 3; ++k) face_of[k][0] = frame.face_of[k][0], face_of[k][1] = frame.face_of[k][1];
-        for (std::size_t k = 0; k < 3; ++k) {
-            store(d[k], &normals[face_of[k][0]]);
-            store(PackedVec3{-d[k].xy, -d[k].z}, &normals[face_of[k][1]]);
-        }
-    } else {
+    // A box whose normals are its directions to the bit (BoxFrame3d::normals_are_directions) has
+    // none stored: the narrow phase reads them from its directions (stores_normals).
+    if (!frame.normals_are_directions)
         for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * shape.face_normals[k];
-    }
     for (std::size_t k = 0; k < 3; ++k) store(d[k], &directions[k]);
     const PackedVec3 a = h.x * d[0];
     const PackedVec3 b = h.y * d[1];
@@ -189,10 +184,11 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
     return box;
 }
 
-// Step 2: each body's vertices, normals and edge directions in the world frame and its box, where
-// the narrow phase's view of it points (WorldScratch3d::posed), from its orientation's matrix (one
-// a body, kept for the kick and the drift). What is read from the body is read before the first store, for pose_box's reason.
-// Inlined into pose_run, for pose_box's other reason.
+// Step 2: each body's vertices, normals (where it stores them) and edge directions in the world
+// frame and its box, where the narrow phase's view of it points (WorldScratch3d::posed), from its
+// orientation's matrix (one a body, kept for the kick and the drift). What is read from the body
+// is read before the first store, for pose_box's reason. Inlined into pose_run, for pose_box's
+// other reason.
 [[gnu::always_inline]] inline void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
     const RigidBody3d& b = w.bodies[i];
@@ -205,7 +201,7 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
     const PolyhedronEdges& edges = w.edges[i];
     Vec3* directions = &s.world_directions[s.direction_start[i]];
     Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
-    Vec3* normals = &s.world_normals[s.face_start[i]];
+    Vec3* normals = s.world_normals.data() + s.face_start[i];  // (none for a box that stores none: data() may be null)
     s.boxes[i] = frame.is_box ? pose_box(rotation, centre_m, frame, &s.body_directions[s.direction_start[i]], b.shape,
                                          directions, vertices, normals)
                               : pose_polyhedron(rotation, centre_m, b.shape, edges, directions, vertices, normals);
