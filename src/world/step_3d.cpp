@@ -59,7 +59,8 @@ bool stores_normals(const BoxFrame3d& frame) { return !(frame.is_box && frame.no
 PosedSources3d posed_sources(const World3d& w) {
     const WorldScratch3d& s = w.scratch;
     return {w.bodies.data(),         w.edges.data(),      w.box_frames.data(),
-            s.world_vertices_m.data(), s.world_normals.data(), s.world_directions.data(), w.bodies.size()};
+            s.world_vertices_m.data(), s.world_normals.data(), s.world_directions.data(), s.centroids_m.data(),
+            w.bodies.size()};
 }
 
 // Each body's view for the narrow phase: pointers to its shape, edges, frame and centroid and to its
@@ -75,7 +76,7 @@ void point_posed_views(World3d& w) {
                       s.world_vertices_m.data() + s.vertex_start[i],
                       stores_normals(w.box_frames[i]) ? s.world_normals.data() + s.face_start[i] : nullptr,
                       s.world_directions.data() + s.direction_start[i],
-                      &b.position_m,
+                      &s.centroids_m[i],
                       &w.box_frames[i]};
     }
     s.posed_sources = posed_sources(w);
@@ -103,6 +104,7 @@ void size_pose_arrays(World3d& w) {
         for (std::size_t i = 0; i < n; ++i)
             std::copy(w.edges[i].directions.begin(), w.edges[i].directions.end(), &s.body_directions[s.direction_start[i]]);
         s.angular_velocity_world_rad_s.resize(n);
+        s.centroids_m.resize(n);
         s.rotations.resize(n);
         s.boxes.resize(n);
         s.is_static.resize(n);
@@ -206,6 +208,7 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
                                          directions, vertices, normals)
                               : pose_polyhedron(rotation, centre_m, b.shape, edges, directions, vertices, normals);
     s.rotations[i] = rotation;
+    s.centroids_m[i] = centre_m;
     s.angular_velocity_world_rad_s[i] = omega_world_rad_s;
     s.is_static[i] = is_static;
 }

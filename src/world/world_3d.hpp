@@ -75,6 +75,7 @@ struct PosedSources3d {
     const Vec3* vertices_m = nullptr;
     const Vec3* normals = nullptr;
     const Vec3* directions = nullptr;
+    const Vec3* centroids_m = nullptr;
     std::size_t count = 0;
     bool operator==(const PosedSources3d&) const = default;
 };
@@ -87,6 +88,7 @@ struct WorldScratch3d {
     std::vector<Vec3> world_vertices_m;       ///< [m]
     std::vector<Vec3> world_normals;
     std::vector<Vec3> world_directions;
+    std::vector<Vec3> centroids_m;            ///< [m] per body, its centroid at t, where the narrow phase reads it
     std::vector<Vec3> body_directions;        ///< per body's direction_start run, its edge directions in the body frame
                                               ///< (World3d::edges' copied once: the pose reads them with no pointer chase)
     std::vector<Vec3> angular_velocity_world_rad_s;  ///< [rad/s] per body, over the last step (the contact law's)

@@ -130,7 +130,7 @@ void expect_views_point_into(const World3d& w) {
         EXPECT_EQ(p.shape, &w.bodies[i].shape) << "body " << i;
         EXPECT_EQ(p.edges, &w.edges[i]) << "body " << i;
         EXPECT_EQ(p.box, &w.box_frames[i]) << "body " << i;
-        EXPECT_EQ(p.centroid_m, &w.bodies[i].position_m) << "body " << i;
+        EXPECT_EQ(p.centroid_m, s.centroids_m.data() + i) << "body " << i;
         EXPECT_EQ(p.vertices_m, s.world_vertices_m.data() + s.vertex_start[i]) << "body " << i;
         EXPECT_EQ(p.directions, s.world_directions.data() + s.direction_start[i]) << "body " << i;
     }
