@@ -504,44 +504,81 @@ struct LawTotals {
 }
 #endif
 
-// Each body's pairs in contact, in table order: a counting sort by body (serial, a few
-// instructions a pair: the pass that added the sums onto the bodies here cost about four times
-// more). Body i's entries end up in body_pairs[body_pair_start[i] .. body_pair_start[i + 1]).
-void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
-    std::vector<std::uint32_t>& start = s.body_pair_start;
+// Each body's candidates in candidate order (a counting sort by body, serial), made again only
+// when the candidates are not those it was made from: the skin list rebuilt or its filter keeping
+// other pairs, bodies taken out, bodies added, a world made or read anew. Body i's entries are
+// body_candidates[body_candidate_start[i] .. body_candidate_start[i + 1]). Made every step from the
+// pairs in contact, this sort was a serial pass over the table that the other threads waited for.
+void index_candidates_by_body(WorldScratch3d& s, std::size_t bodies) {
+    std::vector<std::uint32_t>& start = s.body_candidate_start;
     start.assign(bodies + 2, 0);
-    for (const ContactPairSums3d& pair : s.contact_pairs) {
-        ++start[s.pairs[pair.candidate].first + 2];
-        ++start[s.pairs[pair.candidate].second + 2];
+    for (const BodyPair& ab : s.pairs) {
+        ++start[ab.first + 2];
+        ++start[ab.second + 2];
     }
     for (std::size_t i = 2; i < bodies + 2; ++i) start[i] += start[i - 1];
     // start[i + 1] is now body i's first entry; filling moves it to one past its last.
-    s.body_pairs.resize(2 * s.contact_pairs.size());
-    for (std::uint32_t p = 0; p < s.contact_pairs.size(); ++p) {
-        const BodyPair& ab = s.pairs[s.contact_pairs[p].candidate];
-        s.body_pairs[start[ab.first + 1]++] = p;
-        s.body_pairs[start[ab.second + 1]++] = p;
+    s.body_candidates.resize(2 * s.pairs.size());
+    for (std::uint32_t c = 0; c < s.pairs.size(); ++c) {
+        const BodyPair& ab = s.pairs[c];
+        s.body_candidates[start[ab.first + 1]++] = c;
+        s.body_candidates[start[ab.second + 1]++] = c;
     }
     start.pop_back();
+    s.indexed_pairs = s.pairs;
+}
+
+// Which candidates touch this step and where their pairs are in the table: each of find_contacts'
+// fixed chunks stamps its touching candidates with this step's stamp and their pair's index (the
+// chunk's pairs are the table's from chunk_pairs[k] on, in its touching order: lay_out_table and
+// fill_chunk), and compares its candidates with those the per-body index was made from. In
+// parallel, each chunk writing its own candidates' slots (rule 1). Then the index is made again
+// if the candidates changed.
+void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
+    const std::size_t candidates = s.pairs.size();
+    // A stamp that wrapped round could meet a mark 2^32 steps old: all marks cleared then.
+    if (++s.contact_stamp == 0) {
+        std::fill(s.candidate_contact.begin(), s.candidate_contact.end(), CandidateContact3d{});
+        s.contact_stamp = 1;
+    }
+    if (s.candidate_contact.size() < candidates) s.candidate_contact.resize(candidates);
+    const bool same_sizes = s.indexed_pairs.size() == candidates && s.body_candidate_start.size() == bodies + 1;
+    const std::size_t chunks = candidate_chunk_count(candidates);
+    s.chunk_changed.assign(chunks, same_sizes ? 0 : 1);
+    const std::uint32_t stamp = s.contact_stamp;
+    for_fixed_chunks(chunks, [&](std::size_t k) {
+        std::uint32_t pair = s.chunk_pairs[k];
+        for (const TouchingCandidate3d& t : s.candidate_chunks[k].touching) s.candidate_contact[t.candidate] = {stamp, pair++};
+        if (!same_sizes) return;
+        const std::size_t begin = candidates * k / chunks;
+        const std::size_t end = candidates * (k + 1) / chunks;
+        s.chunk_changed[k] = !std::equal(s.pairs.data() + begin, s.pairs.data() + end, s.indexed_pairs.data() + begin);
+    });
+    if (std::find(s.chunk_changed.begin(), s.chunk_changed.end(), 1) != s.chunk_changed.end())
+        index_candidates_by_body(s, bodies);
 }
 
 // Body i takes its pairs' sums in table order, as one serial pass over the table adding each
-// pair onto its two bodies did: the same terms in the same order, so the same bits at any thread
-// count. About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
-// The sums are kept in locals and stored once: added in the body's slot, each was stored and read
-// again at every pair (the pair's doubles might have been the body's, to the compiler). Inlined
-// into parallel_for's loop: a call a body, with its frame and its reads of the index's arrays, was
-// about 15 instructions of its 150.
-[[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::uint32_t i) {
+// pair onto its two bodies did: its candidates are walked in candidate order, which is the table's
+// (find_contacts keeps the candidates' order), and those that touch this step taken. The same terms
+// in the same order, so the same bits at any thread count. About b's centroid the pair's moment is
+// the one about a's plus (x_a - x_b) x F. The sums are kept in locals and stored once: added in the
+// body's slot, each was stored and read again at every pair (the pair's doubles might have been the
+// body's, to the compiler). Inlined into parallel_for's loop.
+[[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::size_t i) {
     const WorldScratch3d& s = w.scratch;
     RigidBody3d& body = w.bodies[i];
     const Vec3 position_m = body.position_m;
     Vec3 force_n = body.force_n;
     Vec3 torque_n_m = body.torque_n_m;
-    const std::uint32_t end = s.body_pair_start[i + 1];
-    for (std::uint32_t e = s.body_pair_start[i]; e < end; ++e) {
-        const ContactPairSums3d& pair = s.contact_pairs[s.body_pairs[e]];
-        const BodyPair& ab = s.pairs[pair.candidate];
+    const std::uint32_t stamp = s.contact_stamp;
+    const std::uint32_t end = s.body_candidate_start[i + 1];
+    for (std::uint32_t e = s.body_candidate_start[i]; e < end; ++e) {
+        const std::uint32_t c = s.body_candidates[e];
+        const CandidateContact3d mark = s.candidate_contact[c];
+        if (mark.step != stamp) continue;  // apart this step
+        const ContactPairSums3d& pair = s.contact_pairs[mark.pair];
+        const BodyPair& ab = s.pairs[c];
         if (ab.second == i) {
             force_n += pair.force_n;
             torque_n_m += pair.torque_about_a_n_m + cross(w.bodies[ab.first].position_m - position_m, pair.force_n);
@@ -571,9 +608,9 @@ void apply_contact_law(World3d& w, Vec3 table_step_m) {
 #else
     const LawTotals t = deterministic_sum(n, two_lanes);
 #endif
-    index_pairs_by_body(w.scratch, w.bodies.size());
+    index_contacts_by_body(w.scratch, w.bodies.size());
     parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::uint32_t>(i)); });
+                 [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::size_t>(i)); });
     EnergyLedger& ledger = w.ledger;
     ledger.elastic_j = t.elastic_j;
     ledger.normal_dashpot_j += t.normal_dashpot_j;
