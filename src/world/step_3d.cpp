@@ -564,7 +564,7 @@ void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
 // in the same order, so the same bits at any thread count. About b's centroid the pair's moment is
 // the one about a's plus (x_a - x_b) x F. The sums are kept in locals and stored once: added in the
 // body's slot, each was stored and read again at every pair (the pair's doubles might have been the
-// body's, to the compiler). Inlined into parallel_for's loop.
+// body's, to the compiler). Inlined into kick_run's loop.
 [[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::size_t i) {
     const WorldScratch3d& s = w.scratch;
     RigidBody3d& body = w.bodies[i];
@@ -591,9 +591,10 @@ void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
     body.torque_n_m = torque_n_m;
 }
 
-// Step 5: the law at every pair in contact (in parallel), each pair's sums then gathered by its
-// two bodies in the table's order (in parallel over bodies), so that each body's sum has the same
-// terms in the same order whatever the thread count.
+// Step 5: the law at every pair in contact (in parallel), and which candidates touch, for each
+// pair's sums to be gathered by its two bodies in the table's order (gather_pair_sums, in the
+// kick's pass over the bodies), so that each body's sum has the same terms in the same order
+// whatever the thread count.
 void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
     const LawConstants constants = law_constants(w.contact, w.dt_s);
@@ -609,8 +610,6 @@ void apply_contact_law(World3d& w, Vec3 table_step_m) {
     const LawTotals t = deterministic_sum(n, two_lanes);
 #endif
     index_contacts_by_body(w.scratch, w.bodies.size());
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::size_t>(i)); });
     EnergyLedger& ledger = w.ledger;
     ledger.elastic_j = t.elastic_j;
     ledger.normal_dashpot_j += t.normal_dashpot_j;
@@ -635,8 +634,9 @@ struct BodyTotals {
 
 // Step 6, the bodies: the kick, and each body's energy; a body leaving the model now (its box,
 // posed this step, wholly outside the extent) is kicked as the others and its energy booked as
-// leaving (world/model_domain_3d.hpp).
-BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
+// leaving (world/model_domain_3d.hpp). Inlined into kick_run, so into its AVX copy: with the gather
+// in the same loop GCC called it, the baseline copy (world/vex_clones.hpp).
+[[gnu::always_inline]] inline BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     BodyTotals e;
     if (w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i)) return e;
     RigidBody3d& b = w.bodies[i];
@@ -663,11 +663,21 @@ BLOCKDEM_VEX_CLONES void drift_run(World3d& w, std::ptrdiff_t begin, std::ptrdif
     }
 }
 
-// The kick of bodies begin .. end - 1, their totals added in body order (a chunk of
-// deterministic_sum_of_chunks; world/vex_clones.hpp).
-BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting) {
+// The end of step 5 and the kick for bodies begin .. end - 1, in one pass over each body's state:
+// its pairs' sums gathered, a caller's load added (world/external_loads_3d.hpp; only when there
+// are loads: it reads and writes the body's own state and loads only), the kick; their totals
+// added in body order (a chunk of deterministic_sum_of_chunks; world/vex_clones.hpp). Three passes
+// over the bodies, each reading and writing the same lines of every body, were one too many for a
+// step that waits on memory.
+BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting,
+                                        bool loads) {
     BodyTotals totals{};
-    for (std::ptrdiff_t i = begin; i < end; ++i) totals += kick_body(w, static_cast<std::size_t>(i), starting);
+    for (std::ptrdiff_t i = begin; i < end; ++i) {
+        const auto body = static_cast<std::size_t>(i);
+        gather_pair_sums(w, body);
+        if (loads) add_external_load(w, body);
+        totals += kick_body(w, body, starting);
+    }
     return totals;
 }
 
@@ -695,13 +705,11 @@ void step_begin(World3d& w) {
     find_contacts(w);
     // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
     apply_contact_law(w, 0.5 * (d_after - d_before));
-    // A caller's loads (world/external_loads_3d.hpp): one branch a step when there are none.
-    if (w.external_loads.any())
-        parallel_for(n, [&](std::ptrdiff_t i) { add_external_load(w, static_cast<std::size_t>(i)); });
-
+    // Each body's contact sums, a caller's loads and the kick, in one pass.
     const bool starting = w.steps == 0;
+    const bool loads = w.external_loads.any();
     const BodyTotals totals = deterministic_sum_of_chunks(
-        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting); });
+        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting, loads); });
     EnergyLedger& ledger = w.ledger;
     if (totals.leaving > 0) {
         take_out_leaving_bodies(w);
