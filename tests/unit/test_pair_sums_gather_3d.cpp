@@ -116,15 +116,16 @@ TEST(PairSumsGather3d, GivesThePlainSumOnALooseSceneWithBodiesTakenOut) {
 }
 
 TEST(PairSumsGather3d, GivesThePlainSumWithTheCandidatesInChunks) {
-    // 2304 boxes: candidates above parallel_threshold (64 chunks) for the first 55 steps or so,
-    // the lowest thrown ones out from step 50. Measured: 2024 to 2357 candidates a step, 11 to
-    // 132 in contact, 203 boxes out, 50 rebuilds.
-    World3d w = loose_boxes(24, 12, 8, 50.0);
-    const GatherRun r = run_and_compare(w, 80);
+    // 2304 boxes: candidates above parallel_threshold (64 chunks) over the first steps, the
+    // skin list rebuilt every step (the thrown boxes move 16 mm a step, the skin is 1 cm), the
+    // lowest thrown ones out from about step 33. Measured: up to 2391 candidates, 2308 of them
+    // apart, 145 boxes out, 45 rebuilds.
+    World3d w = loose_boxes(24, 12, 8, 80.0);
+    const GatherRun r = run_and_compare(w, 45);
     EXPECT_GT(r.most_candidates, 2048u);
     EXPECT_GT(r.most_candidates_apart, 1000u);
-    EXPECT_GT(r.left, 0u);
-    EXPECT_GT(r.rebuilds, 10);
+    EXPECT_GT(r.left, 50u);
+    EXPECT_GT(r.rebuilds, 30);
 }
 
 }  // namespace
