@@ -552,7 +552,10 @@ void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
         if (!same_sizes) return;
         const std::size_t begin = candidates * k / chunks;
         const std::size_t end = candidates * (k + 1) / chunks;
-        s.chunk_changed[k] = !std::equal(s.pairs.data() + begin, s.pairs.data() + end, s.indexed_pairs.data() + begin);
+        // Compared as bytes (two 32-bit indices, no padding: equal bytes are equal pairs), which the
+        // library does many at a time; std::equal compared the pairs' members one by one.
+        static_assert(sizeof(BodyPair) == 2 * sizeof(std::uint32_t));
+        s.chunk_changed[k] = std::memcmp(s.pairs.data() + begin, s.indexed_pairs.data() + begin, (end - begin) * sizeof(BodyPair)) != 0;
     });
     if (std::find(s.chunk_changed.begin(), s.chunk_changed.end(), 1) != s.chunk_changed.end())
         index_candidates_by_body(s, bodies);
