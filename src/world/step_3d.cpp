@@ -553,9 +553,12 @@ void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
         const std::size_t begin = candidates * k / chunks;
         const std::size_t end = candidates * (k + 1) / chunks;
         // Compared as bytes (two 32-bit indices, no padding: equal bytes are equal pairs), which the
-        // library does many at a time; std::equal compared the pairs' members one by one.
+        // library does many at a time; std::equal compared the pairs' members one by one. Not for
+        // an empty chunk: an empty list's data() may be null, which memcmp may not be given.
         static_assert(sizeof(BodyPair) == 2 * sizeof(std::uint32_t));
-        s.chunk_changed[k] = std::memcmp(s.pairs.data() + begin, s.indexed_pairs.data() + begin, (end - begin) * sizeof(BodyPair)) != 0;
+        if (end > begin)
+            s.chunk_changed[k] = std::memcmp(s.pairs.data() + begin, s.indexed_pairs.data() + begin,
+                                             (end - begin) * sizeof(BodyPair)) != 0;
     });
     if (std::find(s.chunk_changed.begin(), s.chunk_changed.end(), 1) != s.chunk_changed.end())
         index_candidates_by_body(s, bodies);
@@ -669,9 +672,9 @@ BLOCKDEM_VEX_CLONES void drift_run(World3d& w, std::ptrdiff_t begin, std::ptrdif
 // The end of step 5 and the kick for bodies begin .. end - 1, in one pass over each body's state:
 // its pairs' sums gathered, a caller's load added (world/external_loads_3d.hpp; only when there
 // are loads: it reads and writes the body's own state and loads only), the kick; their totals
-// added in body order (a chunk of deterministic_sum_of_chunks; world/vex_clones.hpp). Three passes
-// over the bodies, each reading and writing the same lines of every body, were one too many for a
-// step that waits on memory.
+// added in body order (a chunk of deterministic_sum_of_chunks; world/vex_clones.hpp). Why one pass:
+// the gather, the loads and the kick each went through every body's lines, and the step waits on
+// memory.
 BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting,
                                         bool loads) {
     BodyTotals totals{};
