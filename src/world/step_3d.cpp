@@ -530,44 +530,87 @@ struct LawTotals {
 }
 #endif
 
-// Each body's pairs in contact, in table order: a counting sort by body (serial, a few
-// instructions a pair: the pass that added the sums onto the bodies here cost about four times
-// more). Body i's entries end up in body_pairs[body_pair_start[i] .. body_pair_start[i + 1]).
-void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
-    std::vector<std::uint32_t>& start = s.body_pair_start;
+// Each body's candidates in candidate order (a counting sort by body, serial), made again only
+// when the candidates are not those it was made from: the skin list rebuilt or its filter keeping
+// other pairs, bodies taken out, bodies added, a world made or read anew. Body i's entries are
+// body_candidates[body_candidate_start[i] .. body_candidate_start[i + 1]). Made every step from the
+// pairs in contact, this sort was a serial pass over the table that the other threads waited for.
+void index_candidates_by_body(WorldScratch3d& s, std::size_t bodies) {
+    std::vector<std::uint32_t>& start = s.body_candidate_start;
     start.assign(bodies + 2, 0);
-    for (const ContactPairSums3d& pair : s.contact_pairs) {
-        ++start[s.pairs[pair.candidate].first + 2];
-        ++start[s.pairs[pair.candidate].second + 2];
+    for (const BodyPair& ab : s.pairs) {
+        ++start[ab.first + 2];
+        ++start[ab.second + 2];
     }
     for (std::size_t i = 2; i < bodies + 2; ++i) start[i] += start[i - 1];
     // start[i + 1] is now body i's first entry; filling moves it to one past its last.
-    s.body_pairs.resize(2 * s.contact_pairs.size());
-    for (std::uint32_t p = 0; p < s.contact_pairs.size(); ++p) {
-        const BodyPair& ab = s.pairs[s.contact_pairs[p].candidate];
-        s.body_pairs[start[ab.first + 1]++] = p;
-        s.body_pairs[start[ab.second + 1]++] = p;
+    s.body_candidates.resize(2 * s.pairs.size());
+    for (std::uint32_t c = 0; c < s.pairs.size(); ++c) {
+        const BodyPair& ab = s.pairs[c];
+        s.body_candidates[start[ab.first + 1]++] = c;
+        s.body_candidates[start[ab.second + 1]++] = c;
     }
     start.pop_back();
+    s.indexed_pairs = s.pairs;
+}
+
+// Which candidates touch this step and where their pairs are in the table: each of find_contacts'
+// fixed chunks stamps its touching candidates with this step's stamp and their pair's index (the
+// chunk's pairs are the table's from chunk_pairs[k] on, in its touching order: lay_out_table and
+// fill_chunk), and compares its candidates with those the per-body index was made from. In
+// parallel, each chunk writing its own candidates' slots (rule 1). Then the index is made again
+// if the candidates changed.
+void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
+    const std::size_t candidates = s.pairs.size();
+    // A stamp that wrapped round could meet a mark 2^32 steps old: all marks cleared then.
+    if (++s.contact_stamp == 0) {
+        std::fill(s.candidate_contact.begin(), s.candidate_contact.end(), CandidateContact3d{});
+        s.contact_stamp = 1;
+    }
+    if (s.candidate_contact.size() < candidates) s.candidate_contact.resize(candidates);
+    const bool same_sizes = s.indexed_pairs.size() == candidates && s.body_candidate_start.size() == bodies + 1;
+    const std::size_t chunks = candidate_chunk_count(candidates);
+    s.chunk_changed.assign(chunks, same_sizes ? 0 : 1);
+    const std::uint32_t stamp = s.contact_stamp;
+    for_fixed_chunks(chunks, [&](std::size_t k) {
+        std::uint32_t pair = s.chunk_pairs[k];
+        for (const TouchingCandidate3d& t : s.candidate_chunks[k].touching) s.candidate_contact[t.candidate] = {stamp, pair++};
+        if (!same_sizes) return;
+        const std::size_t begin = candidates * k / chunks;
+        const std::size_t end = candidates * (k + 1) / chunks;
+        // Compared as bytes (two 32-bit indices, no padding: equal bytes are equal pairs), which the
+        // library does many at a time; std::equal compared the pairs' members one by one. Not for
+        // an empty chunk: an empty list's data() may be null, which memcmp may not be given.
+        static_assert(sizeof(BodyPair) == 2 * sizeof(std::uint32_t));
+        if (end > begin)
+            s.chunk_changed[k] = std::memcmp(s.pairs.data() + begin, s.indexed_pairs.data() + begin,
+                                             (end - begin) * sizeof(BodyPair)) != 0;
+    });
+    if (std::find(s.chunk_changed.begin(), s.chunk_changed.end(), 1) != s.chunk_changed.end())
+        index_candidates_by_body(s, bodies);
 }
 
 // Body i takes its pairs' sums in table order, as one serial pass over the table adding each
-// pair onto its two bodies did: the same terms in the same order, so the same bits at any thread
-// count. About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
-// The sums are kept in locals and stored once: added in the body's slot, each was stored and read
-// again at every pair (the pair's doubles might have been the body's, to the compiler). Inlined
-// into parallel_for's loop: a call a body, with its frame and its reads of the index's arrays, was
-// about 15 instructions of its 150.
-[[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::uint32_t i) {
+// pair onto its two bodies did: its candidates are walked in candidate order, which is the table's
+// (find_contacts keeps the candidates' order), and those that touch this step taken. The same terms
+// in the same order, so the same bits at any thread count. About b's centroid the pair's moment is
+// the one about a's plus (x_a - x_b) x F. The sums are kept in locals and stored once: added in the
+// body's slot, each was stored and read again at every pair (the pair's doubles might have been the
+// body's, to the compiler). Inlined into kick_run's loop.
+[[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::size_t i) {
     const WorldScratch3d& s = w.scratch;
     RigidBody3d& body = w.bodies[i];
     const Vec3 position_m = body.position_m;
     Vec3 force_n = body.force_n;
     Vec3 torque_n_m = body.torque_n_m;
-    const std::uint32_t end = s.body_pair_start[i + 1];
-    for (std::uint32_t e = s.body_pair_start[i]; e < end; ++e) {
-        const ContactPairSums3d& pair = s.contact_pairs[s.body_pairs[e]];
-        const BodyPair& ab = s.pairs[pair.candidate];
+    const std::uint32_t stamp = s.contact_stamp;
+    const std::uint32_t end = s.body_candidate_start[i + 1];
+    for (std::uint32_t e = s.body_candidate_start[i]; e < end; ++e) {
+        const std::uint32_t c = s.body_candidates[e];
+        const CandidateContact3d mark = s.candidate_contact[c];
+        if (mark.step != stamp) continue;  // apart this step
+        const ContactPairSums3d& pair = s.contact_pairs[mark.pair];
+        const BodyPair& ab = s.pairs[c];
         if (ab.second == i) {
             force_n += pair.force_n;
             torque_n_m += pair.torque_about_a_n_m + cross(w.bodies[ab.first].position_m - position_m, pair.force_n);
@@ -580,9 +623,10 @@ void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
     body.torque_n_m = torque_n_m;
 }
 
-// Step 5: the law at every pair in contact (in parallel), each pair's sums then gathered by its
-// two bodies in the table's order (in parallel over bodies), so that each body's sum has the same
-// terms in the same order whatever the thread count.
+// Step 5: the law at every pair in contact (in parallel), and which candidates touch, for each
+// pair's sums to be gathered by its two bodies in the table's order (gather_pair_sums, in the
+// kick's pass over the bodies), so that each body's sum has the same terms in the same order
+// whatever the thread count.
 void apply_contact_law(World3d& w, Vec3 table_step_m) {
     auto& pairs = w.scratch.contact_pairs;
     const LawConstants constants = law_constants(w.contact, w.dt_s);
@@ -597,9 +641,7 @@ void apply_contact_law(World3d& w, Vec3 table_step_m) {
 #else
     const LawTotals t = deterministic_sum(n, two_lanes);
 #endif
-    index_pairs_by_body(w.scratch, w.bodies.size());
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::uint32_t>(i)); });
+    index_contacts_by_body(w.scratch, w.bodies.size());
     EnergyLedger& ledger = w.ledger;
     ledger.elastic_j = t.elastic_j;
     ledger.normal_dashpot_j += t.normal_dashpot_j;
@@ -624,8 +666,9 @@ struct BodyTotals {
 
 // Step 6, the bodies: the kick, and each body's energy; a body leaving the model now (its box,
 // posed this step, wholly outside the extent) is kicked as the others and its energy booked as
-// leaving (world/model_domain_3d.hpp).
-BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
+// leaving (world/model_domain_3d.hpp). Inlined into kick_run, so into its AVX copy: with the gather
+// in the same loop GCC called it, the baseline copy (world/vex_clones.hpp).
+[[gnu::always_inline]] inline BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     BodyTotals e;
     if (w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i)) return e;
     RigidBody3d& b = w.bodies[i];
@@ -652,11 +695,21 @@ BLOCKDEM_VEX_CLONES void drift_run(World3d& w, std::ptrdiff_t begin, std::ptrdif
     }
 }
 
-// The kick of bodies begin .. end - 1, their totals added in body order (a chunk of
-// deterministic_sum_of_chunks; world/vex_clones.hpp).
-BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting) {
+// The end of step 5 and the kick for bodies begin .. end - 1, in one pass over each body's state:
+// its pairs' sums gathered, a caller's load added (world/external_loads_3d.hpp; only when there
+// are loads: it reads and writes the body's own state and loads only), the kick; their totals
+// added in body order (a chunk of deterministic_sum_of_chunks; world/vex_clones.hpp). Why one pass:
+// the gather, the loads and the kick each went through every body's lines, and the step waits on
+// memory.
+BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting,
+                                        bool loads) {
     BodyTotals totals{};
-    for (std::ptrdiff_t i = begin; i < end; ++i) totals += kick_body(w, static_cast<std::size_t>(i), starting);
+    for (std::ptrdiff_t i = begin; i < end; ++i) {
+        const auto body = static_cast<std::size_t>(i);
+        gather_pair_sums(w, body);
+        if (loads) add_external_load(w, body);
+        totals += kick_body(w, body, starting);
+    }
     return totals;
 }
 
@@ -684,13 +737,11 @@ void step_begin(World3d& w) {
     find_contacts(w);
     // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
     apply_contact_law(w, 0.5 * (d_after - d_before));
-    // A caller's loads (world/external_loads_3d.hpp): one branch a step when there are none.
-    if (w.external_loads.any())
-        parallel_for(n, [&](std::ptrdiff_t i) { add_external_load(w, static_cast<std::size_t>(i)); });
-
+    // Each body's contact sums, a caller's loads and the kick, in one pass.
     const bool starting = w.steps == 0;
+    const bool loads = w.external_loads.any();
     const BodyTotals totals = deterministic_sum_of_chunks(
-        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting); });
+        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting, loads); });
     EnergyLedger& ledger = w.ledger;
     if (totals.leaving > 0) {
         take_out_leaving_bodies(w);

@@ -80,6 +80,13 @@ struct PosedSources3d {
     bool operator==(const PosedSources3d&) const = default;
 };
 
+/// A candidate pair's mark for the bodies' gather (world/step_3d.cpp): in contact this step when
+/// step is the step's stamp, and then its entry in WorldScratch3d::contact_pairs.
+struct CandidateContact3d {
+    std::uint32_t step = 0;  ///< WorldScratch3d::contact_stamp of the step that marked it
+    std::uint32_t pair = 0;  ///< index in WorldScratch3d::contact_pairs
+};
+
 /// Arrays rebuilt every step, kept so that a step allocates nothing in steady state.
 struct WorldScratch3d {
     std::vector<std::uint32_t> vertex_start;  ///< per body, its first entry in world_vertices_m (and one past the last)
@@ -103,8 +110,12 @@ struct WorldScratch3d {
     std::vector<std::uint32_t> previous_run_starts;           ///< last step's: where a pair's run in previous is looked for first
     std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
     std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
-    std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
-    std::vector<std::uint32_t> body_pairs;                    ///< per body, its pairs in contact (indices in contact_pairs), in table order
+    std::vector<BodyPair> indexed_pairs;                      ///< the candidates body_candidates was built from (pairs then)
+    std::vector<std::uint32_t> body_candidate_start;          ///< per body, its first entry in body_candidates (and one past the last)
+    std::vector<std::uint32_t> body_candidates;               ///< per body, its candidates (indices in pairs), in candidate order
+    std::vector<CandidateContact3d> candidate_contact;        ///< per candidate: the step it last touched, its pair then
+    std::vector<std::uint8_t> chunk_changed;                  ///< per fixed chunk of pairs: 1 if it differs from indexed_pairs
+    std::uint32_t contact_stamp = 0;                          ///< this step's stamp in candidate_contact (0: none yet)
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
     std::vector<PosedPolyhedron> posed;                       ///< per body, as the narrow phase reads it (pointers into the pose arrays)
     PosedSources3d posed_sources;                             ///< what posed was written from (size_pose_arrays)
