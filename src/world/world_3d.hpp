@@ -85,6 +85,9 @@ struct WorldScratch3d {
     std::vector<std::uint32_t> previous_run_starts;           ///< last step's: where a pair's run in previous is looked for first
     std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
     std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
+    bool fill_as_placed = true;                               ///< fill a chunk's runs and run its law once its place is known
+                                                              ///< (false: after the whole narrow phase, the plain passes)
+    std::size_t chunks_filled_late = 0;                       ///< last step's chunks filled after the whole narrow phase
     std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
     std::vector<std::uint32_t> body_pairs;                    ///< per body, its pairs in contact (indices in contact_pairs), in table order
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
