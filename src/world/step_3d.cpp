@@ -628,7 +628,7 @@ LawTotals law_on_chunk(World3d& w, const LawConstants& constants, std::uint32_t 
     return sum;
 }
 
-// Step 5b, once every chunk has taken the law (law: their totals): each pair's sums gathered by its
+// Step 5b, once every chunk has taken the law (t: their totals): each pair's sums gathered by its
 // two bodies in the table's order (in parallel over bodies), so that each body's sum has the same
 // terms in the same order whatever the thread count, and the law's energy booked.
 void apply_contact_law(World3d& w, const LawTotals& t) {
