@@ -116,6 +116,9 @@ struct WorldScratch3d {
     std::vector<CandidateContact3d> candidate_contact;        ///< per candidate: the step it last touched, its pair then
     std::vector<std::uint8_t> chunk_changed;                  ///< per fixed chunk of pairs: 1 if it differs from indexed_pairs
     std::uint32_t contact_stamp = 0;                          ///< this step's stamp in candidate_contact (0: none yet)
+    bool fill_as_placed = true;                               ///< fill a chunk's runs and run its law once its place is known
+                                                              ///< (false: after the whole narrow phase, the plain passes)
+    std::size_t chunks_filled_late = 0;                       ///< last step's chunks filled after the whole narrow phase
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
     std::vector<PosedPolyhedron> posed;                       ///< per body, as the narrow phase reads it (pointers into the pose arrays)
     PosedSources3d posed_sources;                             ///< what posed was written from (size_pose_arrays)
