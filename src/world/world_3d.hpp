@@ -66,8 +66,11 @@ struct CandidateChunk3d {
 /// What the narrow phase's views of the bodies (WorldScratch3d::posed) point into: the world's
 /// arrays of bodies, edges and frames, the pose arrays, and the number of bodies. A view's
 /// pointers follow from these and the pose arrays' offsets alone, so while they are the same the
-/// views are (world/step_3d.cpp, size_pose_arrays); a world copied, a vector grown or replaced by
-/// another changes one of them, and the views are written again.
+/// views are (world/step_3d.cpp, size_pose_arrays); a world copied or moved, or a body added (the
+/// count, and a vector that grew), changes one of them, and the views are written again. What it
+/// cannot see is a body's shape changed in place (a vector copy-assigned over one of the same size
+/// keeps its buffer): the step's pose arrays, sized by the shapes, assume World3d's rule that
+/// bodies are only added (add_body), never reshaped.
 struct PosedSources3d {
     const void* bodies = nullptr;
     const void* edges = nullptr;
@@ -137,7 +140,7 @@ struct StabilityWatch3d {
 };
 
 struct World3d {
-    std::vector<RigidBody3d> bodies;
+    std::vector<RigidBody3d> bodies;        ///< added by add_body, never reshaped in place (the step's pose arrays are sized by their shapes)
     std::vector<BodyKind3d> kinds;
     std::vector<PolyhedronEdges> edges;     ///< per body, numbered once
     std::vector<BoxFrame3d> box_frames;     ///< per body: a box's frame for the box-box test, or is_box = false
