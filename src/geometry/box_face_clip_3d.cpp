@@ -44,19 +44,19 @@ struct RectangleInFrame {
 // face's plane, e_v = n x e_u, so that (e_u, e_v, n) is right-handed as the general clip's sides
 // assume.
 [[gnu::always_inline]] inline void load_axes(const PosedPolyhedron& ref, std::uint32_t ref_face, BoxFaceClip3d& clip) {
-    const Vec3 n = ref.face_normals[ref_face];
+    const Vec3 n = face_normal(ref, ref_face);
     const int normal_direction = ref.box->face_direction[ref_face];
     const Vec3 e_u = ref.directions[normal_direction == 0 ? 1 : 0];
     clip.e_u = e_u;
     clip.e_v = cross(n, e_u);
     clip.n = n;
-    clip.origin_m = ref.vertices_m[ref.shape->faces[ref_face][0]];
+    clip.origin_m = ref.vertices_m[ref.box->face_corners[ref_face][0]];
 }
 
 // The rectangle in the frame (the axes loaded).
 [[gnu::always_inline]] inline void load_rectangle(const PosedPolyhedron& ref, std::uint32_t ref_face,
                                                   const BoxFaceClip3d& clip, RectangleInFrame& rectangle) {
-    const auto& ref_corners = ref.shape->faces[ref_face];
+    const auto& ref_corners = ref.box->face_corners[ref_face];
     const Vec3 origin_m = clip.origin_m;
     const Vec3 e_u = clip.e_u;
     const Vec3 e_v = clip.e_v;
@@ -159,13 +159,13 @@ void set_crossing(const FaceCorner& here, const FaceCorner& next, double dh, dou
 // The Sutherland-Hodgman clip of the loaded face (clip.buffers[0], count corners), side by side.
 bool clip_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, std::uint32_t inc_face,
                     const RectangleInFrame& rectangle, std::size_t count, BoxFaceClip3d& clip) {
-    const auto& ref_corners = ref.shape->faces[ref_face];
+    const auto& ref_corners = ref.box->face_corners[ref_face];
     FaceCorner* here_polygon = clip.buffers[0].data();
     FaceCorner* next_polygon = clip.buffers[1].data();
     for (std::size_t k = 0; k < 4 && count > 0; ++k) {
         const std::size_t k_next = (k + 1) % 4;
         const RectangleSide& side = rectangle.sides[k];
-        const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
+        const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.box->face_edges[ref_face][k]);
         double heights_m[most_corners];
         bool all_in = true;
         for (std::size_t i = 0; i < count; ++i) {
@@ -272,7 +272,7 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     double heights[count];
     for (std::size_t i = 0; i < count; ++i) heights[i] = side.sign * (along[i] - side.bound_m);
     // The one cut, as the passes make it on the face's own corners (none lies on a reference side).
-    const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.edges->face_edges[ref_face][k]);
+    const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.box->face_edges[ref_face][k]);
     FaceCorner* cut = clip.buffers[1].data();
     std::size_t clipped = 0;
     for (std::size_t i = 0; i < count; ++i) {

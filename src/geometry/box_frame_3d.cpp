@@ -8,6 +8,13 @@ namespace blockdem {
 BoxFrame3d box_frame(const Polyhedron& p, const PolyhedronEdges& e) {
     BoxFrame3d box;
     if (p.vertices_m.size() != 8 || p.faces.size() != 6 || e.directions.size() != 3) return box;
+    for (std::size_t f = 0; f < 6; ++f) {
+        if (p.faces[f].size() != 4 || e.face_edges[f].size() != 4) return box;
+        for (std::size_t k = 0; k < 4; ++k) {
+            box.face_corners[f][k] = static_cast<std::uint16_t>(p.faces[f][k]);    // < 8
+            box.face_edges[f][k] = static_cast<std::uint16_t>(e.face_edges[f][k]);  // < 12
+        }
+    }
     const auto& d = e.directions;
     constexpr double tolerance = 1e-12;
     if (std::abs(dot(d[0], d[1])) > tolerance || std::abs(dot(d[0], d[2])) > tolerance ||

@@ -29,11 +29,21 @@ struct BoxFrame3d {
     /// Per vertex, which corner of the box it is: bit i set when it lies on the + side of
     /// direction i. A pose places the 8 corners as the centre +/- h_i d_i (world/step_3d.cpp).
     std::array<std::uint8_t, 8> vertex_corner{};
+    /// Per face, its 4 corners (Polyhedron::faces) and its 4 edges (PolyhedronEdges::face_edges)
+    /// in the shape's order: the same numbers, kept here so that the box clip (geometry/
+    /// box_face_clip_3d.cpp) reads its reference face's from the frame it reads anyway, not
+    /// through the shape's and the edges' vectors of vectors (a heap block a face). 16-bit, not
+    /// bytes: a byte's type may alias any object, the clip's doubles too. (The incident face's
+    /// are still read from its shape: read from its frame they saved as many reads again, for 40
+    /// instructions more a clip; docs/performance.md, "Branch pose8".)
+    std::array<std::array<std::uint16_t, 4>, 6> face_corners{};
+    std::array<std::array<std::uint16_t, 4>, 6> face_edges{};
 };
 
 /// The box frame of p when p is a box about its centroid (the body frame's origin): 8 vertices, 6
-/// faces, 3 mutually perpendicular edge directions, every vertex at +/- the half lengths along them
-/// (to 1e-12 of the box's size); otherwise is_box = false and the general test is used.
+/// faces of 4 corners, 3 mutually perpendicular edge directions, every vertex at +/- the half
+/// lengths along them (to 1e-12 of the box's size); otherwise is_box = false and the general test
+/// is used.
 BoxFrame3d box_frame(const Polyhedron& p, const PolyhedronEdges& edges);
 
 }  // namespace blockdem

@@ -44,7 +44,7 @@ FaceAxis best_face_axis(const PosedPolyhedron& r, const PosedPolyhedron& o, bool
     FaceAxis best;
     const std::size_t vertices = o.shape->vertices_m.size();
     for (std::uint32_t f = 0; f < r.shape->faces.size(); ++f) {
-        const Vec3 n = r.face_normals[f];
+        const Vec3 n = face_normal(r, f);
         double deepest = std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < vertices; ++i) deepest = std::min(deepest, dot(n, o.vertices_m[i]));
         const double separation = deepest - dot(n, r.vertices_m[r.shape->faces[f][0]]);
@@ -114,7 +114,7 @@ struct FirstRows {
 [[gnu::always_inline]] inline BoxPair box_pair(const PosedPolyhedron& a, const PosedPolyhedron& b,
                                                FirstRows& first_rows) {
     BoxPair p;
-    p.offset_m = b.centroid_m - a.centroid_m;
+    p.offset_m = *b.centroid_m - *a.centroid_m;
     const Vec3* ad = a.directions;
     const Vec3* bd = b.directions;
     const Vec3 o = p.offset_m;
@@ -382,7 +382,7 @@ std::uint32_t most_opposed_face(const PosedPolyhedron& inc, Vec3 n) {
     std::uint32_t inc_face = 0;
     double most_opposed = std::numeric_limits<double>::infinity();
     for (std::uint32_t f = 0; f < inc.shape->faces.size(); ++f) {
-        const double c = dot(inc.face_normals[f], n);
+        const double c = dot(face_normal(inc, f), n);
         if (c < most_opposed) { most_opposed = c; inc_face = f; }
     }
     return inc_face;
@@ -480,9 +480,8 @@ void box_face_points(const BoxFaceClip3d& clip, bool ref_is_a, bool incident_is_
 // below the reference plane a point.
 void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc, bool ref_is_a,
                   const BoxPair* pair, ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
-    const Vec3 n = ref.face_normals[ref_face];
     const std::uint32_t inc_face = pair != nullptr ? most_opposed_box_face(ref, ref_face, inc, *pair, ref_is_a)
-                                                   : most_opposed_face(inc, n);
+                                                   : most_opposed_face(inc, face_normal(ref, ref_face));
     // Two boxes: the rectangle clip applies (a box face has 4 corners), no need to ask; its
     // polygon is read in the face's frame.
     if (pair != nullptr) {
@@ -496,6 +495,8 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
                !clip_by_box_face(ref, ref_face, inc, inc_face, scratch.polygon)) {
         clip_by_face_sides(ref, ref_face, inc, inc_face, scratch);
     }
+    // The reference normal only here: two boxes' clip in the face's frame (above) reads its own.
+    const Vec3 n = face_normal(ref, ref_face);
     // The polygon's size and arrays read once (the writes below could alias the vectors' own).
     const std::size_t count = scratch.polygon.size();
     const ClipCorner3d* polygon = scratch.polygon.data();
@@ -539,7 +540,7 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
 
 void clip_by_face_sides(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                         std::uint32_t inc_face, ContactScratch3d& scratch) {
-    const Vec3 n = ref.face_normals[ref_face];
+    const Vec3 n = face_normal(ref, ref_face);
     auto& polygon = scratch.polygon;
     auto& clipped = scratch.clipped;
     polygon.clear();

@@ -42,17 +42,37 @@ constexpr std::uint32_t feature_3d(FeatureKind3d kind, std::uint32_t index) {
 constexpr FeatureKind3d feature_kind(std::uint32_t feature) { return static_cast<FeatureKind3d>(feature >> 30); }
 constexpr std::uint32_t feature_index(std::uint32_t feature) { return feature & ((1u << 30) - 1u); }
 
-/// A polyhedron as it lies in the world now: its shape, and its vertices, face normals and edge
-/// directions turned into the world frame (computed once a step per body).
+/// A polyhedron as it lies in the world now: its shape, and where its vertices, face normals and
+/// edge directions turned into the world frame and its centroid are kept (the step's pose writes
+/// them once a step per body). Only pointers: the step writes a body's view when the arrays it
+/// points into are made, not at every step (world/step_3d.cpp, size_pose_arrays).
 struct PosedPolyhedron {
     const Polyhedron* shape = nullptr;
     const PolyhedronEdges* edges = nullptr;
     const Vec3* vertices_m = nullptr;  ///< [m] world frame, one per shape vertex
-    const Vec3* face_normals = nullptr;///< outward unit normals, world frame, one per face
+    /// Outward unit normals, world frame, one per face; null for a box whose normals are its
+    /// directions to the bit (box->normals_are_directions), whose normals are read from its
+    /// directions (face_normal).
+    const Vec3* face_normals = nullptr;
     const Vec3* directions = nullptr;  ///< unit edge directions, world frame, one per edges->directions
-    Vec3 centroid_m;                   ///< [m]
+    const Vec3* centroid_m = nullptr;  ///< [m] where its centroid is kept
     const BoxFrame3d* box = nullptr;   ///< its box frame (geometry/box_frame_3d.hpp); null: use the general test
 };
+
+/// Face f's outward normal of a box whose normals are its directions to the bit
+/// (BoxFrame3d::normals_are_directions): its direction face_direction[f], turned over for a face
+/// along minus it. Turning -d gives exactly minus turning d (round-to-nearest is symmetric) and a
+/// sign flip is exact, so this is the turned normal's bits.
+inline Vec3 box_face_normal(const PosedPolyhedron& p, std::uint32_t f) {
+    const Vec3 d = p.directions[p.box->face_direction[f]];
+    return p.box->face_sign[f] > 0.0 ? d : -d;
+}
+
+/// Face f's outward normal, world frame: the stored one, or a box's from its directions where
+/// none is stored.
+inline Vec3 face_normal(const PosedPolyhedron& p, std::uint32_t f) {
+    return p.face_normals != nullptr ? p.face_normals[f] : box_face_normal(p, f);
+}
 
 /// One contact point between a and b.
 struct ContactGeometry3d {

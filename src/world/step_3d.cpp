@@ -6,6 +6,8 @@
 #include <cstddef>
 #include <cstring>
 #include <limits>
+#include <mutex>
+#include <type_traits>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -50,30 +52,67 @@ void place_driven_body(World3d& w, std::size_t i, Vec3 displacement_m, Vec3 velo
     b.velocity_at_t_m_s = velocity_m_s;
 }
 
-// The offsets of each body's entries in the flat pose arrays, when the bodies changed.
+// Whether the pose stores a body's turned face normals: not for a box whose normals are its
+// directions to the bit, whose normals the narrow phase reads from its directions
+// (geometry/polyhedron_contact_3d.hpp, face_normal): 144 B a box a step not written.
+bool stores_normals(const BoxFrame3d& frame) { return !(frame.is_box && frame.normals_are_directions); }
+
+// What the narrow phase's views are made from now (world/world_3d.hpp, PosedSources3d).
+PosedSources3d posed_sources(const World3d& w) {
+    const WorldScratch3d& s = w.scratch;
+    return {w.bodies.data(),         w.edges.data(),      w.box_frames.data(),
+            s.world_vertices_m.data(), s.world_normals.data(), s.world_directions.data(), s.centroids_m.data(),
+            w.bodies.size()};
+}
+
+// Each body's view for the narrow phase: pointers to its shape, edges, frame and centroid and to its
+// runs in the pose arrays. None of them moves while those arrays keep their buffers, so the views
+// are written here, when one of the buffers is another, and not by every step's pose (72 B a body
+// a step, in a loop bound by its stores).
+void point_posed_views(World3d& w) {
+    WorldScratch3d& s = w.scratch;
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        const RigidBody3d& b = w.bodies[i];
+        s.posed[i] = {&b.shape,
+                      &w.edges[i],
+                      s.world_vertices_m.data() + s.vertex_start[i],
+                      stores_normals(w.box_frames[i]) ? s.world_normals.data() + s.face_start[i] : nullptr,
+                      s.world_directions.data() + s.direction_start[i],
+                      &s.centroids_m[i],
+                      &w.box_frames[i]};
+    }
+    s.posed_sources = posed_sources(w);
+}
+
+// The offsets of each body's entries in the flat pose arrays, when the bodies changed, and the
+// narrow phase's views when what they point into did (a body added, a world copied).
 void size_pose_arrays(World3d& w) {
     WorldScratch3d& s = w.scratch;
     const std::size_t n = w.bodies.size();
-    if (s.vertex_start.size() == n + 1) return;
-    s.vertex_start.assign(n + 1, 0);
-    s.face_start.assign(n + 1, 0);
-    s.direction_start.assign(n + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) {
-        s.vertex_start[i + 1] = s.vertex_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.vertices_m.size());
-        s.face_start[i + 1] = s.face_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.face_normals.size());
-        s.direction_start[i + 1] = s.direction_start[i] + static_cast<std::uint32_t>(w.edges[i].directions.size());
+    if (s.vertex_start.size() != n + 1) {
+        s.vertex_start.assign(n + 1, 0);
+        s.face_start.assign(n + 1, 0);
+        s.direction_start.assign(n + 1, 0);
+        for (std::size_t i = 0; i < n; ++i) {
+            s.vertex_start[i + 1] = s.vertex_start[i] + static_cast<std::uint32_t>(w.bodies[i].shape.vertices_m.size());
+            const std::size_t normals = stores_normals(w.box_frames[i]) ? w.bodies[i].shape.face_normals.size() : 0;
+            s.face_start[i + 1] = s.face_start[i] + static_cast<std::uint32_t>(normals);
+            s.direction_start[i + 1] = s.direction_start[i] + static_cast<std::uint32_t>(w.edges[i].directions.size());
+        }
+        s.world_vertices_m.resize(s.vertex_start[n]);
+        s.world_normals.resize(s.face_start[n]);
+        s.world_directions.resize(s.direction_start[n]);
+        s.body_directions.resize(s.direction_start[n]);
+        for (std::size_t i = 0; i < n; ++i)
+            std::copy(w.edges[i].directions.begin(), w.edges[i].directions.end(), &s.body_directions[s.direction_start[i]]);
+        s.angular_velocity_world_rad_s.resize(n);
+        s.centroids_m.resize(n);
+        s.rotations.resize(n);
+        s.boxes.resize(n);
+        s.is_static.resize(n);
+        s.posed.resize(n);
     }
-    s.world_vertices_m.resize(s.vertex_start[n]);
-    s.world_normals.resize(s.face_start[n]);
-    s.world_directions.resize(s.direction_start[n]);
-    s.body_directions.resize(s.direction_start[n]);
-    for (std::size_t i = 0; i < n; ++i)
-        std::copy(w.edges[i].directions.begin(), w.edges[i].directions.end(), &s.body_directions[s.direction_start[i]]);
-    s.angular_velocity_world_rad_s.resize(n);
-    s.rotations.resize(n);
-    s.boxes.resize(n);
-    s.is_static.resize(n);
-    s.posed.resize(n);
+    if (!(s.posed_sources == posed_sources(w))) point_posed_views(w);
 }
 
 // The 8 corners centre +/- a +/- b +/- c, corner k on the + side of a when bit 0 of k is set, of
@@ -90,8 +129,8 @@ void size_pose_arrays(World3d& w) {
 }
 
 // A box posed from its orientation's matrix: its 3 world edge directions d_i, its 8 corners
-// centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 in its vertex order, its 6 face normals, and its
-// bounding box centre +/- sum h_i |d_i|. Why: 9 products and 42 sums for the corners where
+// centre +/- h_0 d_0 +/- h_1 d_1 +/- h_2 d_2 in its vertex order, its 6 face normals where it
+// stores them, and its bounding box centre +/- sum h_i |d_i|. Why: 9 products and 42 sums for the corners where
 // turning each vertex costs 15 operations (120 a box), and 15 for the bounding box where the
 // corners' minima and maxima cost 42. The corners are the box the narrow phase tests
 // (geometry/box_frame_3d.hpp: its separating axes use h_i and d_i), and they differ from the
@@ -107,21 +146,10 @@ void size_pose_arrays(World3d& w) {
     const PackedVec3 d[3] = {turn * body_directions[0], turn * body_directions[1], turn * body_directions[2]};
     const Vec3 h = frame.half_lengths_m;
     const std::array<std::uint8_t, 8> corner_of = frame.vertex_corner;
-    // Turning -d gives exactly minus turning d (round-to-nearest is symmetric), so a normal that
-    // is a direction to the bit (BoxFrame3d::normals_are_directions) is taken from it: d_i goes to
-    // the face along +d_i and -d_i (its sign bit flipped, as the product by -1 flips it) to the
-    // one along -d_i (face_of), so no product by the face's sign nor read of its direction a
-    // face. The faces are read into a local first: a store through normals could alias the frame.
-    if (frame.normals_are_directions) {
-        std::size_t face_of[3][2];
-        for (std::size_t k = 0; k < 3; ++k) face_of[k][0] = frame.face_of[k][0], face_of[k][1] = frame.face_of[k][1];
-        for (std::size_t k = 0; k < 3; ++k) {
-            store(d[k], &normals[face_of[k][0]]);
-            store(PackedVec3{-d[k].xy, -d[k].z}, &normals[face_of[k][1]]);
-        }
-    } else {
+    // A box whose normals are its directions to the bit (BoxFrame3d::normals_are_directions) has
+    // none stored: the narrow phase reads them from its directions (stores_normals).
+    if (!frame.normals_are_directions)
         for (std::size_t k = 0; k < 6; ++k) normals[k] = rotation * shape.face_normals[k];
-    }
     for (std::size_t k = 0; k < 3; ++k) store(d[k], &directions[k]);
     const PackedVec3 a = h.x * d[0];
     const PackedVec3 b = h.y * d[1];
@@ -160,11 +188,11 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
     return box;
 }
 
-// Step 2: each body's vertices, normals and edge directions in the world frame, its box, and the
-// view of it the narrow phase reads (WorldScratch3d::posed, written here so that the bodies are
-// gone through once), from its orientation's matrix (one a body, kept for the kick and the
-// drift). What is read from the body is read before the first store, for pose_box's reason.
-// Inlined into pose_run, for pose_box's other reason.
+// Step 2: each body's vertices, normals (where it stores them) and edge directions in the world
+// frame and its box, where the narrow phase's view of it points (WorldScratch3d::posed), from its
+// orientation's matrix (one a body, kept for the kick and the drift). What is read from the body
+// is read before the first store, for pose_box's reason. Inlined into pose_run, for pose_box's
+// other reason.
 [[gnu::always_inline]] inline void pose_body(World3d& w, std::size_t i) {
     WorldScratch3d& s = w.scratch;
     const RigidBody3d& b = w.bodies[i];
@@ -177,14 +205,14 @@ Aabb3d pose_polyhedron(const Matrix3d& rotation, Vec3 centre_m, const Polyhedron
     const PolyhedronEdges& edges = w.edges[i];
     Vec3* directions = &s.world_directions[s.direction_start[i]];
     Vec3* vertices = &s.world_vertices_m[s.vertex_start[i]];
-    Vec3* normals = &s.world_normals[s.face_start[i]];
+    Vec3* normals = s.world_normals.data() + s.face_start[i];  // (none for a box that stores none: data() may be null)
     s.boxes[i] = frame.is_box ? pose_box(rotation, centre_m, frame, &s.body_directions[s.direction_start[i]], b.shape,
                                          directions, vertices, normals)
                               : pose_polyhedron(rotation, centre_m, b.shape, edges, directions, vertices, normals);
     s.rotations[i] = rotation;
+    s.centroids_m[i] = centre_m;
     s.angular_velocity_world_rad_s[i] = omega_world_rad_s;
     s.is_static[i] = is_static;
-    s.posed[i] = {&b.shape, &edges, vertices, normals, directions, centre_m, &frame};
 }
 
 // Steps 1 and 2 for bodies begin .. end - 1, and their forces set to gravity for step 5
@@ -218,11 +246,12 @@ std::size_t candidate_chunk_count(std::size_t candidates) {
     return static_cast<std::ptrdiff_t>(candidates) >= parallel_threshold ? layout_chunks : std::size_t{1};
 }
 
-// Calls work(k) for each chunk k < chunks, on all threads when there are several.
+// Calls work(k) for each chunk k < chunks, on all threads when there are several (no parallel
+// region for none or one: waking the threads costs more than a small scene's step).
 template <class Work>
 void for_fixed_chunks(std::size_t chunks, Work work) {
-    if (chunks == 1) {
-        work(0);
+    if (chunks <= 1) {
+        if (chunks == 1) work(0);
         return;
     }
     const auto count = static_cast<std::ptrdiff_t>(chunks);
@@ -246,21 +275,25 @@ void find_chunk_points(WorldScratch3d& s, std::size_t k, std::size_t chunks) {
     }
 }
 
-// The table's layout: each chunk's pairs in contact and their points go after those of the chunks
-// before it (a prefix sum over the chunks, the only serial part), in candidate order: the same
-// layout as one serial pass, at any thread count. Returns the number of points.
-std::uint32_t lay_out_table(WorldScratch3d& s, std::size_t chunks) {
-    s.chunk_pairs.resize(chunks + 1);
-    s.chunk_points.resize(chunks + 1);
-    s.chunk_pairs[0] = 0;
-    s.chunk_points[0] = 0;
-    for (std::size_t k = 0; k < chunks; ++k) {
+// The table's layout, made while the narrow phase runs: each chunk's pairs in contact and their
+// points go after those of the chunks before it (a prefix sum over the chunks), in candidate
+// order: the same layout as one serial pass, at any thread count. A chunk is placed once it and
+// every chunk before it have found their points (find_contacts' lock guards this).
+struct TableLayout {
+    std::array<bool, layout_chunks> found{};  ///< the chunk's narrow phase has ended
+    std::size_t placed = 0;                    ///< chunks placed: WorldScratch3d::chunk_pairs, chunk_points known up to it
+};
+
+// Places the found chunks that follow the placed ones; they are layout.placed's chunks from the
+// returned one on.
+std::size_t place_found_chunks(WorldScratch3d& s, TableLayout& layout, std::size_t chunks) {
+    const std::size_t first = layout.placed;
+    for (std::size_t& k = layout.placed; k < chunks && layout.found[k]; ++k) {
         const CandidateChunk3d& chunk = s.candidate_chunks[k];
         s.chunk_pairs[k + 1] = s.chunk_pairs[k] + static_cast<std::uint32_t>(chunk.touching.size());
         s.chunk_points[k + 1] = s.chunk_points[k] + static_cast<std::uint32_t>(chunk.points.size());
     }
-    s.contact_pairs.resize(s.chunk_pairs[chunks]);
-    return s.chunk_points[chunks];
+    return first;
 }
 
 // Writes a pair's count points into its run of the table from the narrow phase's points, field by
@@ -337,10 +370,20 @@ void fill_chunk(World3d& w, std::size_t k) {
     }
 }
 
-// Steps 3 and 4: this step's points, sorted by key, with last step's history. Each fixed chunk
-// of the candidates finds its pairs' points (in parallel), the chunks are placed in the table
-// (serially), and each fills its pairs' runs with last step's history (in parallel).
-void find_contacts(World3d& w) {
+// Steps 3 to 5a: this step's points, sorted by key, with last step's history, and the law at
+// them, a fixed chunk of the candidates at a time (in parallel): the chunk finds its pairs' points
+// and, as soon as its place in the table is known (every chunk before it has found its points),
+// its pairs' runs are filled with last step's history and chunk_law(first pair, end pair) runs on
+// them, while the chunk's points and runs are still in cache (a chunk of the 1e4-brick wall: 1230
+// points, 86 kB found, 216 kB filled), where a pass of each over the whole table (14 MB there) read
+// them back from memory. The table is sized to last step's and a little more beforehand: a chunk
+// placed beyond that waits for the narrow phase's end (as all do where fill_as_placed is off).
+// Each chunk is filled at its own place whoever fills it and when, so the table and forces are
+// those of the plain passes at any thread count. Returns chunk_law's values summed in chunk order:
+// the chunks depend on the candidates' number only (world/parallel.hpp, rule 3).
+template <class ChunkLaw>
+auto find_contacts(World3d& w, ChunkLaw chunk_law) {
+    using Totals = std::decay_t<decltype(chunk_law(std::uint32_t{0}, std::uint32_t{0}))>;
     WorldScratch3d& s = w.scratch;
     s.broad_phase.find_pairs(s.boxes, s.is_static, s.pairs);
     // A body taken out is static, but a dynamic body could still reach its box: it is in no pair.
@@ -351,13 +394,55 @@ void find_contacts(World3d& w) {
     const std::size_t chunks = candidate_chunk_count(s.pairs.size());
     if (s.candidate_chunks.size() < chunks) s.candidate_chunks.resize(chunks);
     if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
-    // s.posed: each body posed for the narrow phase once (pose_body), not once for each pair side.
-    for_fixed_chunks(chunks, [&](std::size_t k) { find_chunk_points(s, k, chunks); });
     std::swap(s.previous, w.contacts);
     std::swap(s.previous_run_starts, s.run_starts);
-    w.contacts.resize(lay_out_table(s, chunks));
-    s.run_starts.resize(s.contact_pairs.size());
-    for_fixed_chunks(chunks, [&](std::size_t k) { fill_chunk(w, k); });
+    s.chunk_pairs.assign(chunks + 1, 0);
+    s.chunk_points.assign(chunks + 1, 0);
+    // The room: last step's table and 1/256 more (the shaken 1e4 wall gains about 50 points a
+    // step); what the table grows by is constructed, so a large margin would cost writes.
+    const std::size_t room_points = s.previous.size() + s.previous.size() / 256;
+    const std::size_t room_pairs = s.contact_pairs.size() + s.contact_pairs.size() / 256;
+    w.contacts.resize(room_points);
+    s.contact_pairs.resize(room_pairs);
+    s.run_starts.resize(room_pairs);
+    std::array<Totals, layout_chunks> chunk_totals;  // on the stack: the step allocates nothing
+    std::array<bool, layout_chunks> filled{};
+    const auto fill_and_law = [&](std::size_t k) {
+        fill_chunk(w, k);
+        chunk_totals[k] = chunk_law(s.chunk_pairs[k], s.chunk_pairs[k + 1]);
+        filled[k] = true;
+    };
+    TableLayout layout;
+    std::mutex layout_lock;
+    // s.posed: each body posed for the narrow phase once (pose_body), not once for each pair side.
+    for_fixed_chunks(chunks, [&](std::size_t k) {
+        find_chunk_points(s, k, chunks);
+        if (!s.fill_as_placed) return;
+        std::size_t first = 0, end = 0;
+        {
+            const std::lock_guard<std::mutex> hold(layout_lock);
+            layout.found[k] = true;
+            first = place_found_chunks(s, layout, chunks);
+            end = layout.placed;
+        }
+        // Chunks first .. end - 1 are placed now, by this thread alone: it fills them.
+        for (std::size_t j = first; j < end; ++j)
+            if (s.chunk_points[j + 1] <= room_points && s.chunk_pairs[j + 1] <= room_pairs) fill_and_law(j);
+    });
+    layout.found.fill(true);
+    place_found_chunks(s, layout, chunks);
+    w.contacts.resize(s.chunk_points[chunks]);
+    s.contact_pairs.resize(s.chunk_pairs[chunks]);
+    s.run_starts.resize(s.chunk_pairs[chunks]);
+    std::array<std::uint8_t, layout_chunks> late;
+    std::size_t late_chunks = 0;
+    for (std::size_t k = 0; k < chunks; ++k)
+        if (!filled[k]) late[late_chunks++] = static_cast<std::uint8_t>(k);
+    for_fixed_chunks(late_chunks, [&](std::size_t j) { fill_and_law(late[j]); });
+    s.chunks_filled_late = late_chunks;
+    Totals total{};
+    for (std::size_t k = 0; k < chunks; ++k) total += chunk_totals[k];
+    return total;
 }
 
 // The energy terms of the law, totalled in deterministic chunks (world/parallel.hpp, rule 3).
@@ -504,44 +589,87 @@ struct LawTotals {
 }
 #endif
 
-// Each body's pairs in contact, in table order: a counting sort by body (serial, a few
-// instructions a pair: the pass that added the sums onto the bodies here cost about four times
-// more). Body i's entries end up in body_pairs[body_pair_start[i] .. body_pair_start[i + 1]).
-void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
-    std::vector<std::uint32_t>& start = s.body_pair_start;
+// Each body's candidates in candidate order (a counting sort by body, serial), made again only
+// when the candidates are not those it was made from: the skin list rebuilt or its filter keeping
+// other pairs, bodies taken out, bodies added, a world made or read anew. Body i's entries are
+// body_candidates[body_candidate_start[i] .. body_candidate_start[i + 1]). Made every step from the
+// pairs in contact, this sort was a serial pass over the table that the other threads waited for.
+void index_candidates_by_body(WorldScratch3d& s, std::size_t bodies) {
+    std::vector<std::uint32_t>& start = s.body_candidate_start;
     start.assign(bodies + 2, 0);
-    for (const ContactPairSums3d& pair : s.contact_pairs) {
-        ++start[s.pairs[pair.candidate].first + 2];
-        ++start[s.pairs[pair.candidate].second + 2];
+    for (const BodyPair& ab : s.pairs) {
+        ++start[ab.first + 2];
+        ++start[ab.second + 2];
     }
     for (std::size_t i = 2; i < bodies + 2; ++i) start[i] += start[i - 1];
     // start[i + 1] is now body i's first entry; filling moves it to one past its last.
-    s.body_pairs.resize(2 * s.contact_pairs.size());
-    for (std::uint32_t p = 0; p < s.contact_pairs.size(); ++p) {
-        const BodyPair& ab = s.pairs[s.contact_pairs[p].candidate];
-        s.body_pairs[start[ab.first + 1]++] = p;
-        s.body_pairs[start[ab.second + 1]++] = p;
+    s.body_candidates.resize(2 * s.pairs.size());
+    for (std::uint32_t c = 0; c < s.pairs.size(); ++c) {
+        const BodyPair& ab = s.pairs[c];
+        s.body_candidates[start[ab.first + 1]++] = c;
+        s.body_candidates[start[ab.second + 1]++] = c;
     }
     start.pop_back();
+    s.indexed_pairs = s.pairs;
+}
+
+// Which candidates touch this step and where their pairs are in the table: each of find_contacts'
+// fixed chunks stamps its touching candidates with this step's stamp and their pair's index (the
+// chunk's pairs are the table's from chunk_pairs[k] on, in its touching order: lay_out_table and
+// fill_chunk), and compares its candidates with those the per-body index was made from. In
+// parallel, each chunk writing its own candidates' slots (rule 1). Then the index is made again
+// if the candidates changed.
+void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
+    const std::size_t candidates = s.pairs.size();
+    // A stamp that wrapped round could meet a mark 2^32 steps old: all marks cleared then.
+    if (++s.contact_stamp == 0) {
+        std::fill(s.candidate_contact.begin(), s.candidate_contact.end(), CandidateContact3d{});
+        s.contact_stamp = 1;
+    }
+    if (s.candidate_contact.size() < candidates) s.candidate_contact.resize(candidates);
+    const bool same_sizes = s.indexed_pairs.size() == candidates && s.body_candidate_start.size() == bodies + 1;
+    const std::size_t chunks = candidate_chunk_count(candidates);
+    s.chunk_changed.assign(chunks, same_sizes ? 0 : 1);
+    const std::uint32_t stamp = s.contact_stamp;
+    for_fixed_chunks(chunks, [&](std::size_t k) {
+        std::uint32_t pair = s.chunk_pairs[k];
+        for (const TouchingCandidate3d& t : s.candidate_chunks[k].touching) s.candidate_contact[t.candidate] = {stamp, pair++};
+        if (!same_sizes) return;
+        const std::size_t begin = candidates * k / chunks;
+        const std::size_t end = candidates * (k + 1) / chunks;
+        // Compared as bytes (two 32-bit indices, no padding: equal bytes are equal pairs), which the
+        // library does many at a time; std::equal compared the pairs' members one by one. Not for
+        // an empty chunk: an empty list's data() may be null, which memcmp may not be given.
+        static_assert(sizeof(BodyPair) == 2 * sizeof(std::uint32_t));
+        if (end > begin)
+            s.chunk_changed[k] = std::memcmp(s.pairs.data() + begin, s.indexed_pairs.data() + begin,
+                                             (end - begin) * sizeof(BodyPair)) != 0;
+    });
+    if (std::find(s.chunk_changed.begin(), s.chunk_changed.end(), 1) != s.chunk_changed.end())
+        index_candidates_by_body(s, bodies);
 }
 
 // Body i takes its pairs' sums in table order, as one serial pass over the table adding each
-// pair onto its two bodies did: the same terms in the same order, so the same bits at any thread
-// count. About b's centroid the pair's moment is the one about a's plus (x_a - x_b) x F.
-// The sums are kept in locals and stored once: added in the body's slot, each was stored and read
-// again at every pair (the pair's doubles might have been the body's, to the compiler). Inlined
-// into parallel_for's loop: a call a body, with its frame and its reads of the index's arrays, was
-// about 15 instructions of its 150.
-[[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::uint32_t i) {
+// pair onto its two bodies did: its candidates are walked in candidate order, which is the table's
+// (find_contacts keeps the candidates' order), and those that touch this step taken. The same terms
+// in the same order, so the same bits at any thread count. About b's centroid the pair's moment is
+// the one about a's plus (x_a - x_b) x F. The sums are kept in locals and stored once: added in the
+// body's slot, each was stored and read again at every pair (the pair's doubles might have been the
+// body's, to the compiler). Inlined into kick_run's loop.
+[[gnu::always_inline]] inline void gather_pair_sums(World3d& w, std::size_t i) {
     const WorldScratch3d& s = w.scratch;
     RigidBody3d& body = w.bodies[i];
     const Vec3 position_m = body.position_m;
     Vec3 force_n = body.force_n;
     Vec3 torque_n_m = body.torque_n_m;
-    const std::uint32_t end = s.body_pair_start[i + 1];
-    for (std::uint32_t e = s.body_pair_start[i]; e < end; ++e) {
-        const ContactPairSums3d& pair = s.contact_pairs[s.body_pairs[e]];
-        const BodyPair& ab = s.pairs[pair.candidate];
+    const std::uint32_t stamp = s.contact_stamp;
+    const std::uint32_t end = s.body_candidate_start[i + 1];
+    for (std::uint32_t e = s.body_candidate_start[i]; e < end; ++e) {
+        const std::uint32_t c = s.body_candidates[e];
+        const CandidateContact3d mark = s.candidate_contact[c];
+        if (mark.step != stamp) continue;  // apart this step
+        const ContactPairSums3d& pair = s.contact_pairs[mark.pair];
+        const BodyPair& ab = s.pairs[c];
         if (ab.second == i) {
             force_n += pair.force_n;
             torque_n_m += pair.torque_about_a_n_m + cross(w.bodies[ab.first].position_m - position_m, pair.force_n);
@@ -554,26 +682,27 @@ void index_pairs_by_body(WorldScratch3d& s, std::size_t bodies) {
     body.torque_n_m = torque_n_m;
 }
 
-// Step 5: the law at every pair in contact (in parallel), each pair's sums then gathered by its
-// two bodies in the table's order (in parallel over bodies), so that each body's sum has the same
-// terms in the same order whatever the thread count.
-void apply_contact_law(World3d& w, Vec3 table_step_m) {
-    auto& pairs = w.scratch.contact_pairs;
-    const LawConstants constants = law_constants(w.contact, w.dt_s);
-    const auto n = static_cast<std::ptrdiff_t>(pairs.size());
-    const auto two_lanes = [&](std::ptrdiff_t i) { return pair_law(w, constants, pairs[i], table_step_m); };
+// Step 5a for a chunk of the table just filled, its pairs first_pair .. end_pair - 1: the law at each
+// pair, the pairs' totals summed in order from zero.
+LawTotals law_on_chunk(World3d& w, const LawConstants& constants, std::uint32_t first_pair, std::uint32_t end_pair,
+                       const Vec3& table_step_m) {
+    ContactPairSums3d* pairs = w.scratch.contact_pairs.data();
+    const std::ptrdiff_t begin = first_pair;
+    const std::ptrdiff_t end = end_pair;
 #if BLOCKDEM_QUAD_LANES
-    const auto four_lanes = [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
-        return pair_laws_avx(w, constants, pairs.data(), begin, end, table_step_m);
-    };
-    const LawTotals t =
-        quad_lanes_usable() ? deterministic_sum_of_chunks(n, four_lanes) : deterministic_sum(n, two_lanes);
-#else
-    const LawTotals t = deterministic_sum(n, two_lanes);
+    if (quad_lanes_usable()) return pair_laws_avx(w, constants, pairs, begin, end, table_step_m);
 #endif
-    index_pairs_by_body(w.scratch, w.bodies.size());
-    parallel_for(static_cast<std::ptrdiff_t>(w.bodies.size()),
-                 [&](std::ptrdiff_t i) { gather_pair_sums(w, static_cast<std::uint32_t>(i)); });
+    LawTotals sum{};
+    for (std::ptrdiff_t i = begin; i < end; ++i) sum += pair_law(w, constants, pairs[i], table_step_m);
+    return sum;
+}
+
+// Step 5b, once every chunk has taken the law (t: their totals): which candidates touch, for each
+// pair's sums to be gathered by its two bodies in the table's order (gather_pair_sums, in the
+// kick's pass over the bodies), so that each body's sum has the same terms in the same order
+// whatever the thread count, and the law's energy booked.
+void apply_contact_law(World3d& w, const LawTotals& t) {
+    index_contacts_by_body(w.scratch, w.bodies.size());
     EnergyLedger& ledger = w.ledger;
     ledger.elastic_j = t.elastic_j;
     ledger.normal_dashpot_j += t.normal_dashpot_j;
@@ -598,8 +727,9 @@ struct BodyTotals {
 
 // Step 6, the bodies: the kick, and each body's energy; a body leaving the model now (its box,
 // posed this step, wholly outside the extent) is kicked as the others and its energy booked as
-// leaving (world/model_domain_3d.hpp).
-BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
+// leaving (world/model_domain_3d.hpp). Inlined into kick_run, so into its AVX copy: with the gather
+// in the same loop GCC called it, the baseline copy (world/vex_clones.hpp).
+[[gnu::always_inline]] inline BodyTotals kick_body(World3d& w, std::size_t i, bool starting) {
     BodyTotals e;
     if (w.kinds[i] != BodyKind3d::dynamic || is_taken_out(w.domain, i)) return e;
     RigidBody3d& b = w.bodies[i];
@@ -626,11 +756,21 @@ BLOCKDEM_VEX_CLONES void drift_run(World3d& w, std::ptrdiff_t begin, std::ptrdif
     }
 }
 
-// The kick of bodies begin .. end - 1, their totals added in body order (a chunk of
-// deterministic_sum_of_chunks; world/vex_clones.hpp).
-BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting) {
+// The end of step 5 and the kick for bodies begin .. end - 1, in one pass over each body's state:
+// its pairs' sums gathered, a caller's load added (world/external_loads_3d.hpp; only when there
+// are loads: it reads and writes the body's own state and loads only), the kick; their totals
+// added in body order (a chunk of deterministic_sum_of_chunks; world/vex_clones.hpp). Why one pass:
+// the gather, the loads and the kick each went through every body's lines, and the step waits on
+// memory.
+BLOCKDEM_VEX_CLONES BodyTotals kick_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff_t end, bool starting,
+                                        bool loads) {
     BodyTotals totals{};
-    for (std::ptrdiff_t i = begin; i < end; ++i) totals += kick_body(w, static_cast<std::size_t>(i), starting);
+    for (std::ptrdiff_t i = begin; i < end; ++i) {
+        const auto body = static_cast<std::size_t>(i);
+        gather_pair_sums(w, body);
+        if (loads) add_external_load(w, body);
+        totals += kick_body(w, body, starting);
+    }
     return totals;
 }
 
@@ -655,16 +795,18 @@ void step_begin(World3d& w) {
     parallel_for_runs(n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
         pose_run(w, begin, end, d_now, table_velocity_m_s);
     });
-    find_contacts(w);
+    const LawConstants constants = law_constants(w.contact, w.dt_s);
     // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
-    apply_contact_law(w, 0.5 * (d_after - d_before));
-    // A caller's loads (world/external_loads_3d.hpp): one branch a step when there are none.
-    if (w.external_loads.any())
-        parallel_for(n, [&](std::ptrdiff_t i) { add_external_load(w, static_cast<std::size_t>(i)); });
-
+    const Vec3 table_step_m = 0.5 * (d_after - d_before);
+    const LawTotals law = find_contacts(w, [&](std::uint32_t first_pair, std::uint32_t end_pair) {
+        return law_on_chunk(w, constants, first_pair, end_pair, table_step_m);
+    });
+    apply_contact_law(w, law);
+    // Each body's contact sums, a caller's loads and the kick, in one pass.
     const bool starting = w.steps == 0;
+    const bool loads = w.external_loads.any();
     const BodyTotals totals = deterministic_sum_of_chunks(
-        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting); });
+        n, [&](std::ptrdiff_t begin, std::ptrdiff_t end) { return kick_run(w, begin, end, starting, loads); });
     EnergyLedger& ledger = w.ledger;
     if (totals.leaving > 0) {
         take_out_leaving_bodies(w);

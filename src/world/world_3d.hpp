@@ -63,6 +63,33 @@ struct CandidateChunk3d {
     std::vector<TouchingCandidate3d> touching;
 };
 
+/// What the narrow phase's views of the bodies (WorldScratch3d::posed) point into: the world's
+/// arrays of bodies, edges and frames, the pose arrays, and the number of bodies. A view's
+/// pointers follow from these and the pose arrays' offsets alone, so while they are the same the
+/// views are (world/step_3d.cpp, size_pose_arrays); a world copied or moved, or a body added (the
+/// count, and a vector that grew), changes one of them, and the views are written again. What it
+/// cannot see is a body's shape changed in place (a vector copy-assigned over one of the same size
+/// keeps its buffer): the step's pose arrays, sized by the shapes, assume World3d's rule that
+/// bodies are only added (add_body), never reshaped.
+struct PosedSources3d {
+    const void* bodies = nullptr;
+    const void* edges = nullptr;
+    const void* box_frames = nullptr;
+    const Vec3* vertices_m = nullptr;
+    const Vec3* normals = nullptr;
+    const Vec3* directions = nullptr;
+    const Vec3* centroids_m = nullptr;
+    std::size_t count = 0;
+    bool operator==(const PosedSources3d&) const = default;
+};
+
+/// A candidate pair's mark for the bodies' gather (world/step_3d.cpp): in contact this step when
+/// step is the step's stamp, and then its entry in WorldScratch3d::contact_pairs.
+struct CandidateContact3d {
+    std::uint32_t step = 0;  ///< WorldScratch3d::contact_stamp of the step that marked it
+    std::uint32_t pair = 0;  ///< index in WorldScratch3d::contact_pairs
+};
+
 /// Arrays rebuilt every step, kept so that a step allocates nothing in steady state.
 struct WorldScratch3d {
     std::vector<std::uint32_t> vertex_start;  ///< per body, its first entry in world_vertices_m (and one past the last)
@@ -71,6 +98,7 @@ struct WorldScratch3d {
     std::vector<Vec3> world_vertices_m;       ///< [m]
     std::vector<Vec3> world_normals;
     std::vector<Vec3> world_directions;
+    std::vector<Vec3> centroids_m;            ///< [m] per body, its centroid at t, where the narrow phase reads it
     std::vector<Vec3> body_directions;        ///< per body's direction_start run, its edge directions in the body frame
                                               ///< (World3d::edges' copied once: the pose reads them with no pointer chase)
     std::vector<Vec3> angular_velocity_world_rad_s;  ///< [rad/s] per body, over the last step (the contact law's)
@@ -85,10 +113,18 @@ struct WorldScratch3d {
     std::vector<std::uint32_t> previous_run_starts;           ///< last step's: where a pair's run in previous is looked for first
     std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
     std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
-    std::vector<std::uint32_t> body_pair_start;               ///< per body, its first entry in body_pairs (and one past the last)
-    std::vector<std::uint32_t> body_pairs;                    ///< per body, its pairs in contact (indices in contact_pairs), in table order
+    std::vector<BodyPair> indexed_pairs;                      ///< the candidates body_candidates was built from (pairs then)
+    std::vector<std::uint32_t> body_candidate_start;          ///< per body, its first entry in body_candidates (and one past the last)
+    std::vector<std::uint32_t> body_candidates;               ///< per body, its candidates (indices in pairs), in candidate order
+    std::vector<CandidateContact3d> candidate_contact;        ///< per candidate: the step it last touched, its pair then
+    std::vector<std::uint8_t> chunk_changed;                  ///< per fixed chunk of pairs: 1 if it differs from indexed_pairs
+    std::uint32_t contact_stamp = 0;                          ///< this step's stamp in candidate_contact (0: none yet)
+    bool fill_as_placed = true;                               ///< fill a chunk's runs and run its law once its place is known
+                                                              ///< (false: after the whole narrow phase, the plain passes)
+    std::size_t chunks_filled_late = 0;                       ///< last step's chunks filled after the whole narrow phase
     std::vector<ContactScratch3d> clipping;                   ///< one per thread
-    std::vector<PosedPolyhedron> posed;                       ///< per body, as the narrow phase reads it (once a step, not once a pair side)
+    std::vector<PosedPolyhedron> posed;                       ///< per body, as the narrow phase reads it (pointers into the pose arrays)
+    PosedSources3d posed_sources;                             ///< what posed was written from (size_pose_arrays)
     SkinPairList3d broad_phase;                               ///< the grid, searched again only when a body left its skin
 };
 
@@ -104,7 +140,7 @@ struct StabilityWatch3d {
 };
 
 struct World3d {
-    std::vector<RigidBody3d> bodies;
+    std::vector<RigidBody3d> bodies;        ///< added by add_body, never reshaped in place (the step's pose arrays are sized by their shapes)
     std::vector<BodyKind3d> kinds;
     std::vector<PolyhedronEdges> edges;     ///< per body, numbered once
     std::vector<BoxFrame3d> box_frames;     ///< per body: a box's frame for the box-box test, or is_box = false

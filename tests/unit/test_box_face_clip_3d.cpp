@@ -29,7 +29,7 @@ struct Posed {
         for (const Vec3& d : edges.directions) directions.push_back(rotate(q, d));
     }
     PosedPolyhedron view() const {
-        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), centre, &frame};
+        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), &centre, &frame};
     }
 };
 

@@ -29,7 +29,7 @@ struct PosedBox {
         for (const Vec3& d : edges.directions) directions.push_back(rotate(q, d));
     }
     PosedPolyhedron view(bool as_box) const {
-        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), centre, as_box ? &frame : nullptr};
+        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), &centre, as_box ? &frame : nullptr};
     }
 };
 

@@ -150,7 +150,7 @@ struct Posed {
     Posed(const std::vector<Vec3>& vertices, Vec3 c)
         : shape(convex_polyhedron(vertices)), edges(polyhedron_edges(shape)), centroid(c) {}
     PosedPolyhedron view() const {
-        return {&shape, &edges, shape.vertices_m.data(), shape.face_normals.data(), edges.directions.data(), centroid};
+        return {&shape, &edges, shape.vertices_m.data(), shape.face_normals.data(), edges.directions.data(), &centroid};
     }
 };
 
@@ -197,7 +197,7 @@ struct PosedBox {
         for (const Vec3& d : edges.directions) directions.push_back(rotate(q, d));
     }
     PosedPolyhedron view() const {
-        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), centre, &frame};
+        return {&shape, &edges, vertices.data(), normals.data(), directions.data(), &centre, &frame};
     }
 };
 

@@ -22,7 +22,7 @@ struct Posed {
         for (const Vec3& v : shape.vertices_m) centroid += (1.0 / static_cast<double>(vertices.size())) * v;
     }
     PosedPolyhedron view() const {
-        return {&shape, &edges, shape.vertices_m.data(), shape.face_normals.data(), directions.data(), centroid};
+        return {&shape, &edges, shape.vertices_m.data(), shape.face_normals.data(), directions.data(), &centroid};
     }
 };
 

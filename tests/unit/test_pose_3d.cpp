@@ -95,9 +95,10 @@ TEST(Pose3d, CornersNormalsAndBoxesAreTheTurnedShapesToRoundOff) {
             }
             EXPECT_NEAR(length(lo - s.boxes[i].lo), 0.0, 120.0 * 4.4e-16) << "body " << i;
             EXPECT_NEAR(length(hi - s.boxes[i].hi), 0.0, 120.0 * 4.4e-16) << "body " << i;
-            for (std::size_t k = 0; k < b.shape.face_normals.size(); ++k)
-                EXPECT_NEAR(length(s.world_normals[s.face_start[i] + k] - rotate(b.orientation, b.shape.face_normals[k])),
-                            0.0, round_off);
+            // The normals as the narrow phase reads them (a box's from its directions, stored for the others).
+            for (std::uint32_t k = 0; k < b.shape.face_normals.size(); ++k)
+                EXPECT_NEAR(length(face_normal(s.posed[i], k) - rotate(b.orientation, b.shape.face_normals[k])), 0.0,
+                            round_off);
             for (std::size_t k = 0; k < w.edges[i].directions.size(); ++k)
                 EXPECT_NEAR(length(s.world_directions[s.direction_start[i] + k] -
                                    rotate(b.orientation, w.edges[i].directions[k])),
@@ -107,6 +108,92 @@ TEST(Pose3d, CornersNormalsAndBoxesAreTheTurnedShapesToRoundOff) {
         }
         step_end(w);
     }
+}
+
+// Two bricks 0.2 x 0.1 x 0.05 m, the upper on the lower sunk 1e-4 m into it, and a third far away.
+World3d resting_bricks() {
+    World3d w;
+    const Vec3 size_m{0.2, 0.1, 0.05};
+    add_body(w, make_rigid_body_3d("lower", box_vertices(size_m, {0, 0, 0}), 2000.0), BodyKind3d::fixed);
+    add_body(w, make_rigid_body_3d("upper", box_vertices(size_m, {0.05, 0, 0.05 - 1e-4}), 2000.0), BodyKind3d::dynamic);
+    add_body(w, make_rigid_body_3d("far", box_vertices(size_m, {5, 0, 0}), 2000.0), BodyKind3d::fixed);
+    return w;
+}
+
+// Every view points into its own world: its body's shape, edges, frame and centroid and its runs
+// in the pose arrays.
+void expect_views_point_into(const World3d& w) {
+    const WorldScratch3d& s = w.scratch;
+    ASSERT_EQ(s.posed.size(), w.bodies.size());
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        const PosedPolyhedron& p = s.posed[i];
+        EXPECT_EQ(p.shape, &w.bodies[i].shape) << "body " << i;
+        EXPECT_EQ(p.edges, &w.edges[i]) << "body " << i;
+        EXPECT_EQ(p.box, &w.box_frames[i]) << "body " << i;
+        EXPECT_EQ(p.centroid_m, s.centroids_m.data() + i) << "body " << i;
+        EXPECT_EQ(p.vertices_m, s.world_vertices_m.data() + s.vertex_start[i]) << "body " << i;
+        EXPECT_EQ(p.directions, s.world_directions.data() + s.direction_start[i]) << "body " << i;
+    }
+}
+
+// A box whose normals are its directions stores none: the brick's view reads them from its
+// directions, the same bits as its normals turned by the pose's matrix (here a skew turn).
+TEST(Pose3d, ABoxsNormalsAreItsTurnedDirectionsToTheBit) {
+    World3d w = resting_bricks();
+    ASSERT_TRUE(w.box_frames[0].normals_are_directions);
+    w.bodies[0].orientation = from_rotation_vector({0.4, -0.9, 1.3});
+    step_begin(w);
+    const WorldScratch3d& s = w.scratch;
+    EXPECT_EQ(s.posed[0].face_normals, nullptr);
+    EXPECT_EQ(s.face_start[1], 0u);
+    const Matrix3d rotation = rotation_matrix_by_products(w.bodies[0].orientation);
+    for (std::uint32_t k = 0; k < 6; ++k) {
+        const Vec3 turned = rotation * w.bodies[0].shape.face_normals[k];
+        const Vec3 read = face_normal(s.posed[0], k);
+        EXPECT_TRUE(turned.x == read.x && turned.y == read.y && turned.z == read.z) << "face " << k;
+    }
+}
+
+// The narrow phase's views are written when what they point into moves, not at every step
+// (world/step_3d.cpp, size_pose_arrays): a world copied, or assigned from another (as a state is
+// restored over a world), and a body added, each step their own bodies.
+TEST(Pose3d, ViewsFollowTheirWorldWhenCopiedAssignedOrGrown) {
+    World3d original = resting_bricks();
+    step_3d(original);
+    ASSERT_GT(original.contacts.size(), 0u);
+    // A copy steps its own bodies: the original's upper brick lifted away changes nothing in it.
+    World3d copy = original;
+    original.bodies[1].position_m.z += 1.0;
+    step_3d(copy);
+    step_3d(original);
+    expect_views_point_into(copy);
+    expect_views_point_into(original);
+    EXPECT_EQ(original.contacts.size(), 0u);
+    EXPECT_GT(copy.contacts.size(), 0u);
+    // Assigned over a world of the same bodies (the bodies' buffer kept, the views the other's).
+    World3d restored = resting_bricks();
+    step_3d(restored);
+    restored = original;
+    step_3d(restored);
+    expect_views_point_into(restored);
+    EXPECT_EQ(restored.contacts.size(), 0u);
+    restored.bodies[1].position_m = copy.bodies[1].position_m;
+    restored.bodies[1].orientation = copy.bodies[1].orientation;
+    step_3d(restored);
+    EXPECT_GT(restored.contacts.size(), 0u);
+    // A body added on the far brick: its own contact, the others' as before.
+    const std::size_t before = copy.contacts.size();
+    add_body(copy, make_rigid_body_3d("added", box_vertices({0.2, 0.1, 0.05}, {5, 0, 0.05 - 1e-4}), 2000.0),
+             BodyKind3d::dynamic);
+    step_3d(copy);
+    expect_views_point_into(copy);
+    std::size_t on_added = 0, on_upper = 0;
+    for (const ContactPoint3d& c : copy.contacts) {
+        on_added += c.key.body_a == 2 && c.key.body_b == 3;
+        on_upper += c.key.body_a == 0 && c.key.body_b == 1;
+    }
+    EXPECT_EQ(on_upper, before);
+    EXPECT_GT(on_added, 0u);
 }
 
 TEST(Pose3d, BoxFrameNamesEachVertexCorner) {
