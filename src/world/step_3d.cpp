@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <mutex>
+#include <thread>
 #include <type_traits>
 
 #ifdef _OPENMP
@@ -259,6 +260,24 @@ void for_fixed_chunks(std::size_t chunks, Work work) {
     for (std::ptrdiff_t k = 0; k < count; ++k) work(static_cast<std::size_t>(k));
 }
 
+// Calls work(k) for each chunk k < chunks, on all threads when there are several, and then tail()
+// on each thread as soon as no chunk is left for it to take (no barrier between the two).
+template <class Work, class Tail>
+void for_fixed_chunks_then(std::size_t chunks, Work work, Tail tail) {
+    if (chunks <= 1) {
+        if (chunks == 1) work(0);
+        tail();
+        return;
+    }
+    const auto count = static_cast<std::ptrdiff_t>(chunks);
+#pragma omp parallel
+    {
+#pragma omp for schedule(dynamic) nowait
+        for (std::ptrdiff_t k = 0; k < count; ++k) work(static_cast<std::size_t>(k));
+        tail();
+    }
+}
+
 // Step 3 for chunk k of the candidates: the narrow phase at each pair, its points appended to the
 // chunk's flat array, and the pair listed with their number when it has any.
 void find_chunk_points(WorldScratch3d& s, std::size_t k, std::size_t chunks) {
@@ -425,20 +444,47 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
     TableLayout layout;
     std::mutex layout_lock;
     // s.posed: each body posed for the narrow phase once (pose_body), not once for each pair side.
-    for_fixed_chunks(chunks, [&](std::size_t k) {
-        find_chunk_points(s, k, chunks);
-        if (!s.fill_as_placed) return;
-        std::size_t first = 0, end = 0;
-        {
-            const std::lock_guard<std::mutex> hold(layout_lock);
-            layout.found[k] = true;
-            first = place_found_chunks(s, layout, chunks);
-            end = layout.placed;
-        }
-        // Chunks first .. end - 1 are placed now, by this thread alone: it fills them.
-        for (std::size_t j = first; j < end; ++j)
+    // The placed chunks are filled by whichever thread claims them next (claimed: the chunks
+    // claimed so far, under the lock), not by the thread that placed them: that one found the chunk
+    // the layout waited for, often the thread the host slowed, and it was left the fill and the law
+    // of every chunk found behind it while the others waited at the barrier.
+    std::size_t claimed = 0;
+    const auto fill_placed = [&] {
+        for (;;) {
+            std::size_t j = 0;
+            {
+                const std::lock_guard<std::mutex> hold(layout_lock);
+                if (claimed == layout.placed) return;
+                j = claimed++;
+            }
             if (s.chunk_points[j + 1] <= room_points && s.chunk_pairs[j + 1] <= room_pairs) fill_and_law(j);
-    });
+        }
+    };
+    for_fixed_chunks_then(
+        chunks,
+        [&](std::size_t k) {
+            find_chunk_points(s, k, chunks);
+            if (!s.fill_as_placed) return;
+            {
+                const std::lock_guard<std::mutex> hold(layout_lock);
+                layout.found[k] = true;
+                place_found_chunks(s, layout, chunks);
+            }
+            fill_placed();
+        },
+        [&] {
+            // No chunk left for this thread to find: it fills chunks as the others place them,
+            // until every chunk is placed and claimed.
+            if (!s.fill_as_placed) return;
+            for (;;) {
+                fill_placed();
+                {
+                    const std::lock_guard<std::mutex> hold(layout_lock);
+                    if (claimed == chunks) return;
+                }
+                std::this_thread::yield();
+            }
+        });
     layout.found.fill(true);
     place_found_chunks(s, layout, chunks);
     resize_within(w.contacts, s.chunk_points[chunks]);
