@@ -247,21 +247,9 @@ std::size_t candidate_chunk_count(std::size_t candidates) {
     return static_cast<std::ptrdiff_t>(candidates) >= parallel_threshold ? layout_chunks : std::size_t{1};
 }
 
-// Calls work(k) for each chunk k < chunks, on all threads when there are several (no parallel
-// region for none or one: waking the threads costs more than a small scene's step).
-template <class Work>
-void for_fixed_chunks(std::size_t chunks, Work work) {
-    if (chunks <= 1) {
-        if (chunks == 1) work(0);
-        return;
-    }
-    const auto count = static_cast<std::ptrdiff_t>(chunks);
-#pragma omp parallel for schedule(dynamic)
-    for (std::ptrdiff_t k = 0; k < count; ++k) work(static_cast<std::size_t>(k));
-}
-
 // Calls work(k) for each chunk k < chunks, on all threads when there are several, and then tail()
-// on each thread as soon as no chunk is left for it to take (no barrier between the two).
+// on each thread as soon as no chunk is left for it to take (no barrier between the two). No
+// parallel region for none or one chunk: waking the threads costs more than a small scene's step.
 template <class Work, class Tail>
 void for_fixed_chunks_then(std::size_t chunks, Work work, Tail tail) {
     if (chunks <= 1) {
@@ -276,6 +264,12 @@ void for_fixed_chunks_then(std::size_t chunks, Work work, Tail tail) {
         for (std::ptrdiff_t k = 0; k < count; ++k) work(static_cast<std::size_t>(k));
         tail();
     }
+}
+
+// Calls work(k) for each chunk k < chunks, on all threads when there are several.
+template <class Work>
+void for_fixed_chunks(std::size_t chunks, Work work) {
+    for_fixed_chunks_then(chunks, work, [] {});
 }
 
 // Step 3 for chunk k of the candidates: the narrow phase at each pair, its points appended to the
@@ -303,16 +297,13 @@ struct TableLayout {
     std::size_t placed = 0;                    ///< chunks placed: WorldScratch3d::chunk_pairs, chunk_points known up to it
 };
 
-// Places the found chunks that follow the placed ones; they are layout.placed's chunks from the
-// returned one on.
-std::size_t place_found_chunks(WorldScratch3d& s, TableLayout& layout, std::size_t chunks) {
-    const std::size_t first = layout.placed;
+// Places the found chunks that follow the placed ones (layout.placed moves past them).
+void place_found_chunks(WorldScratch3d& s, TableLayout& layout, std::size_t chunks) {
     for (std::size_t& k = layout.placed; k < chunks && layout.found[k]; ++k) {
         const CandidateChunk3d& chunk = s.candidate_chunks[k];
         s.chunk_pairs[k + 1] = s.chunk_pairs[k] + static_cast<std::uint32_t>(chunk.touching.size());
         s.chunk_points[k + 1] = s.chunk_points[k] + static_cast<std::uint32_t>(chunk.points.size());
     }
-    return first;
 }
 
 // Writes a pair's count points into its run of the table from the narrow phase's points, field by
