@@ -63,9 +63,8 @@ public:
     Simulation(const fs::path& state_file, std::optional<fs::path> scenario_file, int threads, std::optional<fs::path> out_dir,
                bool force, const std::vector<double>& save_state_s, std::optional<double> save_state_every_s)
         : threads_(threads) {
-        RunRequest request = simulation_request(threads, out_dir, force, save_state_s, save_state_every_s, true);
-        request.restart = state_file;
-        if (scenario_file) request.scenario = *scenario_file;
+        const RunRequest request =
+            restart_request(state_file, scenario_file, threads, out_dir, force, save_state_s, save_state_every_s);
         run_ = std::make_unique<ScenarioRun>(request);
         writes_files_ = true;
         step(0);

@@ -35,4 +35,13 @@ RunRequest simulation_request(int threads, const std::optional<std::filesystem::
     return request;
 }
 
+RunRequest restart_request(const std::filesystem::path& state_file, const std::optional<std::filesystem::path>& scenario_file,
+                           int threads, const std::optional<std::filesystem::path>& out_dir, bool force,
+                           const std::vector<double>& save_state_s, std::optional<double> save_state_every_s) {
+    RunRequest request = simulation_request(threads, out_dir, force, save_state_s, save_state_every_s, true);
+    request.restart = state_file;
+    if (scenario_file) request.scenario = *scenario_file;
+    return request;
+}
+
 }  // namespace blockdem::python

@@ -17,4 +17,11 @@ RunRequest simulation_request(int threads, const std::optional<std::filesystem::
                               const std::vector<double>& save_state_s, std::optional<double> save_state_every_s,
                               bool restart = false);
 
+/// The request of from_state: a run restarted from state_file, with the scenario of the state's
+/// run folder unless scenario_file is given, and the files continued in that folder unless
+/// out_dir names another.
+RunRequest restart_request(const std::filesystem::path& state_file, const std::optional<std::filesystem::path>& scenario_file,
+                           int threads, const std::optional<std::filesystem::path>& out_dir, bool force,
+                           const std::vector<double>& save_state_s, std::optional<double> save_state_every_s);
+
 }  // namespace blockdem::python

@@ -148,3 +148,18 @@ def test_a_file_that_is_no_3d_state_is_refused_by_its_name(source_dir, tmp_path)
                                          out_dir=tmp_path / "e")
     for folder in "abcde":
         assert not (tmp_path / folder).exists(), f"a refused restart wrote into {folder}/"
+
+
+def test_a_restart_under_a_changed_scenario_goes_on_with_a_warning(source_dir, tmp_path):
+    # As `blockdem run --restart STATE SCENARIO` with another friction: the run goes on from the
+    # state under the scenario given, and says so (a UserWarning naming both files).
+    s = drums(source_dir)
+    s.set("simulation.duration", 0.02)
+    to_the_end(blockdem.Simulation3d(s, threads=1, out_dir=tmp_path / "run", save_state=[0.01]))
+    s.set("contact.mu", 0.4)
+    changed = tmp_path / "changed.toml"
+    changed.write_text(s.to_toml())
+    with pytest.warns(UserWarning, match=r"changed.toml is not the one state .*t_0.010000s.h5 was saved with"):
+        sim = blockdem.Simulation3d.from_state(tmp_path / "run" / "state" / "t_0.010000s.h5", scenario=changed,
+                                               out_dir=tmp_path / "changed")
+    assert to_the_end(sim)["status"] == "completed"
