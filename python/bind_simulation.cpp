@@ -28,6 +28,7 @@
 #include "python/bindings.hpp"
 #include "python/run_arrays.hpp"
 #include "python/scenario_source.hpp"
+#include "python/simulation_request.hpp"
 #include "python/stepping.hpp"
 #include "run/scenario_run.hpp"
 #include "world/external_loads.hpp"
@@ -46,7 +47,7 @@ public:
         if (scenario_dimension(scenario.parse(), scenario.file.string()) == 3)
             throw InputError({scenario.file.string(), "dimension", 0, 0},
                              "is 3: a 3-D scenario runs in blockdem.Simulation3d (the same step, t, positions, summary)");
-        RunRequest request = make_request(threads, out_dir, force, save_state_s, save_state_every_s);
+        RunRequest request = simulation_request(threads, out_dir, force, save_state_s, save_state_every_s);
         request.scenario = scenario.file;
         LoadedScenario loaded = build_watching_signals(
             threads, settling_stop_, [&](const std::atomic<bool>* stop) { return scenario.load(true, stop); });
@@ -62,9 +63,8 @@ public:
     Simulation(const fs::path& state_file, std::optional<fs::path> scenario_file, int threads, std::optional<fs::path> out_dir,
                bool force, const std::vector<double>& save_state_s, std::optional<double> save_state_every_s)
         : threads_(threads) {
-        RunRequest request = make_request(threads, out_dir, force, save_state_s, save_state_every_s, true);
-        request.restart = state_file;
-        if (scenario_file) request.scenario = *scenario_file;
+        const RunRequest request =
+            restart_request(state_file, scenario_file, threads, out_dir, force, save_state_s, save_state_every_s);
         run_ = std::make_unique<ScenarioRun>(request);
         writes_files_ = true;
         step(0);
@@ -182,29 +182,6 @@ public:
     bool failed() const { return !failure_.empty(); }
 
 private:
-    static RunRequest make_request(int threads, const std::optional<fs::path>& out_dir, bool force,
-                                   const std::vector<double>& save_state_s, std::optional<double> save_state_every_s,
-                                   bool restart = false) {
-        if (threads < 1) throw py::value_error(fmt::format("threads must be 1 or more, got {}", threads));
-        // State files belong to a run's folder: their restart continues its files.
-        if (!out_dir && !restart && (!save_state_s.empty() || save_state_every_s))
-            throw py::value_error("save_state and save_state_every write state files into the run's folder: give out_dir too");
-        for (double t_s : save_state_s)
-            if (!(std::isfinite(t_s) && t_s >= 0.0)) throw py::value_error(fmt::format("save_state: {} is not a time >= 0 [s]", t_s));
-        if (save_state_every_s && !(std::isfinite(*save_state_every_s) && *save_state_every_s > 0.0))
-            throw py::value_error(fmt::format("save_state_every must be a time > 0 [s], got {}", *save_state_every_s));
-        RunRequest request;
-        if (out_dir) request.out_dir = *out_dir;
-        request.force = force;
-        request.save_state_times_s = save_state_s;
-        request.save_state_every_s = save_state_every_s.value_or(0.0);
-        request.on_warning = [](const std::string& text) {
-            py::gil_scoped_acquire gil;
-            if (PyErr_WarnEx(PyExc_UserWarning, text.c_str(), 1) != 0) throw py::error_already_set();
-        };
-        return request;
-    }
-
     std::atomic<bool> settling_stop_{false};  ///< set by Ctrl-C while the model settles (build_watching_signals); before run_, which keeps a pointer to it
     std::unique_ptr<ScenarioRun> run_;
     int threads_ = 1;

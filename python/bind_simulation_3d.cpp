@@ -3,6 +3,7 @@
 //   sim = blockdem.Simulation3d(scenario, threads=2, out_dir=None)
 //   sim.step(n); sim.t; sim.positions (N x 3); sim.quaternions (N x 4); sim.summary(); sim.finish()
 //   sim.set_external_force(body, force, torque); sim.hold_velocity(body, velocity, angular_velocity) ...
+//   Simulation3d(scenario, out_dir=d, save_state=[t]); Simulation3d.from_state(d / "state/t_....h5")
 // A 3-D body is a struct of its own (dynamics/rigid_body_3d.hpp), not an array per quantity, so
 // the state comes as numpy copies taken when read, not as views. The GIL is released while
 // stepping, and Ctrl-C (KeyboardInterrupt) is seen between chunks of steps, as in 2-D.
@@ -25,6 +26,7 @@
 #include "python/bindings.hpp"
 #include "python/run_arrays.hpp"
 #include "python/scenario_source.hpp"
+#include "python/simulation_request.hpp"
 #include "python/stepping.hpp"
 #include "run/scenario_run_3d.hpp"
 #include "world/external_loads_3d.hpp"
@@ -37,13 +39,11 @@ namespace {
 
 class Simulation3d {
 public:
-    Simulation3d(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force, bool history)
+    Simulation3d(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force, bool history,
+                 const std::vector<double>& save_state_s, std::optional<double> save_state_every_s)
         : threads_(threads) {
-        if (threads < 1) throw py::value_error(fmt::format("threads must be 1 or more, got {}", threads));
-        RunRequest request;
+        RunRequest request = simulation_request(threads, out_dir, force, save_state_s, save_state_every_s);
         request.scenario = scenario.file;
-        if (out_dir) request.out_dir = *out_dir;
-        request.force = force;
         toml::table root = scenario.parse();
         run_ = build_watching_signals(threads, settling_stop_, [&](const std::atomic<bool>* stop) {
             request.stop_requested = stop;
@@ -51,6 +51,23 @@ public:
         });
         writes_files_ = out_dir.has_value();
         step(0);  // the state at t = 0 complete before anything reads it
+    }
+
+    // A run restarted from a state file, as `blockdem run --restart` and the 2-D
+    // Simulation.from_state: the scenario is the state's run folder's scenario.toml unless given,
+    // the files go on in that folder unless out_dir names another (then they are copied first),
+    // so that they end byte for byte as a run that never stopped. A restart does not settle, so
+    // it is built here, not on a second thread. Its rows are not kept in memory (history()):
+    // they would start at the state's time.
+    Simulation3d(const fs::path& state_file, std::optional<fs::path> scenario_file, int threads,
+                 std::optional<fs::path> out_dir, bool force, const std::vector<double>& save_state_s,
+                 std::optional<double> save_state_every_s)
+        : threads_(threads) {
+        const RunRequest request =
+            restart_request(state_file, scenario_file, threads, out_dir, force, save_state_s, save_state_every_s);
+        run_ = std::make_unique<ScenarioRun3d>(request);
+        writes_files_ = true;
+        step(0);
     }
 
     // As the 2-D Simulation: a run with files dropped before finish() ends as an interrupted one.
@@ -157,10 +174,27 @@ std::vector<double> xyz(Vec3 v) { return {v.x, v.y, v.z}; }
 void bind_simulation_3d(py::module_& m) {
     py::class_<Simulation3d>(m, "Simulation3d",
                              "A run of a 3-D scenario (dimension = 3), stepped from Python (docs/python.md, docs/3d.md).")
-        .def(py::init<const ScenarioSource&, int, std::optional<fs::path>, bool, bool>(), py::arg("scenario"),
-             py::arg("threads") = 2, py::arg("out_dir") = py::none(), py::arg("force") = false, py::arg("history") = true,
+        .def(py::init<const ScenarioSource&, int, std::optional<fs::path>, bool, bool, const std::vector<double>&,
+                      std::optional<double>>(),
+             py::arg("scenario"), py::arg("threads") = 2, py::arg("out_dir") = py::none(), py::arg("force") = false,
+             py::arg("history") = true, py::kw_only(), py::arg("save_state") = std::vector<double>{},
+             py::arg("save_state_every") = py::none(),
              "Builds the world (settling it if the scenario asks). out_dir: write the CLI's files there (history.csv, "
-             "energy.csv, summary.json, VTK); history: keep the output rows in memory (history()).")
+             "energy.csv, summary.json, VTK); history: keep the output rows in memory (history()); save_state: times "
+             "[s] to write state files at, save_state_every: an interval [s] (as --save-state, --save-state-every: "
+             "into out_dir/state/; finish() before the end writes one too).")
+        .def_static(
+            "from_state",
+            [](const fs::path& state_file, std::optional<fs::path> scenario, int threads, std::optional<fs::path> out_dir,
+               bool force, const std::vector<double>& save_state_s, std::optional<double> save_state_every_s) {
+                return std::make_unique<Simulation3d>(state_file, scenario, threads, out_dir, force, save_state_s,
+                                                      save_state_every_s);
+            },
+            py::arg("state_file"), py::kw_only(), py::arg("scenario") = py::none(), py::arg("threads") = 2,
+            py::arg("out_dir") = py::none(), py::arg("force") = false, py::arg("save_state") = std::vector<double>{},
+            py::arg("save_state_every") = py::none(),
+            "A 3-D run restarted from its state file, as `blockdem run --restart`: the scenario of the state's run "
+            "folder (or `scenario`, a file), its files continued there (or copied to out_dir first).")
         .def("step", &Simulation3d::step, py::arg("n") = 1, "Takes n steps (fewer at the end); returns the steps taken.")
         .def("finish", &Simulation3d::finish, "Finishes the outputs (summary.json with out_dir); returns the summary.")
         .def_property_readonly("t", [](const Simulation3d& s) { return s.world().time_s; }, "[s] time of the state")

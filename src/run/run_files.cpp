@@ -44,4 +44,13 @@ void copy_vtk_frames(const fs::path& from, const fs::path& to, std::int64_t fram
         }
 }
 
+void check_state_dimension(const StateFile& state, int dimension) {
+    if (state.dimension() == dimension) return;
+    const char* python_class = state.dimension() == 3 ? "blockdem.Simulation3d" : "blockdem.Simulation";
+    throw InputError({state.path().string(), "", 0, 0},
+                     fmt::format("a {0}-D state: a {1}-D run cannot go on from it (`blockdem run --restart` goes on in "
+                                 "{0}-D; in Python, {2}.from_state)",
+                                 state.dimension(), dimension, python_class));
+}
+
 }  // namespace blockdem

@@ -1,8 +1,9 @@
 #pragma once
 // What a run does around its loop (world/simulation.hpp), the same in both dimensions
 // (run/scenario_run.cpp for 2-D, run/scenario_run_3d.cpp for 3-D): the steps of the state files
-// asked for, the name of each, run_info.json, the scenario compared without its duration, and a
-// restart's VTK frames taken into a new folder.
+// asked for, the name of each, run_info.json, the scenario compared without its duration, a
+// restart's VTK frames taken into a new folder, and a restart from a state of the other dimension
+// refused.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -14,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/input_error.hpp"
+#include "io/state_file.hpp"
 #include "run/run_request.hpp"
 #include "world/simulation.hpp"
 
@@ -68,5 +70,10 @@ std::string without_duration(const std::string& scenario_toml);
 /// folder is complete (the .pvd collections list them): files KIND_NNNNNN.vtp for each kind.
 void copy_vtk_frames(const std::filesystem::path& from, const std::filesystem::path& to, std::int64_t frames,
                      const std::vector<std::string>& kinds);
+
+/// Refuses a restart of a `dimension`-D run from a state of the other dimension, naming the file.
+/// (`blockdem run --restart` picks the run by the state's dimension; the Python module's
+/// Simulation and Simulation3d are told which state they were handed.)
+void check_state_dimension(const StateFile& state, int dimension);
 
 }  // namespace blockdem

@@ -314,6 +314,7 @@ ScenarioRun::ScenarioRun(const RunRequest& request) : parts_(std::make_unique<Pa
     p.out_dir = request.out_dir;
     if (!request.restart.empty()) {
         p.start.restart.emplace(request.restart);
+        check_state_dimension(*p.start.restart, 2);
         p.start.run_folder = state_run_folder(request.restart, p.start.restart->info());
         if (p.scenario.empty()) p.scenario = p.start.run_folder / "scenario.toml";
         if (p.out_dir.empty()) p.out_dir = p.start.run_folder;

@@ -242,6 +242,7 @@ struct ScenarioRun3d::Parts {
         : request(r), scenario(r.scenario), out_dir(r.out_dir) {
         if (!request.restart.empty()) {
             restart.emplace(request.restart);
+            check_state_dimension(*restart, 3);
             run_folder = state_run_folder(request.restart, restart->info());
             if (scenario.empty()) scenario = run_folder / "scenario.toml";
             if (out_dir.empty()) out_dir = run_folder;
