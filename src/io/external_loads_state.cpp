@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -102,7 +103,7 @@ Loads read_loads(const StateGroup& g, std::size_t body_count) {
     read_column(g, "torque_n_m", rows, l.torque_n_m);
     const std::vector<std::uint8_t> held = g.flags("held", static_cast<std::int64_t>(rows.size()));
     for (std::size_t k = 0; k < rows.size(); ++k) {
-        if (held[k] > 1) refuse(g, "held", fmt::format("row {} (body {}) is {}, not 0 or 1", k + 1, rows[k], held[k]));
+        if (held[k] > 1) refuse(g, "held", fmt::format("row {} (body {}) is {}, not 0 or 1", k + 1, rows[k], unsigned{held[k]}));
         l.held[rows[k]] = held[k];
     }
     read_column(g, "held_velocity_m_s", rows, l.held_velocity_m_s);
