@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "io/external_loads_state.hpp"
 #include "io/input_error.hpp"
 #include "io/output_file.hpp"
 
@@ -545,6 +546,7 @@ void write_energy(StateGroup g, const EnergyLedger& e) {
     g.set("removed_j", e.removed_j);
     g.set("tilt_work_j", e.tilt_work_j);
     g.set("bond_breakage_j", e.bond_breakage_j);
+    g.set("external_work_j", e.external_work_j);
 }
 
 EnergyLedger read_energy(const StateGroup& g) {
@@ -562,6 +564,8 @@ EnergyLedger read_energy(const StateGroup& g) {
     e.removed_j = g.number("removed_j");
     e.tilt_work_j = g.number("tilt_work_j");
     e.bond_breakage_j = g.has("bond_breakage_j") ? g.number("bond_breakage_j") : 0.0;
+    // (Files written before the ledger kept it: no caller's load had done work, or it was lost.)
+    e.external_work_j = g.has("external_work_j") ? g.number("external_work_j") : 0.0;
     return e;
 }
 
@@ -652,6 +656,8 @@ void write_world(StateGroup& root, const WorldState& s) {
     d.write("left_time_s", time_s);
     d.write("left_position_m", position_m);
     d.write("left_velocity_m_s", velocity_m_s);
+    // (Only while a caller's loads exist: the files of runs without them stay as they were.)
+    if (s.external_loads.any()) write_external_loads(root.create_group("external_loads"), s.external_loads);
 }
 
 WorldState read_world(const StateGroup& root) {
@@ -713,6 +719,8 @@ WorldState read_world(const StateGroup& root) {
                                                                "body {} of {}", body[i], s.name.size()));
         s.left.push_back({body[i], time_s[i], position_m[i], velocity_m_s[i]});
     }
+    // (A file without the group, from a run without loads or from before they were kept: none.)
+    if (root.has("external_loads")) s.external_loads = read_external_loads(root.open_group("external_loads"), s.name.size());
     return s;
 }
 

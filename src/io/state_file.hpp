@@ -4,7 +4,8 @@
 // read by `--restart` and by a scenario's [simulation] initial_state.
 //
 // The world's part (world/world_state.hpp) has fixed groups (/clock, /bodies, /contacts,
-// /energy, /stability, /domain). Whatever else keeps state across the run (the response monitor
+// /energy, /stability, /domain, and /external_loads while a caller has loads:
+// io/external_loads_state.hpp). Whatever else keeps state across the run (the response monitor
 // behind summary.json, the VTK writer's frame list, a sensor's filter) is a StatePart: it writes
 // and reads its own group, named by itself, so a new recorder adds its state without touching
 // this file. Every dataset and attribute has its unit in its name, as in the code.

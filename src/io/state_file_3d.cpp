@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "io/external_loads_state.hpp"
 #include "io/input_error.hpp"
 
 namespace blockdem {
@@ -197,6 +198,8 @@ void write_world_3d(StateGroup& root, const World3d& w) {
     write_ledger(root.create_group("energy"), w.ledger);
     write_stability(root.create_group("stability3d"), w.stability);
     write_domain(root.create_group("domain3d"), w.domain);
+    // (Only while a caller's loads exist: the files of runs without them stay as they were.)
+    if (w.external_loads.any()) write_external_loads(root.create_group("external_loads3d"), w.external_loads);
 }
 
 namespace {
@@ -237,6 +240,10 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
     w.ledger = read_ledger(root.open_group("energy"));
     w.stability = read_stability(root.open_group("stability3d"));
     if (root.has("domain3d")) read_domain(root.open_group("domain3d"), w);  // (files of earlier versions lack it)
+    // A caller's loads as saved; none without the group (a run without loads, or an earlier file),
+    // also when w had some (a world going back to a checkpoint).
+    w.external_loads = root.has("external_loads3d") ? read_external_loads_3d(root.open_group("external_loads3d"), w.bodies.size())
+                                                    : ExternalLoads3d{};
     w.time_s = file.time_s();
     w.steps = file.step_index();
 }

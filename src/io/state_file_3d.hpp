@@ -11,6 +11,8 @@
 //               spring and dashpot vectors it carries to the next step (the history);
 //   /energy     the ledger (the 2-D group);
 //   /stability3d the live stable step seen so far (world/run_checks_3d.hpp);
+//   /external_loads3d a caller's loads and held velocities, while there are any
+//               (io/external_loads_state.hpp);
 // and the root's time_s and step_index. Vectors are n x 3 arrays and quaternions n x 4 (w, x, y,
 // z), every dataset with its unit in its name. The table motion is a function of time, so it has
 // no state; the broad phase is rebuilt from the positions at every step.
@@ -30,14 +32,15 @@ namespace blockdem {
 void write_world_3d(StateGroup& root, const World3d& w);
 
 /// Puts w, built from the scenario the state was saved with and with the same dt, in the state
-/// of file: clock, bodies, contacts, ledger and stability watch. Throws InputError naming the file
+/// of file: clock, bodies, contacts, ledger, stability watch and a caller's external loads. Throws InputError naming the file
 /// and the scenario when the state is not a 3-D one, or its bodies, dt or time do not fit w.
 void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario);
 
 /// Starts a new run from a saved state (a settled assembly: [simulation] initial_state, as in
 /// 2-D): the bodies' poses, their velocities at the state's time and the contacts with their
 /// history come from the file; the clock restarts at t = 0 with those velocities as the initial
-/// ones, and the ledger starts again. The time step may differ from the state's. Refused as
+/// ones, and the ledger starts again. The time step may differ from the state's. A caller's loads
+/// in the state are not taken (the new run's caller sets its own). Refused as
 /// restore_world_3d refuses a state of another scenario.
 void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario);
 

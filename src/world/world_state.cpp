@@ -43,6 +43,7 @@ WorldState capture_state(const World& w) {
     s.energy = w.energy;
     s.stability = w.stability;
     s.left = w.domain.left;
+    s.external_loads = w.external_loads;
     return s;
 }
 
@@ -130,6 +131,7 @@ void restore_state(World& w, const WorldState& s) {
     w.time_s = s.time_s;
     w.step_index = s.step_index;
     w.energy = s.energy;
+    w.external_loads = s.external_loads;
 }
 
 void start_from_state(World& w, const WorldState& s) {

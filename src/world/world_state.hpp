@@ -5,7 +5,8 @@
 // t - dt/2 once the leapfrog has started (World::velocities_staggered), the contact table with
 // every pair's shear history and last dashpot forces (the trapezoidal dissipation reads them),
 // the broad phase's rebuild positions (they decide when it next rebuilds, and so the order of
-// the contact table), the energy ledger, the stability watch and the bodies that left the model.
+// the contact table), the energy ledger, the stability watch, the bodies that left the model
+// and a caller's external loads and held velocities (world/external_loads.hpp).
 // Everything else in World is either built from the scenario (geometry, masses, materials, the
 // table motion) or recomputed by the next step_begin (corners, forces, accelerations).
 //
@@ -54,6 +55,7 @@ struct WorldState {
     EnergyLedger energy;
     StabilityWatch stability;
     std::vector<BodyLeftModel> left;      ///< bodies taken out of the model, in the order they left
+    ExternalLoads external_loads;         ///< a caller's loads and held velocities (none: empty)
 };
 
 /// The state of w, taken between two steps.
@@ -63,15 +65,16 @@ WorldState capture_state(const World& w);
 /// nullopt when it can.
 std::optional<std::string> state_mismatch(const World& w, const WorldState& s);
 
-/// Puts w in the saved state, clock included: the run goes on from s.step_index. w must be built
-/// from the same scenario (state_mismatch) with the same dt.
+/// Puts w in the saved state, clock included, and a caller's external loads with it: the run goes
+/// on from s.step_index. w must be built from the same scenario (state_mismatch) with the same dt.
 void restore_state(World& w, const WorldState& s);
 
 /// Starts a new run from a saved state (a settled assembly): the dynamic bodies' positions,
 /// velocities and contacts with their history come from s; the clock restarts at t = 0, the
 /// start positions become the initial positions, the driven bodies take the new table motion's
 /// place at t = 0, and the energy ledger starts again from the state's stored energy.
-/// Fixed and driven bodies keep the scenario's geometry.
+/// Fixed and driven bodies keep the scenario's geometry. A caller's loads in s are not taken: the
+/// new run's caller sets its own (as it sets them on a run that settled itself).
 void start_from_state(World& w, const WorldState& s);
 
 }  // namespace blockdem

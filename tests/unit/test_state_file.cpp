@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -17,6 +18,7 @@
 #include "io/state_file.hpp"
 #include "scenes/assemblies.hpp"
 #include "support/world_helpers.hpp"
+#include "world/external_loads.hpp"
 #include "world/response_monitor.hpp"
 #include "world/step.hpp"
 #include "world/world_state.hpp"
@@ -272,6 +274,152 @@ TEST_F(StateFileTest, BadFilesAreRefusedWithTheirName) {
     fs::copy_file(whole, cut, fs::copy_options::overwrite_existing);
     fs::resize_file(cut, fs::file_size(whole) / 2);
     EXPECT_NE(error_of(cut), "");
+}
+
+// The dynamic bodies of w, in body order.
+std::vector<std::uint32_t> dynamic_bodies(const World& w) {
+    std::vector<std::uint32_t> out;
+    for (std::uint32_t i = 0; i < w.bodies.size(); ++i)
+        if (w.bodies.kind[i] == BodyKind::dynamic) out.push_back(i);
+    return out;
+}
+
+// Every array of the loads, every body, to the bit.
+void expect_same_loads(const ExternalLoads& a, const ExternalLoads& b) {
+    ASSERT_EQ(a.force_n.size(), b.force_n.size());
+    ASSERT_EQ(a.held, b.held);
+    for (std::size_t i = 0; i < a.force_n.size(); ++i) {
+        EXPECT_TRUE(same_bits(a.force_n[i], b.force_n[i])) << "body " << i;
+        EXPECT_TRUE(same_bits(a.torque_n_m[i], b.torque_n_m[i])) << "body " << i;
+        EXPECT_TRUE(same_bits(a.held_velocity_m_s[i], b.held_velocity_m_s[i])) << "body " << i;
+        EXPECT_TRUE(same_bits(a.held_angular_velocity_rad_s[i], b.held_angular_velocity_rad_s[i])) << "body " << i;
+    }
+}
+
+TEST_F(StateFileTest, ExternalLoadsAndHeldVelocitiesGoOnBitForBit) {
+    // A caller's loads of each kind on the shaken wall (a pushed and twisted brick, a held one,
+    // one held and released, whose held velocity stays behind, and a torque of -0.0): saved
+    // while they act, read back equal to the bit, and the restored world goes on bit for bit.
+    World straight = build_world(wall());
+    ResponseMonitor straight_monitor(straight);
+    const std::vector<std::uint32_t> bricks = dynamic_bodies(straight);
+    ASSERT_GE(bricks.size(), 4u);
+    advance(straight, straight_monitor, 300);
+    set_external_load(straight, bricks[0], {0.0, -0.0}, -0.0);
+    set_external_load(straight, bricks.back(), {40.0, -15.0}, 3.5);
+    hold_body_velocity(straight, bricks[1], {0.02, 0.0}, 0.1);
+    hold_body_velocity(straight, bricks[2], {-0.01, 0.01}, 0.0);
+    advance(straight, straight_monitor, 300);
+    release_body_velocity(straight, bricks[2]);
+    advance(straight, straight_monitor, 300);
+    ASSERT_NE(straight.external_loads.force_n[bricks[1]].x, 0.0) << "no holding force: the test would not test it";
+    ASSERT_NE(straight.energy.external_work_j, 0.0);
+    const fs::path file = temp_file("loads.h5");
+    write_state_file(file, straight, {"save_state", "wall", "", "", 0}, {});
+
+    World restored = build_world(wall());
+    ResponseMonitor restored_monitor(restored);
+    const StateFile state(file);
+    expect_same_loads(state.world().external_loads, straight.external_loads);
+    restore_state(restored, state.world());
+    expect_same_loads(restored.external_loads, straight.external_loads);
+    EXPECT_TRUE(same_bits(restored.energy.external_work_j, straight.energy.external_work_j));
+
+    advance(straight, straight_monitor, 600);
+    advance(restored, restored_monitor, 600);
+    for (std::size_t i = 0; i < straight.bodies.size(); ++i) {
+        EXPECT_TRUE(same_bits(straight.bodies.position_m[i], restored.bodies.position_m[i])) << straight.bodies.name[i];
+        EXPECT_TRUE(same_bits(straight.bodies.velocity_m_s[i], restored.bodies.velocity_m_s[i])) << straight.bodies.name[i];
+        EXPECT_TRUE(same_bits(straight.bodies.rotation_rad[i], restored.bodies.rotation_rad[i])) << straight.bodies.name[i];
+    }
+    expect_same_loads(restored.external_loads, straight.external_loads);
+    EXPECT_TRUE(same_bits(straight.energy.external_work_j, restored.energy.external_work_j));
+    EXPECT_TRUE(same_bits(straight.energy.residual_j(), restored.energy.residual_j()));
+}
+
+TEST_F(StateFileTest, AStateWithoutLoadsRestoresNone) {
+    // A world without loads writes no /external_loads group, as every file before the group
+    // existed; read back, it is no loads, also in a world that had some (going back to a
+    // checkpoint).
+    World plain = build_world(wall());
+    const fs::path file = temp_file("plain.h5");
+    write_state_file(file, plain, {"save_state", "wall", "", "", 0}, {});
+    const StateFile state(file);
+    EXPECT_FALSE(state.has_group("external_loads"));
+    EXPECT_FALSE(state.world().external_loads.any());
+    World loaded = build_world(wall());
+    set_external_load(loaded, dynamic_bodies(loaded).front(), {1.0, 2.0}, 3.0);
+    restore_state(loaded, state.world());
+    EXPECT_FALSE(loaded.external_loads.any());
+}
+
+// A part that writes a hand-made /external_loads group beside a world without loads: a file
+// whose loads were damaged or edited.
+class LoadsGroupPart : public StatePart {
+public:
+    explicit LoadsGroupPart(std::function<void(StateGroup&)> write) : write_(std::move(write)) {}
+    std::string state_group() const override { return "external_loads"; }
+    void save_state(StateGroup& group) const override { write_(group); }
+    void restore_state(const StateGroup&) override {}
+
+private:
+    std::function<void(StateGroup&)> write_;
+};
+
+TEST_F(StateFileTest, ABadLoadsGroupIsRefusedNamingTheFileAndTheDataset) {
+    World w = build_world(wall());
+    const std::uint32_t brick = dynamic_bodies(w).front();
+    const auto bodies = static_cast<std::uint32_t>(w.bodies.size());
+    // A group of one row, for brick, but for the dataset `name`, which `bad` writes instead
+    // (or leaves out).
+    auto write_with = [&](const std::string& name, const std::function<void(StateGroup&)>& bad) {
+        return [=](StateGroup& g) {
+            const std::pair<const char*, std::function<void()>> datasets[] = {
+                {"body", [&] { g.write("body", std::vector<std::uint32_t>{brick}); }},
+                {"force_n", [&] { g.write("force_n", std::vector<Vec2>{{1.0, 2.0}}); }},
+                {"torque_n_m", [&] { g.write("torque_n_m", std::vector<double>{0.5}); }},
+                {"held", [&] { g.write("held", std::vector<std::uint8_t>{0}); }},
+                {"held_velocity_m_s", [&] { g.write("held_velocity_m_s", std::vector<Vec2>{{}}); }},
+                {"held_angular_velocity_rad_s", [&] { g.write("held_angular_velocity_rad_s", std::vector<double>{0.0}); }},
+            };
+            for (const auto& [dataset, write] : datasets) {
+                if (dataset == name) bad(g);
+                else write();
+            }
+        };
+    };
+    const fs::path good = temp_file("good_loads.h5");
+    LoadsGroupPart good_part(write_with("", [](StateGroup&) {}));
+    write_state_file(good, w, {"save_state", "wall", "", "", 0}, {&good_part});
+    EXPECT_TRUE(same_bits(StateFile(good).world().external_loads.torque_n_m[brick], 0.5));  // (the hand-made group reads)
+
+    struct Case {
+        const char* dataset;
+        std::function<void(StateGroup&)> bad;
+        const char* message;
+    };
+    const Case cases[] = {
+        {"body", [&](StateGroup& g) { g.write("body", std::vector<std::uint32_t>{bodies}); },
+         "/external_loads/body: row 1: body"},   // (out of range)
+        {"body", [&](StateGroup& g) { g.write("body", std::vector<std::uint32_t>{brick, brick}); },
+         "/external_loads/body: row 2: body"},   // (a body twice)
+        {"force_n", [](StateGroup& g) { g.write("force_n", std::vector<Vec2>{{1.0, 2.0}, {3.0, 4.0}}); },
+         "/external_loads/force_n: 2 rows, expected 1"},
+        {"torque_n_m", [](StateGroup& g) { g.write("torque_n_m", std::vector<Vec2>{{1.0, 2.0}}); },
+         "/external_loads/torque_n_m: expected an array of shape n"},
+        {"held", [](StateGroup& g) { g.write("held", std::vector<std::uint8_t>{2}); }, "/external_loads/held: row 1"},
+        {"held_velocity_m_s", [](StateGroup& g) { g.write("held_velocity_m_s", std::vector<Vec2>{{std::nan(""), 0.0}}); },
+         "/external_loads/held_velocity_m_s: row 1 (body"},
+        {"held_angular_velocity_rad_s", [](StateGroup&) {}, "/external_loads/held_angular_velocity_rad_s: missing dataset"},
+    };
+    int k = 0;
+    for (const Case& c : cases) {
+        const fs::path file = temp_file(fmt::format("bad_loads_{}.h5", k++));
+        LoadsGroupPart part(write_with(c.dataset, c.bad));
+        write_state_file(file, w, {"save_state", "wall", "", "", 0}, {&part});
+        const std::string error = error_of(file);   // (names the file)
+        EXPECT_NE(error.find(c.message), std::string::npos) << c.dataset << ": " << error;
+    }
 }
 
 }  // namespace

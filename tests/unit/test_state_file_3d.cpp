@@ -8,6 +8,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include <fmt/format.h>
@@ -15,6 +16,7 @@
 #include "io/input_error.hpp"
 #include "io/scenario_3d.hpp"
 #include "io/state_file_3d.hpp"
+#include "world/external_loads_3d.hpp"
 #include "world/step_3d.hpp"
 
 namespace blockdem {
@@ -191,6 +193,123 @@ TEST_F(StateFile3dTest, AStateOfAnotherScenarioIsRefusedNamingTheFile) {
     }
     LoadedScenario3d finer = load("block", "dt = 1e-5");
     EXPECT_THROW(restore_world_3d(state, finer.world, "finer.toml"), InputError);
+}
+
+bool same_bits(Vec3 a, Vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
+
+// Every array of the loads, every body, to the bit.
+void expect_same_loads(const ExternalLoads3d& a, const ExternalLoads3d& b) {
+    ASSERT_EQ(a.force_n.size(), b.force_n.size());
+    ASSERT_EQ(a.held, b.held);
+    for (std::size_t i = 0; i < a.force_n.size(); ++i) {
+        EXPECT_TRUE(same_bits(a.force_n[i], b.force_n[i])) << "body " << i;
+        EXPECT_TRUE(same_bits(a.torque_n_m[i], b.torque_n_m[i])) << "body " << i;
+        EXPECT_TRUE(same_bits(a.held_velocity_m_s[i], b.held_velocity_m_s[i])) << "body " << i;
+        EXPECT_TRUE(same_bits(a.held_angular_velocity_rad_s[i], b.held_angular_velocity_rad_s[i])) << "body " << i;
+    }
+}
+
+// The block and a two-box stack beside it (as AWorldThatSteppedBeforeTheRestoreGoesOnAsTheWholeRun).
+const char* const stack = R"([[bodies]]
+name = "lower"
+shape = "box"
+size = [0.3, 0.2, 0.2]
+position = [1.0, 0.0, 0.1]
+density = 2000.0
+[[bodies]]
+name = "upper"
+shape = "box"
+size = [0.3, 0.2, 0.2]
+position = [1.0, 0.0, 0.3]
+density = 2000.0)";
+
+// The block pushed and twisted from step 0, the lower box of the stack held (sliding and
+// turning under the upper one) from step 50.
+void steer(LoadedScenario3d& s, ResponseMonitor3d& monitor, int steps) {
+    set_external_load(s.world, 1, {30.0, -10.0, 0.0}, {0.0, 0.0, 2.0});
+    advance(s.world, monitor, 50);
+    hold_body_velocity(s.world, 2, {0.05, 0.02, 0.0}, {0.0, 0.0, 0.3});
+    advance(s.world, monitor, steps - 50);
+}
+
+TEST_F(StateFile3dTest, ExternalLoadsAndHeldVelocitiesGoOnBitForBit) {
+    LoadedScenario3d whole = load("block", "", stack);
+    ResponseMonitor3d whole_monitor(whole.world);
+    steer(whole, whole_monitor, 400);
+
+    LoadedScenario3d first = load("block", "", stack);
+    ResponseMonitor3d first_monitor(first.world);
+    steer(first, first_monitor, 200);
+    ASSERT_NE(length(first.world.external_loads.force_n[2]), 0.0) << "no holding force: the test would not test it";
+    const fs::path file = save_after(first, first_monitor, 0);
+    const StateFile state(file);
+    EXPECT_TRUE(state.has_group("external_loads3d"));
+
+    LoadedScenario3d second = load("block", "", stack);
+    ResponseMonitor3d second_monitor(second.world);
+    restore_world_3d(state, second.world, "state_3d.toml");
+    Monitor3dStatePart part(second_monitor);
+    state.restore(part);
+    expect_same_loads(second.world.external_loads, first.world.external_loads);
+    EXPECT_TRUE(same_bits(second.world.ledger.external_work_j, first.world.ledger.external_work_j));
+    advance(second.world, second_monitor, 200);
+
+    for (std::size_t i = 0; i < whole.world.bodies.size(); ++i) {
+        const RigidBody3d& x = whole.world.bodies[i];
+        const RigidBody3d& y = second.world.bodies[i];
+        EXPECT_TRUE(same_bits(x.position_m, y.position_m)) << x.name;
+        EXPECT_TRUE(same_bits(x.velocity_m_s, y.velocity_m_s)) << x.name;
+        EXPECT_TRUE(same_bits(x.angular_momentum_kg_m2_s, y.angular_momentum_kg_m2_s)) << x.name;
+    }
+    expect_same_loads(second.world.external_loads, whole.world.external_loads);
+    EXPECT_NE(whole.world.ledger.external_work_j, 0.0);
+    EXPECT_TRUE(same_bits(whole.world.ledger.external_work_j, second.world.ledger.external_work_j));
+    EXPECT_TRUE(same_bits(whole.world.ledger.residual_j(), second.world.ledger.residual_j()));
+}
+
+TEST_F(StateFile3dTest, AStateWithoutLoadsRestoresNoneAndABadLoadsGroupIsRefused) {
+    // A world without loads writes no /external_loads3d group (as every earlier file): restored,
+    // no loads, also into a world that had some. A damaged group is refused naming the file and
+    // the dataset.
+    LoadedScenario3d first = load();
+    ResponseMonitor3d monitor(first.world);
+    const StateFile plain(save_after(first, monitor, 20));
+    EXPECT_FALSE(plain.has_group("external_loads3d"));
+    LoadedScenario3d loaded = load();
+    set_external_load(loaded.world, 1, {1.0, 2.0, 3.0}, {});
+    restore_world_3d(plain, loaded.world, "state_3d.toml");
+    EXPECT_FALSE(loaded.world.external_loads.any());
+
+    struct Case {
+        std::vector<std::uint32_t> body;
+        std::size_t force_rows;
+        const char* message;
+    };
+    const Case cases[] = {
+        {{7}, 1, "/external_loads3d/body: row 1: body 7, but the state has 2 bodies"},
+        {{1}, 2, "/external_loads3d/force_n: 2 rows, expected 1"},
+    };
+    for (const Case& c : cases) {
+        const fs::path file = dir_ / "bad.h5";
+        write_state_file(file, 3, first.world.time_s, first.world.steps, StateFileInfo{}, [&](StateGroup& root) {
+            write_world_3d(root, first.world);
+            StateGroup g = root.create_group("external_loads3d");
+            g.write("body", c.body);
+            g.write("force_n", std::vector<double>(3 * c.force_rows, 1.0), 3);
+            g.write("torque_n_m", std::vector<double>(3, 0.0), 3);
+            g.write("held", std::vector<std::uint8_t>{0});
+            g.write("held_velocity_m_s", std::vector<double>(3, 0.0), 3);
+            g.write("held_angular_velocity_rad_s", std::vector<double>(3, 0.0), 3);
+        }, {});
+        LoadedScenario3d again = load();
+        try {
+            restore_world_3d(StateFile(file), again.world, "state_3d.toml");
+            FAIL() << "a bad loads group was taken: " << c.message;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find("bad.h5"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+        }
+    }
 }
 
 }  // namespace
