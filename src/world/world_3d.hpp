@@ -54,13 +54,15 @@ struct TouchingCandidate3d {
     std::uint32_t points = 0;
 };
 
-/// One fixed chunk of the candidate pairs, as the narrow phase left it (world/step_3d.cpp): its
-/// pairs' points in one flat array, in candidate order, and which of its candidates touch. Flat,
-/// so that the table's fill streams through it (a vector per candidate was a heap block a pair,
-/// scattered), and per chunk, so that the table's layout does not depend on the thread count.
+/// One fixed chunk of the candidate pairs, as the narrow phase left it (world/step_3d.cpp): which
+/// of its candidates touch, and where its pairs' points wait for the table's fill: one flat array,
+/// in candidate order, lent from WorldScratch3d::point_buffers. Flat, so that the table's fill
+/// streams through it (a vector per candidate was a heap block a pair, scattered), and per chunk,
+/// so that the table's layout does not depend on the thread count.
 struct CandidateChunk3d {
-    std::vector<ContactGeometry3d> points;
-    std::vector<TouchingCandidate3d> touching;
+    std::vector<TouchingCandidate3d> touching;  ///< kept to the step's end: the gather's index reads it
+    std::uint32_t buffer = 0;                   ///< its entry in point_buffers, from its narrow phase to its fill
+    std::uint32_t points = 0;                   ///< how many points its narrow phase found
 };
 
 /// What the narrow phase's views of the bodies (WorldScratch3d::posed) point into: the world's
@@ -106,7 +108,10 @@ struct WorldScratch3d {
     std::vector<Aabb3d> boxes;
     std::vector<std::uint8_t> is_static;
     std::vector<BodyPair> pairs;
-    std::vector<CandidateChunk3d> candidate_chunks;           ///< per fixed chunk of pairs, its points (kept: no allocation)
+    std::vector<CandidateChunk3d> candidate_chunks;           ///< per fixed chunk of pairs (kept: no allocation)
+    std::vector<std::vector<ContactGeometry3d>> point_buffers;///< the narrow phase's points of a chunk until its fill, lent
+                                                              ///< to the chunks in flight (a few), so that they stay in cache
+    std::vector<std::uint32_t> free_point_buffers;            ///< point_buffers not lent, the last given back on top
     std::vector<ContactPoint3d> previous;
     std::vector<ContactPairSums3d> contact_pairs;             ///< this step's pairs in contact, in table order
     std::vector<std::uint32_t> run_starts;                    ///< per pair in contact, its first point in World3d::contacts

@@ -7,6 +7,7 @@
 // table is then too small and the chunks beyond it are filled after the layout), one chunk or 64.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -73,7 +74,25 @@ struct TwinRun {
     std::size_t one_pass_late = 0;   ///< chunks the one pass filled after the layout, all steps
     std::size_t plain_late = 0;      ///< likewise in the plain world
     std::size_t late_after_short_table = 0;  ///< the one pass's late chunks the step after the short table
+    int steps_not_all_given_back = 0;  ///< steps after which a point buffer was still lent, or given back twice
+    std::size_t most_buffers_held = 0; ///< the most point buffers holding memory after a one-pass step
 };
+
+// Whether every point buffer of the pool is free after a step, each once.
+bool all_given_back(const WorldScratch3d& s) {
+    std::vector<std::uint32_t> free = s.free_point_buffers;
+    std::sort(free.begin(), free.end());
+    if (free.size() != s.point_buffers.size()) return false;
+    for (std::size_t i = 0; i < free.size(); ++i)
+        if (free[i] != i) return false;
+    return true;
+}
+
+std::size_t buffers_held(const WorldScratch3d& s) {
+    std::size_t held = 0;
+    for (const auto& b : s.point_buffers) held += b.capacity() > 0;
+    return held;
+}
 
 // Steps a world with the one pass and its copy with the plain passes, alike, for steps steps:
 // take_out_at takes a few of the top bodies out of both; shorten_at replaces both tables with
@@ -116,6 +135,8 @@ TwinRun run_twins(World3d one_pass, int steps, int take_out_at, int shorten_at, 
         run.one_pass_late += one_pass.scratch.chunks_filled_late;
         run.plain_late += plain.scratch.chunks_filled_late;
         if (i == shorten_at) run.late_after_short_table = one_pass.scratch.chunks_filled_late;
+        run.steps_not_all_given_back += !all_given_back(one_pass.scratch) || !all_given_back(plain.scratch);
+        run.most_buffers_held = std::max(run.most_buffers_held, buffers_held(one_pass.scratch));
     }
     return run;
 }
@@ -157,6 +178,11 @@ TEST(StepChunks3d, OnePassIsThePlainPassesStepByStepFromOneChunkTo64) {
     EXPECT_LT(run.late_after_short_table, 64u);
     EXPECT_GE(run.one_pass_late, 1u + run.late_after_short_table);
     EXPECT_LT(run.one_pass_late, run.chunk_steps / 20);
+    // The chunks' points wait in a few buffers lent in turn (two a thread kept), all given back
+    // by the step's end, also after the steps that lent every chunk its own.
+    EXPECT_EQ(run.steps_not_all_given_back, 0);
+    EXPECT_GE(run.most_buffers_held, 1u);
+    EXPECT_LE(run.most_buffers_held, 4u);
 }
 
 TEST(StepChunks3d, OnePassIsThePlainPassesStepByStepOnOneChunk) {
@@ -170,6 +196,8 @@ TEST(StepChunks3d, OnePassIsThePlainPassesStepByStepOnOneChunk) {
     // points has no room beyond last step's (measured: 35 of 200).
     EXPECT_GE(run.one_pass_late, 2u);
     EXPECT_LT(run.one_pass_late, 60u);
+    EXPECT_EQ(run.steps_not_all_given_back, 0);
+    EXPECT_EQ(run.most_buffers_held, 1u);
 }
 
 }  // namespace
