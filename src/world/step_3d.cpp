@@ -295,32 +295,54 @@ void find_chunk_points(WorldScratch3d& s, std::size_t k, std::size_t chunks) {
 // The chunks' point buffers are lent from a pool, the one given back last first: a chunk's points
 // are written by its narrow phase and read by its fill soon after, so a few buffers in turn stay in
 // the core's cache, where one buffer per chunk (9 MB on the 1e4-brick wall) was read from memory
-// before it was written and written back after, every step. The pool holds a buffer per chunk
-// (empty until lent), made before the narrow phase: it never grows while the threads lend from it.
+// before it was written and written back after, every step. A thread is lent first the buffers it
+// was lent before in the step and got back, still in its own core's cache (one last written by
+// another core is fetched from that core's, slower than from memory on some processors), then from
+// the shared ones. The pool holds a buffer per chunk (empty until lent), made before the narrow
+// phase: it never grows while the threads lend from it.
 void pool_point_buffers(WorldScratch3d& s, std::size_t chunks) {
+    s.thread_free_point_buffers.resize(static_cast<std::size_t>(thread_count()));
+    for (std::vector<std::uint32_t>& own : s.thread_free_point_buffers) own.clear();
     if (s.free_point_buffers.size() != s.point_buffers.size()) {
         // Not all given back (a step that threw): every buffer is free again.
         s.free_point_buffers.resize(s.point_buffers.size());
         std::iota(s.free_point_buffers.begin(), s.free_point_buffers.end(), std::uint32_t{0});
     }
-    if (s.point_buffers.size() >= chunks) return;
-    // The new ones go under the free ones already there, used least often.
-    const std::size_t before = s.point_buffers.size();
-    s.point_buffers.resize(chunks);
-    s.free_point_buffers.insert(s.free_point_buffers.begin(), chunks - before, 0);
-    std::iota(s.free_point_buffers.begin(), s.free_point_buffers.begin() + static_cast<std::ptrdiff_t>(chunks - before),
-              static_cast<std::uint32_t>(before));
+    if (s.point_buffers.size() < chunks) {
+        // The new ones go under the free ones already there, used least often.
+        const std::size_t before = s.point_buffers.size();
+        s.point_buffers.resize(chunks);
+        s.free_point_buffers.insert(s.free_point_buffers.begin(), chunks - before, 0);
+        std::iota(s.free_point_buffers.begin(), s.free_point_buffers.begin() + static_cast<std::ptrdiff_t>(chunks - before),
+                  static_cast<std::uint32_t>(before));
+    }
+    s.point_buffer_lender.resize(s.point_buffers.size());
 }
 
-// Lends chunk k a point buffer (under the caller's lock where threads share the pool).
-void lend_point_buffer(WorldScratch3d& s, std::size_t k) {
-    s.candidate_chunks[k].buffer = s.free_point_buffers.back();
-    s.free_point_buffers.pop_back();
+// Lends chunk k a point buffer for thread's narrow phase (under the caller's lock where threads
+// share the pool).
+void lend_point_buffer(WorldScratch3d& s, std::size_t k, std::size_t thread) {
+    std::vector<std::uint32_t>& own = s.thread_free_point_buffers[thread];
+    std::vector<std::uint32_t>& from = own.empty() ? s.free_point_buffers : own;
+    const std::uint32_t buffer = from.back();
+    from.pop_back();
+    s.candidate_chunks[k].buffer = buffer;
+    s.point_buffer_lender[buffer] = static_cast<std::uint32_t>(thread);
 }
 
-// Takes chunk k's point buffer back once its runs are filled (likewise under the lock).
+// Takes chunk k's point buffer back once its runs are filled, for the thread it was lent to
+// (likewise under the lock).
 void take_back_point_buffer(WorldScratch3d& s, std::size_t k) {
-    s.free_point_buffers.push_back(s.candidate_chunks[k].buffer);
+    const std::uint32_t buffer = s.candidate_chunks[k].buffer;
+    s.thread_free_point_buffers[s.point_buffer_lender[buffer]].push_back(buffer);
+}
+
+// At the step's end, every buffer back with the shared ones (the threads' own on top).
+void gather_point_buffers(WorldScratch3d& s) {
+    for (std::vector<std::uint32_t>& own : s.thread_free_point_buffers) {
+        s.free_point_buffers.insert(s.free_point_buffers.end(), own.begin(), own.end());
+        own.clear();
+    }
 }
 
 // Frees the memory of the buffers under the top keep of the free ones. A step filling as it places
@@ -508,7 +530,7 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
         [&](std::size_t k) {
             {
                 const std::lock_guard<std::mutex> hold(layout_lock);
-                lend_point_buffer(s, k);
+                lend_point_buffer(s, k, static_cast<std::size_t>(thread_index()));
             }
             find_chunk_points(s, k, chunks);
             if (!s.fill_as_placed) return;
@@ -543,6 +565,7 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
         if (!filled[k]) late[late_chunks++] = static_cast<std::uint8_t>(k);
     for_fixed_chunks(late_chunks, [&](std::size_t j) { fill_and_law(late[j]); });
     for (std::size_t j = 0; j < late_chunks; ++j) take_back_point_buffer(s, late[j]);
+    gather_point_buffers(s);
     if (s.fill_as_placed) trim_point_buffers(s, 2 * static_cast<std::size_t>(thread_count()));
     s.chunks_filled_late = late_chunks;
     Totals total{};

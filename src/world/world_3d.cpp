@@ -46,10 +46,11 @@ std::size_t memory_bytes(const World3d& w) {
              held(s.world_normals) + held(s.world_directions) + held(s.angular_velocity_world_rad_s) + held(s.boxes) + held(s.is_static) + held(s.pairs) +
              held(s.candidate_chunks) + held(s.previous) + held(s.contact_pairs) + held(s.run_starts) + held(s.previous_run_starts) + held(s.clipping) + s.broad_phase.memory_bytes() +
              held(s.chunk_pairs) + held(s.chunk_points) + held(s.indexed_pairs) + held(s.body_candidate_start) + held(s.body_candidates) +
-             held(s.candidate_contact) + held(s.chunk_changed) + held(s.point_buffers) + held(s.free_point_buffers) +
+             held(s.candidate_contact) + held(s.chunk_changed) + held(s.point_buffers) + held(s.free_point_buffers) + held(s.thread_free_point_buffers) + held(s.point_buffer_lender) +
              held(s.rotations) + held(s.posed) + held(s.body_directions) + held(s.centroids_m);
     for (const CandidateChunk3d& c : s.candidate_chunks) bytes += held(c.touching);
     for (const auto& b : s.point_buffers) bytes += held(b);
+    for (const auto& f : s.thread_free_point_buffers) bytes += held(f);
     for (const ContactScratch3d& c : s.clipping) bytes += held(c.polygon) + held(c.clipped) + held(c.heights_m2);
     return bytes;
 }

@@ -112,6 +112,9 @@ struct WorldScratch3d {
     std::vector<std::vector<ContactGeometry3d>> point_buffers;///< the narrow phase's points of a chunk until its fill, lent
                                                               ///< to the chunks in flight (a few), so that they stay in cache
     std::vector<std::uint32_t> free_point_buffers;            ///< point_buffers not lent, the last given back on top
+    std::vector<std::vector<std::uint32_t>> thread_free_point_buffers;  ///< per thread, those it was lent and got back
+                                                              ///< in the step (lent to it again first)
+    std::vector<std::uint32_t> point_buffer_lender;           ///< per point buffer, the thread it was last lent to
     std::vector<ContactPoint3d> previous;
     std::vector<ContactPairSums3d> contact_pairs;             ///< this step's pairs in contact, in table order
     std::vector<std::uint32_t> run_starts;                    ///< per pair in contact, its first point in World3d::contacts
