@@ -44,6 +44,14 @@ int thread_count() {
 #endif
 }
 
+// How many slots the step's per-thread scratch needs, asked before its own regions: one for each of
+// their threads, and one for the caller's thread number, which the step's serial parts use (a step
+// run inside a caller's parallel region, e.g. one world per thread of an outer loop, has its
+// thread number there, which can exceed the threads its own regions would have).
+std::size_t thread_slots() {
+    return static_cast<std::size_t>(std::max(thread_count(), thread_index() + 1));
+}
+
 // Step 1: a driven body rides the table; a fixed one stays. Called per body in the pose's
 // parallel loop (a serial loop over all bodies was a piece of the step's serial part).
 void place_driven_body(World3d& w, std::size_t i, Vec3 displacement_m, Vec3 velocity_m_s) {
@@ -301,7 +309,7 @@ void find_chunk_points(WorldScratch3d& s, std::size_t k, std::size_t chunks) {
 // the shared ones. The pool holds a buffer per chunk (empty until lent), made before the narrow
 // phase: it never grows while the threads lend from it.
 void pool_point_buffers(WorldScratch3d& s, std::size_t chunks) {
-    s.thread_free_point_buffers.resize(static_cast<std::size_t>(thread_count()));
+    s.thread_free_point_buffers.resize(thread_slots());
     for (std::vector<std::uint32_t>& own : s.thread_free_point_buffers) own.clear();
     if (s.free_point_buffers.size() != s.point_buffers.size()) {
         // Not all given back (a step that threw): every buffer is free again.
@@ -482,7 +490,7 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
         });
     const std::size_t chunks = candidate_chunk_count(s.pairs.size());
     if (s.candidate_chunks.size() < chunks) s.candidate_chunks.resize(chunks);
-    if (s.clipping.size() < static_cast<std::size_t>(thread_count())) s.clipping.resize(thread_count());
+    if (s.clipping.size() < thread_slots()) s.clipping.resize(thread_slots());
     std::swap(s.previous, w.contacts);
     std::swap(s.previous_run_starts, s.run_starts);
     s.chunk_pairs.assign(chunks + 1, 0);

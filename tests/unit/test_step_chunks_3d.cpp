@@ -200,5 +200,29 @@ TEST(StepChunks3d, OnePassIsThePlainPassesStepByStepOnOneChunk) {
     EXPECT_EQ(run.most_buffers_held, 1u);
 }
 
+TEST(StepChunks3d, AStepInsideACallersParallelRegionIsTheSerialStep) {
+#ifdef _OPENMP
+    // One small wall (one chunk: the step opens no region of its own) for each thread of a caller's
+    // loop of 4, the step's own regions at 1 thread: its serial parts run under the caller's thread
+    // number, up to 3, which its per-thread scratch must cover (it was sized by the 1 thread).
+    const World3d start = shaken_wall(3, 8);
+    World3d serial = start;
+    for (int i = 0; i < 20; ++i) step_3d(serial);
+    std::vector<World3d> worlds(4, start);
+    const int threads_before = omp_get_max_threads();
+#pragma omp parallel for num_threads(4) schedule(static, 1)
+    for (int k = 0; k < 4; ++k) {
+        omp_set_num_threads(1);
+        for (int i = 0; i < 20; ++i) step_3d(worlds[k]);
+    }
+    omp_set_num_threads(threads_before);
+    for (std::size_t k = 0; k < worlds.size(); ++k) {
+        EXPECT_EQ(first_difference(worlds[k], serial), "") << "world " << k;
+        EXPECT_GE(worlds[k].scratch.clipping.size(), k + 1) << "world " << k;
+        EXPECT_GE(worlds[k].scratch.thread_free_point_buffers.size(), k + 1) << "world " << k;
+    }
+#endif
+}
+
 }  // namespace
 }  // namespace blockdem
