@@ -5,6 +5,8 @@ host stole from this VM during each run.
 usage: MIN_TIME=1 [PROBE=core_probe] thread_ratio_3d.py ROUNDS BENCH [BENCH ...]
   each round runs every BENCH (a blockdem_bench) at 1 then 2 threads:
   OMP_NUM_THREADS=t BENCH --benchmark_filter=BrickWall3d/10000/t/ --benchmark_min_time=MIN_TIME
+  (MIN_TIME is ignored by a benchmark that fixes its steps, as BrickWall3d does since the thirteenth
+  session: one thread and two then time the same steps)
 Steal is the 8th number of /proc/stat's cpu lines, read before and after each run; the summary
 gives the best-over-best ratio and the ratios of the rounds in which neither run saw any.
 With PROBE (scripts/threads/core_probe.c, built), each round first prints what two threads of pure
