@@ -137,14 +137,9 @@ TEST_F(StateFile3dTest, ARestoredWorldGoesOnBitForBit) {
     EXPECT_TRUE(same_bits(whole_monitor.bodies()[1].peak_slip_m, second_monitor.bodies()[1].peak_slip_m));
 }
 
-TEST_F(StateFile3dTest, AWorldThatSteppedBeforeTheRestoreGoesOnAsTheWholeRun) {
-    // A caller that ran a world and then restores a saved state into it (going back to a
-    // checkpoint): what the step kept about its own last table (where each pair's run began)
-    // must not be taken for the restored table's, or the points of a pair before that place lose
-    // their history. The block and a two-box stack beside it, so that several pairs touch and
-    // their runs sit at other places in the two tables; saved after 350 steps, restored into
-    // worlds that stepped 37 to 420 steps, then 200 steps against the whole run of 550.
-    const std::string stack = R"([[bodies]]
+// A two-box stack to stand beside the block: several pairs touch, their runs at other places in
+// two tables.
+const char* const stack = R"([[bodies]]
 name = "lower"
 shape = "box"
 size = [0.3, 0.2, 0.2]
@@ -156,6 +151,14 @@ shape = "box"
 size = [0.3, 0.2, 0.2]
 position = [1.0, 0.0, 0.3]
 density = 2000.0)";
+
+TEST_F(StateFile3dTest, AWorldThatSteppedBeforeTheRestoreGoesOnAsTheWholeRun) {
+    // A caller that ran a world and then restores a saved state into it (going back to a
+    // checkpoint): what the step kept about its own last table (where each pair's run began)
+    // must not be taken for the restored table's, or the points of a pair before that place lose
+    // their history. The block and a two-box stack beside it, so that several pairs touch and
+    // their runs sit at other places in the two tables; saved after 350 steps, restored into
+    // worlds that stepped 37 to 420 steps, then 200 steps against the whole run of 550.
     LoadedScenario3d whole = load("block", "", stack);
     ResponseMonitor3d whole_monitor(whole.world);
     advance(whole.world, whole_monitor, 550);
@@ -209,19 +212,6 @@ void expect_same_loads(const ExternalLoads3d& a, const ExternalLoads3d& b) {
     }
 }
 
-// The block and a two-box stack beside it (as AWorldThatSteppedBeforeTheRestoreGoesOnAsTheWholeRun).
-const char* const stack = R"([[bodies]]
-name = "lower"
-shape = "box"
-size = [0.3, 0.2, 0.2]
-position = [1.0, 0.0, 0.1]
-density = 2000.0
-[[bodies]]
-name = "upper"
-shape = "box"
-size = [0.3, 0.2, 0.2]
-position = [1.0, 0.0, 0.3]
-density = 2000.0)";
 
 // The block pushed and twisted from step 0, the lower box of the stack held (sliding and
 // turning under the upper one) from step 50.
