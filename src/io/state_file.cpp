@@ -806,6 +806,8 @@ void write_state_file(const std::filesystem::path& file, int dimension, double t
 StateFile::StateFile(const std::filesystem::path& file) : file_(file) {
     quiet_hdf5();
     const InputLocation where{file.string(), "", 0, 0};
+    if (std::filesystem::is_directory(file))
+        throw InputError(where, "a folder, not a state file (a run's state files are in its state/ folder: t_*.h5)");
     if (!std::filesystem::is_regular_file(file)) throw InputError(where, "no such state file");
     if (H5Fis_hdf5(file.c_str()) <= 0) throw InputError(where, "not an HDF5 file (not a blockdem state file)");
     const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);

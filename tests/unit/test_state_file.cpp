@@ -263,6 +263,9 @@ std::string error_of(const fs::path& file) {
 
 TEST_F(StateFileTest, BadFilesAreRefusedWithTheirName) {
     EXPECT_NE(error_of(temp_file("missing.h5")).find("no such state file"), std::string::npos);
+    const fs::path folder = temp_file("a_run");
+    fs::create_directories(folder);
+    EXPECT_NE(error_of(folder).find("a folder, not a state file"), std::string::npos);
     const fs::path garbage = temp_file("garbage.h5");
     std::ofstream(garbage) << "not hdf5 at all\n";
     EXPECT_NE(error_of(garbage).find("not an HDF5 file"), std::string::npos);
