@@ -297,7 +297,6 @@ void find_chunk_points(WorldScratch3d& s, std::size_t k, std::size_t chunks) {
         const std::size_t count = polyhedron_contact_3d(s.posed[ab.first], s.posed[ab.second], clipping, points);
         if (count > 0) chunk.touching.push_back({static_cast<std::uint32_t>(c), static_cast<std::uint32_t>(count)});
     }
-    chunk.points = static_cast<std::uint32_t>(points.size());
 }
 
 // The chunks' point buffers are lent from a pool, the one given back last first: a chunk's points
@@ -379,7 +378,8 @@ void place_found_chunks(WorldScratch3d& s, TableLayout& layout, std::size_t chun
     for (std::size_t& k = layout.placed; k < chunks && layout.found[k]; ++k) {
         const CandidateChunk3d& chunk = s.candidate_chunks[k];
         s.chunk_pairs[k + 1] = s.chunk_pairs[k] + static_cast<std::uint32_t>(chunk.touching.size());
-        s.chunk_points[k + 1] = s.chunk_points[k] + chunk.points;
+        // (Its buffer holds its points until its fill, which comes after its place.)
+        s.chunk_points[k + 1] = s.chunk_points[k] + static_cast<std::uint32_t>(s.point_buffers[chunk.buffer].size());
     }
 }
 

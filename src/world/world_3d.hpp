@@ -62,7 +62,6 @@ struct TouchingCandidate3d {
 struct CandidateChunk3d {
     std::vector<TouchingCandidate3d> touching;  ///< kept to the step's end: the gather's index reads it
     std::uint32_t buffer = 0;                   ///< its entry in point_buffers, from its narrow phase to its fill
-    std::uint32_t points = 0;                   ///< how many points its narrow phase found
 };
 
 /// What the narrow phase's views of the bodies (WorldScratch3d::posed) point into: the world's
