@@ -33,9 +33,10 @@ struct BoxFrame3d {
     /// in the shape's order: the same numbers, kept here so that the box clip (geometry/
     /// box_face_clip_3d.cpp) reads its reference face's from the frame it reads anyway, not
     /// through the shape's and the edges' vectors of vectors (a heap block a face). 16-bit, not
-    /// bytes: a byte's type may alias any object, the clip's doubles too. (The incident face's
-    /// are still read from its shape: read from its frame they saved as many reads again, for 40
-    /// instructions more a clip; docs/performance.md, "Branch pose8".)
+    /// bytes: a byte's type may alias any object, the clip's doubles too. The incident face's too,
+    /// where the incident body is a box: read from its shape, the clip waited on the shape's heap
+    /// blocks (docs/performance.md, "Fourteenth session"; "Branch pose8" counted 40 instructions
+    /// more a clip for it, on a host where those reads hit the cache).
     std::array<std::array<std::uint16_t, 4>, 6> face_corners{};
     std::array<std::array<std::uint16_t, 4>, 6> face_edges{};
 };
