@@ -277,8 +277,8 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         if (!(highest_m[j] <= half_slack_m && 1e-12 * (std::abs(reach_m) + std::abs(rectangle.sides[j].bound_m)) < half_slack_m))
             return false;
     }
-    // The incident face's corner and edge numbers read once (the polygon's stores could be read
-    // as writes to the lists' entries, but not to where the lists are).
+    // The incident face's corner and edge numbers read once, into locals: the polygon's stores
+    // could otherwise be taken for writes to the lists' entries, which would then be read again.
     std::uint32_t corner_ids[count], edge_ids[count];
     for (std::size_t i = 0; i < count; ++i) {
         corner_ids[i] = incident_vertex(inc, inc_face, i);

@@ -1,10 +1,8 @@
 #include "geometry/polyhedron_contact_3d.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstddef>
-#include <cstring>
 #include <limits>
 
 #include "geometry/box_face_clip_3d.hpp"

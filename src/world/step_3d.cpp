@@ -281,8 +281,9 @@ void for_fixed_chunks(std::size_t chunks, Work work) {
     for_fixed_chunks_then(chunks, work, [] {});
 }
 
-// Brings the line at p into the core's second-level cache, to be written: owned by the core (PREFETCHW
-// where x86 has it; elsewhere, or on an x86 without it, where it does nothing, a plain hint).
+// Brings the line at p into the core's cache, owned by it for writing: PREFETCHW on x86 (a no-op on
+// an x86 without it), in inline assembly since GCC emits it from __builtin_prefetch only with
+// -mprfchw, which the build does not assume; elsewhere the compiler's write prefetch.
 #if defined(__x86_64__) || defined(__i386__)
 [[gnu::always_inline]] inline void prefetch_to_write(const char* p) { asm volatile("prefetchw %0" : : "m"(*p)); }
 #else
@@ -302,9 +303,9 @@ struct TableWarmup {
     std::size_t bytes = 0;              ///< the guessed run's bytes in each
     /// Candidate i of the chunk's n: its share of the lines.
     void touch(std::size_t i, std::size_t n) const {
-        constexpr std::size_t line = 64;
+        constexpr std::size_t line_bytes = 64;
         const std::size_t to = bytes * (i + 1) / n;
-        for (std::size_t b = bytes * i / n / line * line; b < to; b += line) {
+        for (std::size_t b = bytes * i / n / line_bytes * line_bytes; b < to; b += line_bytes) {
             prefetch_to_write(write_lines + b);
             __builtin_prefetch(read_lines + b, 0, 1);
         }
@@ -577,7 +578,10 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
                 lend_point_buffer(s, k, static_cast<std::size_t>(thread_index()));
             }
             TableWarmup warm;
-            if (guessed && last_chunk_points[k + 1] <= std::min(w.contacts.size(), s.previous.size())) {
+            // In order and within both tables: a step stopped by an exception (a build without
+            // OpenMP lets one out) leaves zeros after its placed chunks.
+            if (guessed && last_chunk_points[k] <= last_chunk_points[k + 1] &&
+                last_chunk_points[k + 1] <= std::min(w.contacts.size(), s.previous.size())) {
                 warm.write_lines = reinterpret_cast<const char*>(w.contacts.data() + last_chunk_points[k]);
                 warm.read_lines = reinterpret_cast<const char*>(s.previous.data() + last_chunk_points[k]);
                 warm.bytes = (last_chunk_points[k + 1] - last_chunk_points[k]) * sizeof(ContactPoint3d);
