@@ -59,7 +59,10 @@ struct TouchingCandidate3d {
 /// in candidate order, lent from WorldScratch3d::point_buffers. Flat, so that the table's fill
 /// streams through it (a vector per candidate was a heap block a pair, scattered), and per chunk,
 /// so that the table's layout does not depend on the thread count.
-struct CandidateChunk3d {
+/// One a cache line (64 bytes): threads find neighbouring chunks at once, and two chunks' lists
+/// sharing a line passed it between the cores at every pair found touching (the list's end written,
+/// its capacity read), which took two threads' narrow-phase loop from 4 % to 7 % of the step.
+struct alignas(64) CandidateChunk3d {
     std::vector<TouchingCandidate3d> touching;  ///< kept to the step's end: the gather's index reads it
     std::uint32_t buffer = 0;                   ///< its entry in point_buffers, from its narrow phase to its fill
 };
