@@ -17,6 +17,7 @@
 #include "io/run_state_parts.hpp"
 #include "io/state_file.hpp"
 #include "scenes/assemblies.hpp"
+#include "support/bit_checks.hpp"
 #include "support/world_helpers.hpp"
 #include "world/external_loads.hpp"
 #include "world/response_monitor.hpp"
@@ -27,6 +28,8 @@ namespace blockdem {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::expect_same_loads;
+using testing::same_bits;
 
 // A folder of its own for each test, removed after it.
 class StateFileTest : public ::testing::Test {
@@ -45,8 +48,6 @@ void advance(World& w, ResponseMonitor& monitor, int steps) {
     }
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(Vec2 a, Vec2 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y); }
 
 // A wall of bricks laid touching on a shaken table: contacts open, close and slide.
 Model wall() { return scenes::s3_wall_scene(60, 1.0, 1e-4); }
@@ -287,17 +288,6 @@ std::vector<std::uint32_t> dynamic_bodies(const World& w) {
     return out;
 }
 
-// Every array of the loads, every body, to the bit.
-void expect_same_loads(const ExternalLoads& a, const ExternalLoads& b) {
-    ASSERT_EQ(a.force_n.size(), b.force_n.size());
-    ASSERT_EQ(a.held, b.held);
-    for (std::size_t i = 0; i < a.force_n.size(); ++i) {
-        EXPECT_TRUE(same_bits(a.force_n[i], b.force_n[i])) << "body " << i;
-        EXPECT_TRUE(same_bits(a.torque_n_m[i], b.torque_n_m[i])) << "body " << i;
-        EXPECT_TRUE(same_bits(a.held_velocity_m_s[i], b.held_velocity_m_s[i])) << "body " << i;
-        EXPECT_TRUE(same_bits(a.held_angular_velocity_rad_s[i], b.held_angular_velocity_rad_s[i])) << "body " << i;
-    }
-}
 
 TEST_F(StateFileTest, ExternalLoadsAndHeldVelocitiesGoOnBitForBit) {
     // A caller's loads of each kind on the shaken wall (a pushed and twisted brick, a held one,

@@ -16,6 +16,7 @@
 #include "io/input_error.hpp"
 #include "io/scenario_3d.hpp"
 #include "io/state_file_3d.hpp"
+#include "support/bit_checks.hpp"
 #include "world/external_loads_3d.hpp"
 #include "world/step_3d.hpp"
 
@@ -23,6 +24,8 @@ namespace blockdem {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::expect_same_loads;
+using testing::same_bits;
 
 // A block tilted on a shaken slab: it rocks and slides, so every kind of history is live.
 // extra_bodies: more [[bodies]] tables, appended.
@@ -73,7 +76,6 @@ void advance(World3d& w, ResponseMonitor3d& monitor, int steps) {
     }
 }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 class StateFile3dTest : public ::testing::Test {
 protected:
@@ -198,19 +200,6 @@ TEST_F(StateFile3dTest, AStateOfAnotherScenarioIsRefusedNamingTheFile) {
     EXPECT_THROW(restore_world_3d(state, finer.world, "finer.toml"), InputError);
 }
 
-bool same_bits(Vec3 a, Vec3 b) { return same_bits(a.x, b.x) && same_bits(a.y, b.y) && same_bits(a.z, b.z); }
-
-// Every array of the loads, every body, to the bit.
-void expect_same_loads(const ExternalLoads3d& a, const ExternalLoads3d& b) {
-    ASSERT_EQ(a.force_n.size(), b.force_n.size());
-    ASSERT_EQ(a.held, b.held);
-    for (std::size_t i = 0; i < a.force_n.size(); ++i) {
-        EXPECT_TRUE(same_bits(a.force_n[i], b.force_n[i])) << "body " << i;
-        EXPECT_TRUE(same_bits(a.torque_n_m[i], b.torque_n_m[i])) << "body " << i;
-        EXPECT_TRUE(same_bits(a.held_velocity_m_s[i], b.held_velocity_m_s[i])) << "body " << i;
-        EXPECT_TRUE(same_bits(a.held_angular_velocity_rad_s[i], b.held_angular_velocity_rad_s[i])) << "body " << i;
-    }
-}
 
 
 // The block pushed and twisted from step 0, the lower box of the stack held (sliding and
