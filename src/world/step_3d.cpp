@@ -9,7 +9,6 @@
 #include <mutex>
 #include <numeric>
 #include <thread>
-#include <type_traits>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -247,13 +246,19 @@ double reduced_mass(const World3d& w, std::uint32_t a, std::uint32_t b) {
     return da ? ma : mb;
 }
 
-// A large scene's candidate pairs are cut into this many chunks for the narrow phase and the
-// table's layout, whatever the thread count (world/parallel.hpp, rule 3); a small scene's are one
-// chunk, run serially.
-constexpr std::size_t layout_chunks = 64;
+// A large scene's candidate pairs are cut into chunks for the narrow phase and the table's layout:
+// at least min_layout_chunks (for the threads to share), and one for every candidates_per_chunk
+// (WorldScratch3d, 512) beyond, so that a chunk's run of the table stays in the core's cache from
+// its fill to its law (300 candidates, 1230 points, 216 kB a chunk of the 1e4-brick wall; at 1e5
+// bricks, 64 chunks were 2.2 MB each, and the law read its points back from memory). The count
+// depends on the candidates' number alone, never the thread count (world/parallel.hpp, rule 3); a
+// small scene's candidates are one chunk, run serially.
+constexpr std::size_t min_layout_chunks = 64;
 
-std::size_t candidate_chunk_count(std::size_t candidates) {
-    return static_cast<std::ptrdiff_t>(candidates) >= parallel_threshold ? layout_chunks : std::size_t{1};
+std::size_t candidate_chunk_count(const WorldScratch3d& s, std::size_t candidates) {
+    if (static_cast<std::ptrdiff_t>(candidates) < parallel_threshold) return 1;
+    const std::size_t per_chunk = std::max<std::size_t>(s.candidates_per_chunk, 1);
+    return std::max(min_layout_chunks, (candidates + per_chunk - 1) / per_chunk);
 }
 
 // Calls work(k) for each chunk k < chunks, on all threads when there are several, and then tail()
@@ -401,14 +406,14 @@ void trim_point_buffers(WorldScratch3d& s, std::size_t keep) {
 // points go after those of the chunks before it (a prefix sum over the chunks), in candidate
 // order: the same layout as one serial pass, at any thread count. A chunk is placed once it and
 // every chunk before it have found their points (find_contacts' lock guards this).
+// (CandidateChunk3d::found: the chunk's narrow phase has ended.)
 struct TableLayout {
-    std::array<bool, layout_chunks> found{};  ///< the chunk's narrow phase has ended
-    std::size_t placed = 0;                    ///< chunks placed: WorldScratch3d::chunk_pairs, chunk_points known up to it
+    std::size_t placed = 0;  ///< chunks placed: WorldScratch3d::chunk_pairs, chunk_points known up to it
 };
 
 // Places the found chunks that follow the placed ones (layout.placed moves past them).
 void place_found_chunks(WorldScratch3d& s, TableLayout& layout, std::size_t chunks) {
-    for (std::size_t& k = layout.placed; k < chunks && layout.found[k]; ++k) {
+    for (std::size_t& k = layout.placed; k < chunks && s.candidate_chunks[k].found; ++k) {
         const CandidateChunk3d& chunk = s.candidate_chunks[k];
         s.chunk_pairs[k + 1] = s.chunk_pairs[k] + static_cast<std::uint32_t>(chunk.touching.size());
         // (Its buffer holds its points until its fill, which comes after its place.)
@@ -512,8 +517,7 @@ void resize_within(std::vector<T>& v, std::size_t n) {
 // those of the plain passes at any thread count. Returns chunk_law's values summed in chunk order:
 // the chunks depend on the candidates' number only (world/parallel.hpp, rule 3).
 template <class ChunkLaw>
-auto find_contacts(World3d& w, ChunkLaw chunk_law) {
-    using Totals = std::decay_t<decltype(chunk_law(std::uint32_t{0}, std::uint32_t{0}))>;
+LawTotals3d find_contacts(World3d& w, ChunkLaw chunk_law) {
     WorldScratch3d& s = w.scratch;
     s.broad_phase.find_pairs(s.boxes, s.is_static, s.pairs);
     // A body taken out is static, but a dynamic body could still reach its box: it is in no pair.
@@ -521,15 +525,15 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
         std::erase_if(s.pairs, [&](const BodyPair& p) {
             return is_taken_out(w.domain, p.first) || is_taken_out(w.domain, p.second);
         });
-    const std::size_t chunks = candidate_chunk_count(s.pairs.size());
+    const std::size_t chunks = candidate_chunk_count(s, s.pairs.size());
     if (s.candidate_chunks.size() < chunks) s.candidate_chunks.resize(chunks);
     if (s.clipping.size() < thread_slots()) s.clipping.resize(thread_slots());
     std::swap(s.previous, w.contacts);
     std::swap(s.previous_run_starts, s.run_starts);
     // Last step's layout of the chunks, the fill's places guessed from it (TableWarmup).
-    std::array<std::uint32_t, layout_chunks + 1> last_chunk_points{};
-    const bool guessed = s.chunk_points.size() == chunks + 1 && chunks > 1;
-    if (guessed) std::copy(s.chunk_points.begin(), s.chunk_points.end(), last_chunk_points.begin());
+    std::swap(s.previous_chunk_points, s.chunk_points);
+    const std::vector<std::uint32_t>& last_chunk_points = s.previous_chunk_points;
+    const bool guessed = last_chunk_points.size() == chunks + 1 && chunks > 1;
     s.chunk_pairs.assign(chunks + 1, 0);
     s.chunk_points.assign(chunks + 1, 0);
     // The room: last step's table and 1/256 more (the shaken 1e4 wall gains about 50 points a
@@ -539,12 +543,12 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
     resize_within(w.contacts, room_points);
     resize_within(s.contact_pairs, room_pairs);
     resize_within(s.run_starts, room_pairs);
-    std::array<Totals, layout_chunks> chunk_totals;  // on the stack: the step allocates nothing
-    std::array<bool, layout_chunks> filled{};
+    s.chunk_law_totals.assign(chunks, {});
+    for (std::size_t k = 0; k < chunks; ++k) s.candidate_chunks[k].found = s.candidate_chunks[k].filled = false;
     const auto fill_and_law = [&](std::size_t k) {
         fill_chunk(w, k);
-        chunk_totals[k] = chunk_law(s.chunk_pairs[k], s.chunk_pairs[k + 1]);
-        filled[k] = true;
+        s.chunk_law_totals[k] = chunk_law(s.chunk_pairs[k], s.chunk_pairs[k + 1]);
+        s.candidate_chunks[k].filled = true;
     };
     pool_point_buffers(s, chunks);
     TableLayout layout;
@@ -590,7 +594,7 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
             if (!s.fill_as_placed) return;
             {
                 const std::lock_guard<std::mutex> hold(layout_lock);
-                layout.found[k] = true;
+                s.candidate_chunks[k].found = true;
                 place_found_chunks(s, layout, chunks);
             }
             fill_placed();
@@ -608,41 +612,24 @@ auto find_contacts(World3d& w, ChunkLaw chunk_law) {
                 std::this_thread::yield();
             }
         });
-    layout.found.fill(true);
+    for (std::size_t k = 0; k < chunks; ++k) s.candidate_chunks[k].found = true;
     place_found_chunks(s, layout, chunks);
     resize_within(w.contacts, s.chunk_points[chunks]);
     resize_within(s.contact_pairs, s.chunk_pairs[chunks]);
     resize_within(s.run_starts, s.chunk_pairs[chunks]);
-    std::array<std::uint8_t, layout_chunks> late;
-    std::size_t late_chunks = 0;
+    std::vector<std::uint32_t>& late = s.late_chunks;
+    late.clear();
     for (std::size_t k = 0; k < chunks; ++k)
-        if (!filled[k]) late[late_chunks++] = static_cast<std::uint8_t>(k);
-    for_fixed_chunks(late_chunks, [&](std::size_t j) { fill_and_law(late[j]); });
-    for (std::size_t j = 0; j < late_chunks; ++j) take_back_point_buffer(s, late[j]);
+        if (!s.candidate_chunks[k].filled) late.push_back(static_cast<std::uint32_t>(k));
+    for_fixed_chunks(late.size(), [&](std::size_t j) { fill_and_law(late[j]); });
+    for (const std::uint32_t k : late) take_back_point_buffer(s, k);
     gather_point_buffers(s);
     if (s.fill_as_placed) trim_point_buffers(s, 2 * static_cast<std::size_t>(thread_count()));
-    s.chunks_filled_late = late_chunks;
-    Totals total{};
-    for (std::size_t k = 0; k < chunks; ++k) total += chunk_totals[k];
+    s.chunks_filled_late = late.size();
+    LawTotals3d total{};
+    for (std::size_t k = 0; k < chunks; ++k) total += s.chunk_law_totals[k];
     return total;
 }
-
-// The energy terms of the law, totalled in deterministic chunks (world/parallel.hpp, rule 3).
-struct LawTotals {
-    double elastic_j = 0.0;
-    double normal_dashpot_j = 0.0;
-    double shear_dashpot_j = 0.0;
-    double friction_j = 0.0;
-    double table_work_j = 0.0;
-    LawTotals& operator+=(const LawTotals& o) {
-        elastic_j += o.elastic_j;
-        normal_dashpot_j += o.normal_dashpot_j;
-        shear_dashpot_j += o.shear_dashpot_j;
-        friction_j += o.friction_j;
-        table_work_j += o.table_work_j;
-        return *this;
-    }
-};
 
 // The pair's motion (law_3d::PairMotion): a body that is not dynamic moves without turning.
 [[gnu::always_inline]] inline PairMotion pair_motion(const World3d& w, std::uint32_t a, std::uint32_t b) {
@@ -678,14 +665,14 @@ struct LawTotals {
 
 // A pair's totals once its points are summed (law_3d::pair_sums): the force and moment stored in the
 // pair's slot, the energy terms times their factors, and the table's work.
-[[gnu::always_inline]] inline LawTotals pair_totals(const World3d& w, const LawConstants& constants,
+[[gnu::always_inline]] inline LawTotals3d pair_totals(const World3d& w, const LawConstants& constants,
                                                     ContactPairSums3d& pair, std::uint32_t a, std::uint32_t b,
                                                     const PairSums& s, const Vec3& table_step_m) {
     const Vec3 force_n = s.force_n;
     const PairEnergySums& e = s.e;
     pair.force_n = force_n;
     pair.torque_about_a_n_m = s.torque_n_m;
-    LawTotals t;
+    LawTotals3d t;
     t.elastic_j = constants.half_kn_N_m * e.share_overlap_squared_m2 +
                   constants.half_per_ks_m_N * e.spring_squared_per_share_n2;
     t.normal_dashpot_j = constants.minus_half_dt_s * e.normal_dashpot_power_w;
@@ -700,7 +687,7 @@ struct LawTotals {
 // The law at a pair's points, their forces summed into the pair's slot (the force on b and its
 // moment about a's centroid), the pair's energy terms returned. Two points at a time where both
 // stick inside their caps (two_point_law), one at a time otherwise.
-[[gnu::always_inline]] inline LawTotals pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
+[[gnu::always_inline]] inline LawTotals3d pair_law(World3d& w, const LawConstants& constants, ContactPairSums3d& pair,
                                                   const Vec3& table_step_m) {
     ContactPoint3d* points = &w.contacts[pair.first_point];
     const std::uint32_t a = points[0].key.body_a;
@@ -728,7 +715,7 @@ struct LawTotals {
 // pair_law compiled for AVX2 (AVX's three-operand forms of the two-lane code), for the pairs that
 // pair_law_avx leaves to it. Out of line, so that the four-point path keeps none of this path's
 // values (the motion in memory for one_point_law, the two-lane constants) nor its registers.
-[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals pair_law_in_twos_avx(World3d& w,
+[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals3d pair_law_in_twos_avx(World3d& w,
                                                                                    const LawConstants& constants,
                                                                                    ContactPairSums3d& pair,
                                                                                    const Vec3& table_step_m) {
@@ -740,7 +727,7 @@ struct LawTotals {
 // are those of two_point_law at its two halves, to the bit; otherwise, or with other than four
 // points, the pair goes to pair_law_in_twos_avx (what four_point_law computed is dropped: it wrote
 // nothing).
-[[gnu::always_inline, gnu::target("avx2")]] inline LawTotals pair_law_avx(World3d& w, const LawConstants& constants,
+[[gnu::always_inline, gnu::target("avx2")]] inline LawTotals3d pair_law_avx(World3d& w, const LawConstants& constants,
                                                                          const LawQuads& law, ContactPairSums3d& pair,
                                                                          const Vec3& table_step_m) {
     if (pair.points == 4) {
@@ -757,16 +744,16 @@ struct LawTotals {
 // pair_law_avx at pairs begin .. end - 1, their totals summed in order from zero (a chunk of
 // deterministic_sum_of_chunks): one call a chunk, not a pair, so that no pair pays a call, the
 // registers' saving and the frame, and the law's constants stay put across the pairs.
-[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals pair_laws_avx(World3d& w, const LawConstants& constants,
+[[gnu::noinline, gnu::target("avx2"), gnu::flatten]] LawTotals3d pair_laws_avx(World3d& w, const LawConstants& constants,
                                                                             ContactPairSums3d* pairs,
                                                                             std::ptrdiff_t begin, std::ptrdiff_t end,
                                                                             const Vec3& table_step_m) {
     // Summed in a local, not in the returned value: that one is the caller's memory, which GCC wrote
     // at every pair (a pair's writes might have reached it, to the compiler).
     const LawQuads law = law_quads(constants);
-    LawTotals sum{};
+    LawTotals3d sum{};
     for (std::ptrdiff_t i = begin; i < end; ++i) sum += pair_law_avx(w, constants, law, pairs[i], table_step_m);
-    const LawTotals total = sum;
+    const LawTotals3d total = sum;
     return total;
 }
 #endif
@@ -810,7 +797,7 @@ void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
     }
     if (s.candidate_contact.size() < candidates) s.candidate_contact.resize(candidates);
     const bool same_sizes = s.indexed_pairs.size() == candidates && s.body_candidate_start.size() == bodies + 1;
-    const std::size_t chunks = candidate_chunk_count(candidates);
+    const std::size_t chunks = candidate_chunk_count(s, candidates);
     s.chunk_changed.assign(chunks, same_sizes ? 0 : 1);
     const std::uint32_t stamp = s.contact_stamp;
     for_fixed_chunks(chunks, [&](std::size_t k) {
@@ -866,7 +853,7 @@ void index_contacts_by_body(WorldScratch3d& s, std::size_t bodies) {
 
 // Step 5a for a chunk of the table just filled, its pairs first_pair .. end_pair - 1: the law at each
 // pair, the pairs' totals summed in order from zero.
-LawTotals law_on_chunk(World3d& w, const LawConstants& constants, std::uint32_t first_pair, std::uint32_t end_pair,
+LawTotals3d law_on_chunk(World3d& w, const LawConstants& constants, std::uint32_t first_pair, std::uint32_t end_pair,
                        const Vec3& table_step_m) {
     ContactPairSums3d* pairs = w.scratch.contact_pairs.data();
     const std::ptrdiff_t begin = first_pair;
@@ -874,7 +861,7 @@ LawTotals law_on_chunk(World3d& w, const LawConstants& constants, std::uint32_t 
 #if BLOCKDEM_QUAD_LANES
     if (quad_lanes_usable()) return pair_laws_avx(w, constants, pairs, begin, end, table_step_m);
 #endif
-    LawTotals sum{};
+    LawTotals3d sum{};
     for (std::ptrdiff_t i = begin; i < end; ++i) sum += pair_law(w, constants, pairs[i], table_step_m);
     return sum;
 }
@@ -883,7 +870,7 @@ LawTotals law_on_chunk(World3d& w, const LawConstants& constants, std::uint32_t 
 // pair's sums to be gathered by its two bodies in the table's order (gather_pair_sums, in the
 // kick's pass over the bodies), so that each body's sum has the same terms in the same order
 // whatever the thread count, and the law's energy booked.
-void apply_contact_law(World3d& w, const LawTotals& t) {
+void apply_contact_law(World3d& w, const LawTotals3d& t) {
     index_contacts_by_body(w.scratch, w.bodies.size());
     EnergyLedger& ledger = w.ledger;
     ledger.elastic_j = t.elastic_j;
@@ -980,7 +967,7 @@ void step_begin(World3d& w) {
     const LawConstants constants = law_constants(w.contact, w.dt_s);
     // The scheme's energy identity pairs F(t) with (x(t+dt) - x(t-dt)) / 2 (dynamics/central_difference.cpp).
     const Vec3 table_step_m = 0.5 * (d_after - d_before);
-    const LawTotals law = find_contacts(w, [&](std::uint32_t first_pair, std::uint32_t end_pair) {
+    const LawTotals3d law = find_contacts(w, [&](std::uint32_t first_pair, std::uint32_t end_pair) {
         return law_on_chunk(w, constants, first_pair, end_pair, table_step_m);
     });
     apply_contact_law(w, law);

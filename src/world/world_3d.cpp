@@ -47,7 +47,8 @@ std::size_t memory_bytes(const World3d& w) {
              held(s.candidate_chunks) + held(s.previous) + held(s.contact_pairs) + held(s.run_starts) + held(s.previous_run_starts) + held(s.clipping) + s.broad_phase.memory_bytes() +
              held(s.chunk_pairs) + held(s.chunk_points) + held(s.indexed_pairs) + held(s.body_candidate_start) + held(s.body_candidates) +
              held(s.candidate_contact) + held(s.chunk_changed) + held(s.point_buffers) + held(s.free_point_buffers) + held(s.thread_free_point_buffers) + held(s.point_buffer_lender) +
-             held(s.rotations) + held(s.posed) + held(s.body_directions) + held(s.centroids_m);
+             held(s.rotations) + held(s.posed) + held(s.body_directions) + held(s.centroids_m) +
+             held(s.previous_chunk_points) + held(s.chunk_law_totals) + held(s.late_chunks);
     for (const CandidateChunk3d& c : s.candidate_chunks) bytes += held(c.touching);
     for (const auto& b : s.point_buffers) bytes += held(b);
     for (const auto& f : s.thread_free_point_buffers) bytes += held(f);

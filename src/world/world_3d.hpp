@@ -65,6 +65,26 @@ struct TouchingCandidate3d {
 struct alignas(64) CandidateChunk3d {
     std::vector<TouchingCandidate3d> touching;  ///< kept to the step's end: the gather's index reads it
     std::uint32_t buffer = 0;                   ///< its entry in point_buffers, from its narrow phase to its fill
+    bool found = false;                         ///< its narrow phase has ended (this step)
+    bool filled = false;                        ///< its runs are filled and its law done (this step)
+};
+
+/// The law's energy terms over some pairs [J] (world/step_3d.cpp): a chunk's, added up in chunk
+/// order, so that the ledger has the same bits at any thread count.
+struct LawTotals3d {
+    double elastic_j = 0.0;
+    double normal_dashpot_j = 0.0;
+    double shear_dashpot_j = 0.0;
+    double friction_j = 0.0;
+    double table_work_j = 0.0;
+    LawTotals3d& operator+=(const LawTotals3d& o) {
+        elastic_j += o.elastic_j;
+        normal_dashpot_j += o.normal_dashpot_j;
+        shear_dashpot_j += o.shear_dashpot_j;
+        friction_j += o.friction_j;
+        table_work_j += o.table_work_j;
+        return *this;
+    }
 };
 
 /// What the narrow phase's views of the bodies (WorldScratch3d::posed) point into: the world's
@@ -123,12 +143,18 @@ struct WorldScratch3d {
     std::vector<std::uint32_t> previous_run_starts;           ///< last step's: where a pair's run in previous is looked for first
     std::vector<std::uint32_t> chunk_pairs;                   ///< per fixed chunk of the candidates: pairs in contact before it
     std::vector<std::uint32_t> chunk_points;                  ///< likewise, points before it
+    std::vector<std::uint32_t> previous_chunk_points;         ///< last step's chunk_points (where the fill's lines are guessed)
+    std::vector<LawTotals3d> chunk_law_totals;                ///< per fixed chunk, its law's energy terms this step
+    std::vector<std::uint32_t> late_chunks;                   ///< the chunks filled after the whole narrow phase this step
     std::vector<BodyPair> indexed_pairs;                      ///< the candidates body_candidates was built from (pairs then)
     std::vector<std::uint32_t> body_candidate_start;          ///< per body, its first entry in body_candidates (and one past the last)
     std::vector<std::uint32_t> body_candidates;               ///< per body, its candidates (indices in pairs), in candidate order
     std::vector<CandidateContact3d> candidate_contact;        ///< per candidate: the step it last touched, its pair then
     std::vector<std::uint8_t> chunk_changed;                  ///< per fixed chunk of pairs: 1 if it differs from indexed_pairs
     std::uint32_t contact_stamp = 0;                          ///< this step's stamp in candidate_contact (0: none yet)
+    std::size_t candidates_per_chunk = 512;                   ///< the candidates' chunks once there are more than 64
+                                                              ///< (world/step_3d.cpp; a test sets fewer, to reach many
+                                                              ///< chunks on a small wall)
     bool fill_as_placed = true;                               ///< fill a chunk's runs and run its law once its place is known
                                                               ///< (false: after the whole narrow phase, the plain passes)
     std::size_t chunks_filled_late = 0;                       ///< last step's chunks filled after the whole narrow phase

@@ -4,7 +4,8 @@
 // the plain passes (every chunk's narrow phase, then the whole layout, then every fill and law:
 // WorldScratch3d::fill_as_placed off), step by step, however the chunks' counts change: a wall
 // shaken off its base, bodies taken out, a table replaced by a shorter one (the room made for the
-// table is then too small and the chunks beyond it are filled after the layout), one chunk or 64.
+// table is then too small and the chunks beyond it are filled after the layout), one chunk, 64, or
+// more (a chunk for every WorldScratch3d::candidates_per_chunk candidates past 64 chunks).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,6 +71,8 @@ struct TwinRun {
     int count_changes = 0;           ///< steps whose number of points differs from the step before
     int steps_on_one_chunk = 0;
     int steps_on_64_chunks = 0;
+    int steps_on_more_chunks = 0;    ///< steps with more than 64 chunks
+    int steps_miscounted = 0;        ///< steps on several chunks whose number is not max(64, candidates / per chunk)
     std::size_t chunk_steps = 0;     ///< chunks summed over the steps
     std::size_t one_pass_late = 0;   ///< chunks the one pass filled after the layout, all steps
     std::size_t plain_late = 0;      ///< likewise in the plain world
@@ -131,6 +134,10 @@ TwinRun run_twins(World3d one_pass, int steps, int take_out_at, int shorten_at, 
         const std::size_t chunks = one_pass.scratch.chunk_pairs.size() - 1;
         run.steps_on_one_chunk += chunks == 1;
         run.steps_on_64_chunks += chunks == 64;
+        run.steps_on_more_chunks += chunks > 64;
+        const std::size_t per_chunk = one_pass.scratch.candidates_per_chunk;
+        const std::size_t candidates = one_pass.scratch.pairs.size();
+        run.steps_miscounted += chunks > 1 && chunks != std::max<std::size_t>(64, (candidates + per_chunk - 1) / per_chunk);
         run.chunk_steps += chunks;
         run.one_pass_late += one_pass.scratch.chunks_filled_late;
         run.plain_late += plain.scratch.chunks_filled_late;
@@ -183,6 +190,50 @@ TEST(StepChunks3d, OnePassIsThePlainPassesStepByStepFromOneChunkTo64) {
     EXPECT_EQ(run.steps_not_all_given_back, 0);
     EXPECT_GE(run.most_buffers_held, 1u);
     EXPECT_LE(run.most_buffers_held, 4u);
+}
+
+TEST(StepChunks3d, OnePassIsThePlainPassesStepByStepOnMoreThan64Chunks) {
+    // The same wall with a chunk for every 6 candidates: some 350 chunks once it passes 2048 (more
+    // than a byte counts).
+#ifdef _OPENMP
+    const int threads_before = omp_get_max_threads();
+    omp_set_num_threads(2);
+#endif
+    World3d wall = shaken_wall(8, 40);
+    wall.scratch.candidates_per_chunk = 6;
+    const TwinRun run = run_twins(wall, 200, 60, 190, 120);
+#ifdef _OPENMP
+    omp_set_num_threads(threads_before);
+#endif
+    std::printf("640 bricks, 6 candidates a chunk: %d steps on one chunk, %d on more than 64; chunks filled late: "
+                "%zu of %zu (one pass); %zu after the short table\n",
+                run.steps_on_one_chunk, run.steps_on_more_chunks, run.one_pass_late, run.chunk_steps,
+                run.late_after_short_table);
+    EXPECT_EQ(run.steps_differing, 0);
+    EXPECT_GT(run.steps_on_one_chunk, 0);
+    EXPECT_GT(run.steps_on_more_chunks, 20);
+    EXPECT_EQ(run.steps_miscounted, 0);
+    EXPECT_EQ(run.plain_late, run.chunk_steps);
+    EXPECT_GT(run.late_after_short_table, 64u);
+    EXPECT_LT(run.one_pass_late, run.chunk_steps / 20);
+    EXPECT_EQ(run.steps_not_all_given_back, 0);
+    EXPECT_LE(run.most_buffers_held, 4u);
+}
+
+TEST(StepChunks3d, ManyChunksGiveTheSameBitsOnOneThreadAndTwo) {
+#ifdef _OPENMP
+    World3d one = shaken_wall(8, 40);
+    one.scratch.candidates_per_chunk = 6;
+    World3d two = one;
+    const int threads_before = omp_get_max_threads();
+    omp_set_num_threads(1);
+    for (int i = 0; i < 200; ++i) step_3d(one);
+    omp_set_num_threads(2);
+    for (int i = 0; i < 200; ++i) step_3d(two);
+    omp_set_num_threads(threads_before);
+    EXPECT_GT(one.scratch.chunk_pairs.size(), 65u);
+    EXPECT_EQ(first_difference(one, two), "");
+#endif
 }
 
 TEST(StepChunks3d, OnePassIsThePlainPassesStepByStepOnOneChunk) {
