@@ -17,12 +17,12 @@
 
 namespace blockdem {
 
-struct RigidBody3d {
+struct alignas(64) RigidBody3d {
     std::string name;
     Polyhedron shape;                  ///< vertices [m] in the body (principal) frame, about the centroid
-    double mass_kg = 0.0;              ///< [kg]
     Vec3 principal_moments_kg_m2;      ///< [kg m^2] ascending, about the body axes
-    Vec3 inverse_moments_1_kg_m2;      ///< [1/(kg m^2)] their inverses
+    double mass_kg = 0.0;              ///< [kg]
+    Vec3 inverse_moments_1_kg_m2;      ///< [1/(kg m^2)] the principal moments' inverses
 
     Vec3 position_m;                   ///< [m] centroid at t
     Quaternion orientation;            ///< body frame to world at t
