@@ -69,10 +69,12 @@ void print_start_contacts(const World3d& w, std::size_t shown = 20) {
     };
     std::map<std::pair<std::uint32_t, std::uint32_t>, PairSums> pairs_touching;  // sorted: deterministic
     std::vector<bool> touches(w.bodies.size(), false);
-    for (const ContactPoint3d& c : points) {
+    const std::vector<double> dashpot_masses_kg = point_dashpot_masses_kg(w, points);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const ContactPoint3d& c = points[i];
         PairSums& p = pairs_touching[{c.key.body_a, c.key.body_b}];
         ++p.points;
-        p.mass_kg += c.dashpot_mass_kg;
+        p.mass_kg += dashpot_masses_kg[i];
         p.shares += c.stiffness_share;
         touches[c.key.body_a] = touches[c.key.body_b] = true;
     }

@@ -30,7 +30,6 @@ struct ContactPoint3d {
     Vec3 normal;                    ///< unit, from a to b
     double overlap_m = 0.0;         ///< [m] > 0
     double stiffness_share = 1.0;   ///< [-] its share w of kn and ks (geometry/corner_share_3d.hpp)
-    double dashpot_mass_kg = 0.0;   ///< [kg] the pair's reduced mass shared by the points' w
     // History carried to the next step.
     double normal_dashpot_n = 0.0;  ///< [N] last step's normal dashpot force on b
     ShearHistory3d shear;           ///< [N] shear spring and dashpot force on b, in the tangent plane

@@ -53,9 +53,11 @@ void add_direction(const World3d& w, const ContactPoint3d& c, Vec3 d, double k, 
 
 CriticalTimeStep3d live_time_step_3d(const World3d& w) {
     std::vector<Rows> rows_k(w.bodies.size(), Rows{}), rows_c(w.bodies.size(), Rows{});
-    for (const ContactPoint3d& c : w.contacts) {
+    const std::vector<double> dashpot_masses_kg = point_dashpot_masses_kg(w, w.contacts);
+    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
+        const ContactPoint3d& c = w.contacts[i];
         const ContactParameters p = point_parameters(w.contact, c.stiffness_share);
-        const DashpotCoefficients k = dashpot_coefficients(p, c.dashpot_mass_kg);
+        const DashpotCoefficients k = dashpot_coefficients(p, dashpot_masses_kg[i]);
         // Two tangents: any unit vector off the normal, and the third of the frame.
         const Vec3 n = c.normal;
         const Vec3 helper = std::abs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};

@@ -57,7 +57,6 @@ void write_contacts(StateGroup g, const std::vector<ContactPoint3d>& c) {
     g.write("normal", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.normal; })), 3);
     g.write("overlap_m", column<double>(c, [](const ContactPoint3d& p) { return p.overlap_m; }));
     g.write("stiffness_share", column<double>(c, [](const ContactPoint3d& p) { return p.stiffness_share; }));
-    g.write("dashpot_mass_kg", column<double>(c, [](const ContactPoint3d& p) { return p.dashpot_mass_kg; }));
     g.write("normal_dashpot_n", column<double>(c, [](const ContactPoint3d& p) { return p.normal_dashpot_n; }));
     g.write("shear_spring_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.spring_n; })), 3);
     g.write("shear_dashpot_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.dashpot_n; })), 3);
@@ -119,10 +118,12 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
     const std::vector<Vec3> point = vec3s(g, "point_m", n), normal = vec3s(g, "normal", n),
                             spring = vec3s(g, "shear_spring_n", n), dashpot = vec3s(g, "shear_dashpot_n", n),
                             force = vec3s(g, "force_n", n);
-    const std::vector<double> overlap = g.doubles("overlap_m", count), mass = g.doubles("dashpot_mass_kg", count),
+    const std::vector<double> overlap = g.doubles("overlap_m", count),
                               normal_dashpot = g.doubles("normal_dashpot_n", count);
     const std::vector<std::uint8_t> sliding = g.flags("sliding", count);
-    // A state written before the shares (every point a full kn) reads as shares of 1.
+    // A state written before the shares (every point a full kn) reads as shares of 1. One written
+    // before the fifteenth session also holds each point's dashpot_mass_kg: not read, the step
+    // and the stable bound make the masses from the bodies and the shares (point_dashpot_masses_kg).
     const std::vector<double> share =
         g.has("stiffness_share") ? g.doubles("stiffness_share", count) : std::vector<double>(n, 1.0);
     std::vector<ContactPoint3d> out(n);
@@ -137,7 +138,6 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
         c.normal = normal[i];
         c.overlap_m = overlap[i];
         c.stiffness_share = share[i];
-        c.dashpot_mass_kg = mass[i];
         c.normal_dashpot_n = normal_dashpot[i];
         c.shear = {spring[i], dashpot[i]};
         c.sliding = sliding[i] != 0;

@@ -236,16 +236,6 @@ BLOCKDEM_VEX_CLONES void pose_run(World3d& w, std::ptrdiff_t begin, std::ptrdiff
     }
 }
 
-// The mass a pair's dashpots use (docs/physics.md, "Which mass the damping uses").
-double reduced_mass(const World3d& w, std::uint32_t a, std::uint32_t b) {
-    const bool da = w.kinds[a] == BodyKind3d::dynamic;
-    const bool db = w.kinds[b] == BodyKind3d::dynamic;
-    const double ma = w.bodies[a].mass_kg;
-    const double mb = w.bodies[b].mass_kg;
-    if (da && db) return ma * mb / (ma + mb);
-    return da ? ma : mb;
-}
-
 // A large scene's candidate pairs are cut into chunks for the narrow phase and the table's layout:
 // at least min_layout_chunks (for the threads to share), and one for every candidates_per_chunk
 // (WorldScratch3d, 512) beyond, so that a chunk's run of the table stays in the core's cache from
@@ -427,8 +417,7 @@ void place_found_chunks(WorldScratch3d& s, TableLayout& layout, std::size_t chun
 // this step's state (force, sliding) is the law's to write.
 template <class CarryHistory>
 [[gnu::always_inline]] inline void write_run(std::uint32_t a, std::uint32_t b, const ContactGeometry3d* points,
-                                             std::uint32_t count, bool by_share, double mass_per_share_kg,
-                                             ContactPoint3d* run, CarryHistory carry) {
+                                             std::uint32_t count, ContactPoint3d* run, CarryHistory carry) {
     // The key as the two 64-bit words it is stored as: the pair's bodies, then the point's
     // features (a's then b's, adjacent in ContactGeometry3d too). Built as four 32-bit fields it
     // went through vector registers, about ten instructions a point.
@@ -446,7 +435,6 @@ template <class CarryHistory>
         p.normal = g->normal;
         p.overlap_m = g->overlap_m;
         p.stiffness_share = g->stiffness_share;
-        p.dashpot_mass_kg = (by_share ? g->stiffness_share : 1.0) * mass_per_share_kg;  // 1 M / n: the same bits
         carry(p);
     }
 }
@@ -466,11 +454,13 @@ void fill_chunk(World3d& w, std::size_t k) {
         // The dashpots take the pair's reduced mass M in proportion to the points' stiffness
         // shares w (the 2-D per-length rule), M w / S, so that every point has the requested
         // damping ratio and a box landing flat keeps its restitution. M / S is taken once a pair;
-        // where no point has stiffness (S = 0) each takes M / n.
+        // where no point has stiffness (S = 0) each takes M / n (and has no spring to damp). Only
+        // M / S is kept, in the pair's entry: a point's own M w is point_dashpot_masses_kg's
+        // (world/world_3d.hpp) to make again, where the stable step is looked for.
         double shares = 0.0;
         for (std::uint32_t j = 0; j < count; ++j) shares += points[j].stiffness_share;
         const bool by_share = shares > 0.0;
-        const double mass_per_share_kg = reduced_mass(w, a, b) / (by_share ? shares : static_cast<double>(count));
+        const double mass_per_share_kg = pair_reduced_mass_kg(w, a, b) / (by_share ? shares : static_cast<double>(count));
         s.contact_pairs[pair_index] = {touching.candidate, first_point, count, by_share ? mass_per_share_kg : 0.0, {}, {}};
         ContactPoint3d* run = &w.contacts[first_point];
         s.run_starts[pair_index] = first_point;
@@ -484,9 +474,9 @@ void fill_chunk(World3d& w, std::size_t k) {
         const ContactKey3d pair_key{a, b, 0, 0};
         if (ranked && is_run_of(s.previous, start, end, pair_key)) {
             RunHistoryWalk walk{&s.previous[start], s.previous.data() + end};
-            write_run(a, b, points, count, by_share, mass_per_share_kg, run, [&](ContactPoint3d& p) { walk.carry(p); });
+            write_run(a, b, points, count, run, [&](ContactPoint3d& p) { walk.carry(p); });
         } else {
-            write_run(a, b, points, count, by_share, mass_per_share_kg, run, [](ContactPoint3d&) {});
+            write_run(a, b, points, count, run, [](ContactPoint3d&) {});
             carry_history(s.previous, run, count, start, ranked);
         }
         points += count;

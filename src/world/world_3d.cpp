@@ -24,6 +24,23 @@ Momentum3d momentum(const World3d& w) {
     return m;
 }
 
+std::vector<double> point_dashpot_masses_kg(const World3d& w, const std::vector<ContactPoint3d>& table) {
+    std::vector<double> masses_kg(table.size(), 0.0);
+    for (std::size_t first = 0; first < table.size();) {
+        const std::uint32_t a = table[first].key.body_a, b = table[first].key.body_b;
+        std::size_t end = first;
+        double shares = 0.0;
+        for (; end < table.size() && table[end].key.body_a == a && table[end].key.body_b == b; ++end)
+            shares += table[end].stiffness_share;
+        const bool by_share = shares > 0.0;
+        const double mass_per_share_kg = pair_reduced_mass_kg(w, a, b) / (by_share ? shares : static_cast<double>(end - first));
+        for (std::size_t k = first; k < end; ++k)
+            masses_kg[k] = (by_share ? table[k].stiffness_share : 1.0) * mass_per_share_kg;
+        first = end;
+    }
+    return masses_kg;
+}
+
 namespace {
 template <class T>
 std::size_t held(const std::vector<T>& v) { return v.capacity() * sizeof(T); }

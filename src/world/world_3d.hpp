@@ -215,6 +215,24 @@ Momentum3d momentum(const World3d& w);
 /// Bytes the world holds (bodies, shapes, edges, contacts and scratch), for the memory per body.
 std::size_t memory_bytes(const World3d& w);
 
+/// The mass a pair's dashpots use [kg] (docs/physics.md, "Which mass the damping uses"): the
+/// reduced mass of two dynamic bodies, else the dynamic one's.
+inline double pair_reduced_mass_kg(const World3d& w, std::uint32_t a, std::uint32_t b) {
+    const bool da = w.kinds[a] == BodyKind3d::dynamic;
+    const bool db = w.kinds[b] == BodyKind3d::dynamic;
+    const double ma = w.bodies[a].mass_kg;
+    const double mb = w.bodies[b].mass_kg;
+    if (da && db) return ma * mb / (ma + mb);
+    return da ? ma : mb;
+}
+
+/// The mass each point's dashpots take [kg], for a table sorted by key (a step's, so a pair's
+/// points are one run): the step's rule (world/step_3d.cpp, fill_chunk), the pair's M in proportion
+/// to the points' stiffness shares w, M w / S, or M / n where no point has stiffness (S = 0); with
+/// the step's sums, so the same bits as the masses its law takes. The step keeps only M / S a pair
+/// (ContactPairSums3d): the critical time step and `blockdem check` read the points' masses here.
+std::vector<double> point_dashpot_masses_kg(const World3d& w, const std::vector<ContactPoint3d>& table);
+
 /// Sets the contact table from outside the step (a state file read), with what the step keeps
 /// about the table it left: nothing. The step looks for a pair's run of last step's points where
 /// last step's pair of the same rank began, and trusts that place to start a run

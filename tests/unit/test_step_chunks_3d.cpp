@@ -48,7 +48,7 @@ std::string first_difference(const World3d& a, const World3d& b) {
         const ContactPoint3d& q = b.contacts[k];
         if (!same_bytes(p.key, q.key) || !same_bytes(p.point_m, q.point_m) || !same_bytes(p.normal, q.normal) ||
             !same_bytes(p.overlap_m, q.overlap_m) || !same_bytes(p.stiffness_share, q.stiffness_share) ||
-            !same_bytes(p.dashpot_mass_kg, q.dashpot_mass_kg) || !same_bytes(p.normal_dashpot_n, q.normal_dashpot_n) ||
+            !same_bytes(p.normal_dashpot_n, q.normal_dashpot_n) ||
             !same_bytes(p.shear, q.shear) || p.sliding != q.sliding || !same_bytes(p.force_n, q.force_n))
             return "point " + std::to_string(k);
     }
