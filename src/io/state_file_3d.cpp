@@ -48,7 +48,8 @@ void write_bodies(StateGroup g, const World3d& w) {
             flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.angular_velocity_at_t_rad_s; })), 3);
 }
 
-void write_contacts(StateGroup g, const std::vector<ContactPoint3d>& c) {
+void write_contacts(StateGroup g, const World3d& w) {
+    const std::vector<ContactPoint3d>& c = w.contacts;
     g.write("body_a", column<std::uint32_t>(c, [](const ContactPoint3d& p) { return p.key.body_a; }));
     g.write("body_b", column<std::uint32_t>(c, [](const ContactPoint3d& p) { return p.key.body_b; }));
     g.write("feature_a", column<std::uint32_t>(c, [](const ContactPoint3d& p) { return p.key.feature_a; }));
@@ -57,6 +58,9 @@ void write_contacts(StateGroup g, const std::vector<ContactPoint3d>& c) {
     g.write("normal", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.normal; })), 3);
     g.write("overlap_m", column<double>(c, [](const ContactPoint3d& p) { return p.overlap_m; }));
     g.write("stiffness_share", column<double>(c, [](const ContactPoint3d& p) { return p.stiffness_share; }));
+    // Made from the table (the point no longer holds it) and still written: a build from before
+    // the fifteenth session requires the column to read the file. This one does not read it.
+    g.write("dashpot_mass_kg", point_dashpot_masses_kg(w, c));
     g.write("normal_dashpot_n", column<double>(c, [](const ContactPoint3d& p) { return p.normal_dashpot_n; }));
     g.write("shear_spring_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.spring_n; })), 3);
     g.write("shear_dashpot_n", flat(column<Vec3>(c, [](const ContactPoint3d& p) { return p.shear.dashpot_n; })), 3);
@@ -121,9 +125,9 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
     const std::vector<double> overlap = g.doubles("overlap_m", count),
                               normal_dashpot = g.doubles("normal_dashpot_n", count);
     const std::vector<std::uint8_t> sliding = g.flags("sliding", count);
-    // A state written before the shares (every point a full kn) reads as shares of 1. One written
-    // before the fifteenth session also holds each point's dashpot_mass_kg: not read, the step
-    // and the stable bound make the masses from the bodies and the shares (point_dashpot_masses_kg).
+    // A state written before the shares (every point a full kn) reads as shares of 1. The points'
+    // dashpot_mass_kg is not read: the step and the stable bound make the masses from the bodies
+    // and the shares (point_dashpot_masses_kg).
     const std::vector<double> share =
         g.has("stiffness_share") ? g.doubles("stiffness_share", count) : std::vector<double>(n, 1.0);
     std::vector<ContactPoint3d> out(n);
@@ -194,7 +198,7 @@ void read_domain(const StateGroup& g, World3d& w) {
 void write_world_3d(StateGroup& root, const World3d& w) {
     root.set("dt_s", w.dt_s);
     write_bodies(root.create_group("bodies3d"), w);
-    write_contacts(root.create_group("contacts3d"), w.contacts);
+    write_contacts(root.create_group("contacts3d"), w);
     write_ledger(root.create_group("energy"), w.ledger);
     write_stability(root.create_group("stability3d"), w.stability);
     write_domain(root.create_group("domain3d"), w.domain);
