@@ -148,13 +148,6 @@ struct FourCorners {
     return face;
 }
 
-// The first form of a face of 4 corners, for the passes.
-void write_four_corners(const PosedPolyhedron& inc, std::uint32_t inc_face, std::uint32_t ref_face,
-                        const FourCorners& face, BoxFaceClip3d& clip) {
-    for (std::size_t k = 0; k < 4; ++k)
-        clip.buffers[0][k] = incident_corner(inc, inc_face, ref_face, k, face.u_m[k], face.v_m[k], face.w_m[k]);
-}
-
 // The crossing of the polygon's side from here (u, v, w) to next with a side plane, here's height
 // dh and next's dn on either side of the slack: one formula for both clips, so that they agree to
 // the bit.
@@ -171,13 +164,16 @@ void set_crossing(const FaceCorner& here, const FaceCorner& next, double dh, dou
     set_crossing(here.u_m, here.v_m, here.w_m, next.u_m, next.v_m, next.w_m, dh, dn, c);
 }
 
-// The Sutherland-Hodgman clip of the loaded face (clip.buffers[0], count corners), side by side.
+// The Sutherland-Hodgman clip of the polygon in clip.buffers[from_buffer] (count corners), side by
+// side from side first_side on: the whole clip of the loaded face from side 0 and buffer 0, or the
+// rest of it after the one pass's cut (buffer 1, the sides after the cut's).
 bool clip_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, std::uint32_t inc_face,
-                    const RectangleInFrame& rectangle, std::size_t count, BoxFaceClip3d& clip) {
+                    const RectangleInFrame& rectangle, std::size_t count, BoxFaceClip3d& clip,
+                    std::size_t first_side = 0, std::size_t from_buffer = 0) {
     const auto& ref_corners = ref.box->face_corners[ref_face];
-    FaceCorner* here_polygon = clip.buffers[0].data();
-    FaceCorner* next_polygon = clip.buffers[1].data();
-    for (std::size_t k = 0; k < 4 && count > 0; ++k) {
+    FaceCorner* here_polygon = clip.buffers[from_buffer].data();
+    FaceCorner* next_polygon = clip.buffers[1 - from_buffer].data();
+    for (std::size_t k = first_side; k < 4 && count > 0; ++k) {
         const std::size_t k_next = (k + 1) % 4;
         const RectangleSide& side = rectangle.sides[k];
         const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.box->face_edges[ref_face][k]);
@@ -229,54 +225,67 @@ bool clip_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face, std::uin
     return true;
 }
 
-// The clip in one pass, where it gives the passes' polygon to the bit: when at most one side
-// cuts the face (has a corner beyond its slack). The sides before it then skip, as the passes do
-// (the same heights, the same test); the cut is the passes' own cut of the incident face's
-// corners (the same formula on the same heights); the sides after it skip only if the cut's new
-// corners are inside them, which is decided without computing their heights there: a new corner
-// lies on a side of the face between two of its corners, to round-off (a few 1e-16 of the largest
-// coordinate), so if every corner is inside those sides by half their slack and that half exceeds
-// 1e-12 of the coordinates, so is every new corner. The polygon is written once, with its keys,
-// where it ends: buffers[0] when no side cuts, buffers[1] when one does. Returns false, clip
-// untouched but for its frame, when it cannot say: the passes then decide (a cut by two sides, a
-// corner within half a slack of a side that does not cut).
-bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
-                      std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
-                      BoxFaceClip3d& clip) {
-    constexpr std::size_t count = 4;
-    // A corner's height over a side, sign (coordinate - bound), rounds monotonically with the
-    // coordinate, so the face's highest corner over a side is its least or greatest coordinate
-    // along the side's axis, to the bit: one height a side says whether the side cuts.
+// Which sides cut the face of 4 corners (have a corner beyond their slack), and the highest
+// corner's height over each. A corner's height over a side, sign (coordinate - bound), rounds
+// monotonically with the coordinate, so the face's highest corner over a side is its least or
+// greatest coordinate along the side's axis, to the bit: one height a side says whether the side
+// cuts, as the passes' test of every corner would.
+struct SideCuts {
+    double highest_m[4];  ///< [m] the highest corner's height over each side
+    double reach_m;       ///< [m] the largest |u| or |v| of the face's corners
+    unsigned cutting;     ///< bit k: side k cuts
+};
+
+SideCuts side_cuts(const RectangleInFrame& rectangle, const FourCorners& face) {
     // Taken pairwise (two independent halves, then one): only the heights' comparisons read them,
     // which a zero's sign, all that the order could change, does not affect.
     const auto least = [](const double* x) { return std::min(std::min(x[0], x[1]), std::min(x[2], x[3])); };
     const auto greatest = [](const double* x) { return std::max(std::max(x[0], x[1]), std::max(x[2], x[3])); };
     const double least_m[2] = {least(face.u_m), least(face.v_m)};
     const double greatest_m[2] = {greatest(face.u_m), greatest(face.v_m)};
-    double highest_m[4];  // [m] the highest corner's height over each side
-    unsigned cutting_sides = 0;
+    SideCuts cuts;
+    cuts.cutting = 0;
     for (std::size_t k = 0; k < 4; ++k) {
         const RectangleSide& side = rectangle.sides[k];
         const double extreme_m = side.sign > 0.0 ? greatest_m[side.axis] : least_m[side.axis];
-        highest_m[k] = side.sign * (extreme_m - side.bound_m);
-        cutting_sides |= static_cast<unsigned>(!(highest_m[k] <= side.slack_m)) << k;
+        cuts.highest_m[k] = side.sign * (extreme_m - side.bound_m);
+        cuts.cutting |= static_cast<unsigned>(!(cuts.highest_m[k] <= side.slack_m)) << k;
     }
-    if (cutting_sides == 0) {  // every side skips: the face as it is
-        FaceCorner* polygon = clip.buffers[0].data();
-        for (std::size_t i = 0; i < count; ++i)
-            polygon[i] = incident_corner(inc, inc_face, ref_face, i, face.u_m[i], face.v_m[i], face.w_m[i]);
-        clip.count = count;
-        clip.corners = polygon;
-        return true;
-    }
-    if ((cutting_sides & (cutting_sides - 1)) != 0) return false;  // two sides or more cut
-    const std::size_t k = static_cast<std::size_t>(std::countr_zero(cutting_sides));
-    const double reach_m = std::max(std::max(-least_m[0], greatest_m[0]), std::max(-least_m[1], greatest_m[1]));
+    cuts.reach_m = std::max(std::max(-least_m[0], greatest_m[0]), std::max(-least_m[1], greatest_m[1]));
+    return cuts;
+}
+
+// Whether the sides after side k skip once k has cut, decided without the cut corners' heights: a
+// cut corner lies on a side of the face between two of its corners, to round-off (a few 1e-16 of
+// the largest coordinate), so if every corner is inside those sides by half their slack and that
+// half exceeds 1e-12 of the coordinates, so is every cut corner.
+bool later_sides_skip(const RectangleInFrame& rectangle, const SideCuts& cuts, std::size_t k) {
     for (std::size_t j = k + 1; j < 4; ++j) {
         const double half_slack_m = 0.5 * rectangle.sides[j].slack_m;
-        if (!(highest_m[j] <= half_slack_m && 1e-12 * (std::abs(reach_m) + std::abs(rectangle.sides[j].bound_m)) < half_slack_m))
+        if (!(cuts.highest_m[j] <= half_slack_m &&
+              1e-12 * (std::abs(cuts.reach_m) + std::abs(rectangle.sides[j].bound_m)) < half_slack_m))
             return false;
     }
+    return true;
+}
+
+// The face as it is, no side cutting: its corners with their keys in buffers[0].
+void keep_four_corners(const PosedPolyhedron& inc, std::uint32_t inc_face, std::uint32_t ref_face,
+                       const FourCorners& face, BoxFaceClip3d& clip) {
+    FaceCorner* polygon = clip.buffers[0].data();
+    for (std::size_t i = 0; i < 4; ++i)
+        polygon[i] = incident_corner(inc, inc_face, ref_face, i, face.u_m[i], face.v_m[i], face.w_m[i]);
+    clip.count = 4;
+    clip.corners = polygon;
+}
+
+// The face of 4 corners cut by side k alone, as the passes cut it when the sides before k skip (the
+// same heights, the same formula, the same keys: none of the face's own corners lies on a reference
+// side), written once with its keys into buffers[1].
+void cut_four_corners(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                      std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
+                      std::size_t k, BoxFaceClip3d& clip) {
+    constexpr std::size_t count = 4;
     // The incident face's corner and edge numbers read once, into locals: the polygon's stores
     // could otherwise be taken for writes to the lists' entries, which would then be read again.
     std::uint32_t corner_ids[count], edge_ids[count];
@@ -289,7 +298,6 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     const double* along = side.axis == 0 ? face.u_m : face.v_m;
     double heights[count];
     for (std::size_t i = 0; i < count; ++i) heights[i] = side.sign * (along[i] - side.bound_m);
-    // The one cut, as the passes make it on the face's own corners (none lies on a reference side).
     const std::uint32_t ref_edge = feature_3d(FeatureKind3d::edge, ref.box->face_edges[ref_face][k]);
     FaceCorner* cut = clip.buffers[1].data();
     std::size_t clipped = 0;
@@ -315,17 +323,45 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     }
     clip.count = clipped;
     clip.corners = cut;
+}
+
+// The clip in one pass, where it gives the passes' polygon to the bit: when no side cuts the face,
+// or one side does and the sides after it skip (later_sides_skip). The sides before the cut skip
+// as the passes do (side_cuts). The polygon is written once, with its keys, where it ends:
+// buffers[0] when no side cuts, buffers[1] when one does. Returns false, clip untouched but for its
+// frame, when it cannot say (a cut by two sides, a corner within half a slack of a later side).
+bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
+                      std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
+                      BoxFaceClip3d& clip) {
+    const SideCuts cuts = side_cuts(rectangle, face);
+    if (cuts.cutting == 0) {
+        keep_four_corners(inc, inc_face, ref_face, face, clip);
+        return true;
+    }
+    const std::size_t k = static_cast<std::size_t>(std::countr_zero(cuts.cutting));
+    if ((cuts.cutting & (cuts.cutting - 1)) != 0 || !later_sides_skip(rectangle, cuts, k)) return false;
+    cut_four_corners(ref, ref_face, inc, inc_face, rectangle, face, k, clip);
     return true;
 }
 
-// A box's face of 4 corners, loaded: the one pass where it can decide, the passes otherwise.
+// A box's face of 4 corners, loaded: the one pass's cut by the first side that cuts, then, where
+// the one pass cannot say that the later sides skip, the passes from the next side on. The passes'
+// polygon to the bit: their sides before the first cutting side skip and their cut by it is the
+// one pass's. Why: on a shaken wall half the bed joints are cut by two sides (a brick shifted out of
+// plane over the one below); the passes made again the cut the one pass had just decided.
 [[gnu::always_inline]] inline bool clip_four_corners(const PosedPolyhedron& ref, std::uint32_t ref_face,
                                                      const PosedPolyhedron& inc, std::uint32_t inc_face,
                                                      const RectangleInFrame& rectangle, const FourCorners& face,
                                                      BoxFaceClip3d& clip) {
-    if (clip_in_one_pass(ref, ref_face, inc, inc_face, rectangle, face, clip)) return true;
-    write_four_corners(inc, inc_face, ref_face, face, clip);
-    return clip_by_passes(ref, ref_face, inc_face, rectangle, 4, clip);
+    const SideCuts cuts = side_cuts(rectangle, face);
+    if (cuts.cutting == 0) {
+        keep_four_corners(inc, inc_face, ref_face, face, clip);
+        return true;
+    }
+    const std::size_t k = static_cast<std::size_t>(std::countr_zero(cuts.cutting));
+    cut_four_corners(ref, ref_face, inc, inc_face, rectangle, face, k, clip);
+    if ((cuts.cutting & (cuts.cutting - 1)) == 0 && later_sides_skip(rectangle, cuts, k)) return true;
+    return clip_by_passes(ref, ref_face, inc_face, rectangle, clip.count, clip, k + 1, 1);
 }
 
 }  // namespace
