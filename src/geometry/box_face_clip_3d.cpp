@@ -325,11 +325,18 @@ void cut_four_corners(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     clip.corners = cut;
 }
 
+// Whether side k's cut is the whole clip: k is the only side that cuts and the sides after it skip
+// (later_sides_skip).
+bool cut_is_whole_clip(const RectangleInFrame& rectangle, const SideCuts& cuts, std::size_t k) {
+    return (cuts.cutting & (cuts.cutting - 1)) == 0 && later_sides_skip(rectangle, cuts, k);
+}
+
 // The clip in one pass, where it gives the passes' polygon to the bit: when no side cuts the face,
-// or one side does and the sides after it skip (later_sides_skip). The sides before the cut skip
-// as the passes do (side_cuts). The polygon is written once, with its keys, where it ends:
-// buffers[0] when no side cuts, buffers[1] when one does. Returns false, clip untouched but for its
-// frame, when it cannot say (a cut by two sides, a corner within half a slack of a later side).
+// or side k's cut is the whole clip (cut_is_whole_clip). The sides before the cut skip as the
+// passes do (side_cuts). The polygon is written once, with its keys, where it ends: buffers[0]
+// when no side cuts, buffers[1] when one does. Returns false, clip untouched but for its frame,
+// when it cannot say: two sides or more cut, or a later side holds a corner within half its slack
+// or its half slack is within 1e-12 of the coordinates.
 bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                       std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
                       BoxFaceClip3d& clip) {
@@ -339,16 +346,16 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
         return true;
     }
     const std::size_t k = static_cast<std::size_t>(std::countr_zero(cuts.cutting));
-    if ((cuts.cutting & (cuts.cutting - 1)) != 0 || !later_sides_skip(rectangle, cuts, k)) return false;
+    if (!cut_is_whole_clip(rectangle, cuts, k)) return false;
     cut_four_corners(ref, ref_face, inc, inc_face, rectangle, face, k, clip);
     return true;
 }
 
 // A box's face of 4 corners, loaded: the one pass's cut by the first side that cuts, then, where
-// the one pass cannot say that the later sides skip, the passes from the next side on. The passes'
-// polygon to the bit: their sides before the first cutting side skip and their cut by it is the
-// one pass's. Why: on a shaken wall half the bed joints are cut by two sides (a brick shifted out of
-// plane over the one below); the passes made again the cut the one pass had just decided.
+// that cut is not the whole clip, the passes from the next side on. The passes' polygon to the bit:
+// their sides before the first cutting side skip and their cut by it is the one pass's. Why: on a
+// shaken wall half the bed joints are cut by two sides (a brick shifted out of plane over the one
+// below), and the passes made again from the face the cut the one pass had just decided.
 [[gnu::always_inline]] inline bool clip_four_corners(const PosedPolyhedron& ref, std::uint32_t ref_face,
                                                      const PosedPolyhedron& inc, std::uint32_t inc_face,
                                                      const RectangleInFrame& rectangle, const FourCorners& face,
@@ -360,7 +367,7 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     }
     const std::size_t k = static_cast<std::size_t>(std::countr_zero(cuts.cutting));
     cut_four_corners(ref, ref_face, inc, inc_face, rectangle, face, k, clip);
-    if ((cuts.cutting & (cuts.cutting - 1)) == 0 && later_sides_skip(rectangle, cuts, k)) return true;
+    if (cut_is_whole_clip(rectangle, cuts, k)) return true;
     return clip_by_passes(ref, ref_face, inc_face, rectangle, clip.count, clip, k + 1, 1);
 }
 
@@ -374,7 +381,7 @@ bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, 
                             std::uint32_t inc_face, BoxFaceClip3d& clip) {
     RectangleInFrame rectangle;
     load_frame(ref, ref_face, clip, rectangle);
-    if (incident_corner_count(inc, inc_face) == 4)  // a box's face: the one pass tried on its coordinates
+    if (incident_corner_count(inc, inc_face) == 4)  // a box's face: the first cut in one pass
         return clip_four_corners(ref, ref_face, inc, inc_face, rectangle, load_four_corners(inc, inc_face, clip), clip);
     const std::size_t count = load_incident_face(ref_face, inc, inc_face, clip);
     return clip_by_passes(ref, ref_face, inc_face, rectangle, count, clip);

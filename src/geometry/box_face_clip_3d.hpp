@@ -51,9 +51,10 @@ struct BoxFaceClip3d {
 };
 
 /// clip_by_box_face's polygon, left in the reference face's frame (clip.corners). Returns false
-/// as clip_by_box_face does. It is the one-pass clip where that one can decide (at most one side
-/// cuts the face, docs/performance.md "Branch clip1p"), the passes otherwise: the passes' polygon
-/// to the bit either way (unit/test_box_face_clip_3d checks it).
+/// as clip_by_box_face does. A box's face of 4 corners is cut in one pass by the first side that
+/// cuts it (docs/performance.md "Branch clip1p"), the passes going on from the next side where that
+/// cut is not the whole clip ("Sixteenth session"); any other face takes the passes: the passes'
+/// polygon to the bit either way (unit/test_box_face_clip_3d checks it).
 bool clip_box_face_in_frame(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                             std::uint32_t inc_face, BoxFaceClip3d& clip);
 
