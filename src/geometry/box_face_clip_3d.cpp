@@ -325,6 +325,14 @@ void cut_four_corners(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
     clip.corners = cut;
 }
 
+// Where no side cuts the face: the face kept as it is (keep_four_corners), and true.
+bool kept_uncut(const PosedPolyhedron& inc, std::uint32_t inc_face, std::uint32_t ref_face, const FourCorners& face,
+                const SideCuts& cuts, BoxFaceClip3d& clip) {
+    if (cuts.cutting != 0) return false;
+    keep_four_corners(inc, inc_face, ref_face, face, clip);
+    return true;
+}
+
 // Whether side k's cut is the whole clip: k is the only side that cuts and the sides after it skip
 // (later_sides_skip).
 bool cut_is_whole_clip(const RectangleInFrame& rectangle, const SideCuts& cuts, std::size_t k) {
@@ -341,10 +349,7 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
                       std::uint32_t inc_face, const RectangleInFrame& rectangle, const FourCorners& face,
                       BoxFaceClip3d& clip) {
     const SideCuts cuts = side_cuts(rectangle, face);
-    if (cuts.cutting == 0) {
-        keep_four_corners(inc, inc_face, ref_face, face, clip);
-        return true;
-    }
+    if (kept_uncut(inc, inc_face, ref_face, face, cuts, clip)) return true;
     const std::size_t k = static_cast<std::size_t>(std::countr_zero(cuts.cutting));
     if (!cut_is_whole_clip(rectangle, cuts, k)) return false;
     cut_four_corners(ref, ref_face, inc, inc_face, rectangle, face, k, clip);
@@ -361,10 +366,7 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
                                                      const RectangleInFrame& rectangle, const FourCorners& face,
                                                      BoxFaceClip3d& clip) {
     const SideCuts cuts = side_cuts(rectangle, face);
-    if (cuts.cutting == 0) {
-        keep_four_corners(inc, inc_face, ref_face, face, clip);
-        return true;
-    }
+    if (kept_uncut(inc, inc_face, ref_face, face, cuts, clip)) return true;
     const std::size_t k = static_cast<std::size_t>(std::countr_zero(cuts.cutting));
     cut_four_corners(ref, ref_face, inc, inc_face, rectangle, face, k, clip);
     if (cut_is_whole_clip(rectangle, cuts, k)) return true;
