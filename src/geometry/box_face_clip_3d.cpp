@@ -360,7 +360,8 @@ bool clip_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const 
 // that cut is not the whole clip, the passes from the next side on. The passes' polygon to the bit:
 // their sides before the first cutting side skip and their cut by it is the one pass's. Why: on a
 // shaken wall half the bed joints are cut by two sides (a brick shifted out of plane over the one
-// below), and the passes made again from the face the cut the one pass had just decided.
+// below), and the passes started again from the face, making once more the cut the one pass had
+// just decided.
 [[gnu::always_inline]] inline bool clip_four_corners(const PosedPolyhedron& ref, std::uint32_t ref_face,
                                                      const PosedPolyhedron& inc, std::uint32_t inc_face,
                                                      const RectangleInFrame& rectangle, const FourCorners& face,

@@ -71,7 +71,8 @@ bool clip_box_face_by_passes(const PosedPolyhedron& ref, std::uint32_t ref_face,
                              std::uint32_t inc_face, BoxFaceClip3d& clip);
 
 /// The one-pass clip alone: false when it cannot decide as the passes would (two sides or more
-/// cut the face, or a corner lies within half a slack of a side that does not cut it).
+/// cut the face, or a side after the cutting one holds a corner within half its slack of it or
+/// has a half slack within 1e-12 of the coordinates).
 bool clip_box_face_in_one_pass(const PosedPolyhedron& ref, std::uint32_t ref_face, const PosedPolyhedron& inc,
                                std::uint32_t inc_face, BoxFaceClip3d& clip);
 
