@@ -38,9 +38,13 @@ all=(fuzz_scenario fuzz_overrides fuzz_time_series_csv fuzz_record_auto fuzz_rec
 
 if [ "$build" = 1 ]; then
   # Only what the harnesses need: the library and fuzz/ (no tests, benchmarks, MPI or OpenMP),
-  # at -O1 with line tables only: the reports keep their file and line, and the build, which
-  # `make test` waits for, takes a fifth less.
-  cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only -DNDEBUG" \
+  # with line tables only, so that the reports keep their file and line. At -O1 for a long run,
+  # where inputs a second count; at -O0 for the smoke, whose build `make test` waits for and whose
+  # inputs are mostly the seeds: the build takes half the CPU (docs/checks.md), each input about
+  # three times as long.
+  opt=-O1
+  [ "$smoke" = 1 ] && opt=-O0
+  cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="$opt -gline-tables-only -DNDEBUG" \
     -DCMAKE_CXX_COMPILER=clang++-14 \
     -DBLOCKDEM_FUZZ=ON -DBLOCKDEM_BUILD_TESTS=OFF -DBLOCKDEM_BUILD_BENCHMARKS=OFF -DBLOCKDEM_WITH_MPI=OFF \
     -DCMAKE_DISABLE_FIND_PACKAGE_OpenMP=ON >/dev/null

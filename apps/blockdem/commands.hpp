@@ -29,7 +29,11 @@ struct ExitStatus {
 /// n > 1 in a build without OpenMP.
 void set_step_threads(int n);
 
-/// Writes out_dir/report.html and out_dir/figures/ through tools/blockdem_report.py (cmd_report.cpp).
-void write_report(const std::string& out_dir, bool animation_file = true);
+/// The figure files a report writes by default: the page's PNGs and an SVG copy for papers.
+inline constexpr const char* default_figure_formats = "png,svg";
+/// Writes out_dir/report.html and out_dir/figures/ through tools/blockdem_report.py (cmd_report.cpp),
+/// the figures in formats (comma-separated: png, svg, pdf; png always).
+void write_report(const std::string& out_dir, bool animation_file = true,
+                  const std::string& formats = default_figure_formats);
 
 }  // namespace blockdem::cli

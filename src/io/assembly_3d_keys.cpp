@@ -34,7 +34,7 @@ std::string face_direction(Vec3 n) {
     return n.z < 0.0 ? "bottom" : "top";
 }
 
-Polyhedron read_region(TableReader& t) {
+Polyhedron read_region_3d(TableReader& t) {
     const bool as_box = t.has("region_min") || t.has("region_max");
     if (as_box && t.has("region_vertices"))
         t.fail("region_vertices", "give either region_min and region_max (a box) or region_vertices, not both");
@@ -98,7 +98,7 @@ std::set<std::size_t> read_fixed_faces(TableReader& t, const Polyhedron& region)
 }  // namespace
 
 GeneratedAssembly3d read_rock_mass_3d(TableReader& t, const std::string& name) {
-    const Polyhedron region = read_region(t);
+    const Polyhedron region = read_region_3d(t);
     const std::vector<TableReader> set_tables = t.table_array("joint_sets");
     if (set_tables.empty()) t.fail("joint_sets", "a rock mass needs at least one [[assemblies.joint_sets]]");
     std::vector<Plane3d> planes;

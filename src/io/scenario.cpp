@@ -27,7 +27,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // gravity = g (a magnitude [m/s^2], acting in -y) or [gx, gy] [m/s^2]; tilt_deg turns it as a
 // table tilted counter-clockwise (+x end raised) would, tilt_rate_deg_s from t = 0 on.

@@ -10,13 +10,11 @@
 #include "io/output_keys.hpp"
 #include "io/sensor_keys.hpp"
 #include "io/toml_reader.hpp"
+#include "motion/records/acceleration_units.hpp"  // standard_gravity_m_s2, for the keys given in g
 #include "world/model.hpp"
 #include "world/world.hpp"
 
 namespace blockdem {
-
-/// Standard gravity [m/s^2], used to convert accelerations given in g.
-inline constexpr double standard_gravity_m_s2 = 9.80665;
 
 /// Parses a TOML file. Throws InputError for a missing file or a syntax error (with its line).
 toml::table load_toml_file(const std::filesystem::path& file);

@@ -24,7 +24,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 // A prism's sides: the hull search is O(n^4) in the vertices (docs/3d.md): 64 sides take 25 ms,
 // 128 about 0.4 s a body.
 constexpr std::int64_t max_sides = 128;

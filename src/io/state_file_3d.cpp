@@ -113,7 +113,7 @@ void read_bodies(const StateFile& file, const std::filesystem::path& scenario, W
     }
 }
 
-std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_count) {
+std::vector<ContactPoint3d> read_contacts_3d(const StateGroup& g, std::size_t body_count) {
     const std::vector<std::uint32_t> a = g.indices("body_a");
     const std::size_t n = a.size();
     const auto count = static_cast<std::int64_t>(n);
@@ -150,7 +150,7 @@ std::vector<ContactPoint3d> read_contacts(const StateGroup& g, std::size_t body_
     return out;
 }
 
-StabilityWatch3d read_stability(const StateGroup& g) {
+StabilityWatch3d read_stability_3d(const StateGroup& g) {
     StabilityWatch3d s;
     s.least_limit_s = g.number("least_limit_s");
     s.least_limit_body = g.text("least_limit_body");
@@ -219,7 +219,7 @@ void check_dimension(const StateFile& file, const std::filesystem::path& scenari
 void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
     check_dimension(file, scenario);
     read_bodies(file, scenario, w);
-    replace_contacts(w, read_contacts(file.root().open_group("contacts3d"), w.bodies.size()));
+    replace_contacts(w, read_contacts_3d(file.root().open_group("contacts3d"), w.bodies.size()));
     // As settling ends (world/settling_3d.cpp): the velocities at the state's time become the
     // initial ones, and the first step is the half step from an initial state.
     for (std::size_t i = 0; i < w.bodies.size(); ++i)
@@ -240,9 +240,9 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
         throw InputError(where, fmt::format("the state was saved with dt = {:.17g} s, scenario {} gives dt = {:.17g} s: a "
                                             "restart keeps the time step",
                                             dt_s, scenario.string(), w.dt_s));
-    replace_contacts(w, read_contacts(root.open_group("contacts3d"), w.bodies.size()));
+    replace_contacts(w, read_contacts_3d(root.open_group("contacts3d"), w.bodies.size()));
     w.ledger = read_ledger(root.open_group("energy"));
-    w.stability = read_stability(root.open_group("stability3d"));
+    w.stability = read_stability_3d(root.open_group("stability3d"));
     if (root.has("domain3d")) read_domain(root.open_group("domain3d"), w);  // (files of earlier versions lack it)
     // A caller's loads as saved; none without the group (a run without loads, or an earlier file),
     // also when w had some (a world going back to a checkpoint).

@@ -6,7 +6,7 @@
 namespace blockdem {
 
 namespace {
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 }
 
 double damping_ratio_paper(double e) {

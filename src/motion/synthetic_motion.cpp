@@ -14,7 +14,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Standard normal numbers from a generator whose output the C++ standard fixes.
 class GaussianNoise {

@@ -10,7 +10,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // Sine from rest at tau = 0: a = A sin(w tau + phi); v, u are its exact integrals.
 MotionSample sine_from_rest(double amplitude, double period, double phase, double tau) {

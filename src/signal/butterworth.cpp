@@ -8,7 +8,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // The analog section 1 / ((s/w)^2 + 2 zeta (s/w) + 1) through the bilinear transform, with
 // K = w T / 2 = tan(pi fc T) (the prewarped cut-off). The numerator, K^2 (1 + 1/z)^2 / a0, is

@@ -1,4 +1,5 @@
 #include "sweep/mpi_cases.hpp"
+#include "sweep/results_table.hpp"
 
 #include <cstdlib>
 #include <mutex>
@@ -25,8 +26,6 @@ namespace {
 
 constexpr int tag_request = 1;  // worker -> rank 0: the previous case's row ("" at first)
 constexpr int tag_assign = 2;   // rank 0 -> worker: a case id, or -1 to stop
-
-std::int64_t leading_id(const std::string& row) { return std::stoll(row.substr(0, row.find(','))); }
 
 // One request from any worker, if there is one: its source and the row it carries.
 bool poll_request(int& source, std::string& row) {

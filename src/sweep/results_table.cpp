@@ -54,10 +54,6 @@ std::string read_whole(const std::filesystem::path& file) {
     return s.str();
 }
 
-std::int64_t leading_id(const std::string& row) {
-    return std::stoll(row.substr(0, row.find(',')));
-}
-
 std::string body_fields(const std::optional<BodyOutcome>& o) {
     // (The empty fields of a case without results: one comma fewer than columns.)
     if (!o) return std::string(std::max<std::size_t>(body_columns.size(), 1) - 1, ',');
@@ -69,6 +65,8 @@ std::string body_fields(const std::optional<BodyOutcome>& o) {
 }
 
 }  // namespace
+
+std::int64_t leading_id(const std::string& row) { return std::stoll(row.substr(0, row.find(','))); }
 
 std::vector<std::string> result_columns(const SweepPlan& plan, const std::vector<std::string>& body_names) {
     std::vector<std::string> columns{"case_id"};

@@ -52,6 +52,9 @@ private:
     std::map<std::int64_t, std::string> rows_;
 };
 
+/// The case id a results row starts with (its first field).
+std::int64_t leading_id(const std::string& row);
+
 /// Writes header + rows sorted by case id to file, through a temporary file and a rename.
 void write_sorted_results(const std::filesystem::path& file, const std::string& header,
                           const std::map<std::int64_t, std::string>& rows);

@@ -42,7 +42,7 @@ void parallel_for(std::ptrdiff_t n, Body body) {
     // several times one that is apart, and those cluster: the lower rows of a wall), so equal
     // static halves would leave one thread waiting. Which thread runs an item never changes
     // what it computes (rule 1).
-    const std::ptrdiff_t run = run_length(n);
+    [[maybe_unused]] const std::ptrdiff_t run = run_length(n);  // (unread in a build without OpenMP)
 #pragma omp parallel for schedule(dynamic, run)
     for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
 }

@@ -29,7 +29,7 @@ node "$source_dir/tests/cli/report_browser/check_report.mjs" "$work/sliding/repo
 
 # No driven table here (a fixed one) and a pentagon: the other code paths of the report.
 "$blockdem" run "$source_dir/tests/cli/data/two_drops.toml" --out "$work/drops" -q --set output.vtk=false >/dev/null
-"$blockdem" report "$work/drops" --no-animation >/dev/null
+"$blockdem" report "$work/drops" --no-animation --formats png >/dev/null
 grep -q "time step: dt" "$work/drops/report.html" || { echo "FAIL: no derived parameters in the report"; exit 1; }
 node "$source_dir/tests/cli/report_browser/check_report.mjs" "$work/drops/report.html" "$shots/two_drops" 4
 echo "report checks passed; screenshots in $shots"

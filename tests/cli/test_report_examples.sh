@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `blockdem report` works on every example (run for 0.1 s), 3-D ones included, also where the table and the blocks
 # are not in history.csv (assembly blocks are recorded only on request), and says what it
-# cannot plot: on stderr and in report.html.
+# cannot plot: on stderr and in report.html. The figures in PNG alone (--formats png: the SVG
+# copies were half of this test's time); the formats option itself is checked at the end.
 # Usage: test_report_examples.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$(realpath "$1"); src=$(realpath "$2")
@@ -21,7 +22,7 @@ for scenario in "$src"/examples/*/*.toml; do
   fi
   # A 3-D run: its own report (outcome table, figures drawn from the VTK frames; docs/3d.md).
   if grep -q "^dimension *= *3" "$scenario"; then
-    "$bin" report "$out" > "$out.report.log" 2>&1 || { fail "$name: report of a 3-D run: $(tail -3 "$out.report.log")"; continue; }
+    "$bin" report "$out" --formats png > "$out.report.log" 2>&1 || { fail "$name: report of a 3-D run: $(tail -3 "$out.report.log")"; continue; }
     grep -q "<table id='outcome-table'>" "$out/report.html" || fail "$name: report.html has no outcome table"
     for stem in snapshots response table_motion energy; do
       [ -s "$out/figures/$stem.png" ] || fail "$name: no figures/$stem.png"
@@ -32,7 +33,7 @@ for scenario in "$src"/examples/*/*.toml; do
   # The animation file only for the rock slope (nothing of it can be drawn): the slow part.
   extra=--no-animation
   [ "$name" = assemblies-rock_slope ] && extra=
-  "$bin" report "$out" $extra > "$out.report.log" 2>&1 || { fail "$name: report: $(tail -3 "$out.report.log")"; continue; }
+  "$bin" report "$out" --formats png $extra > "$out.report.log" 2>&1 || { fail "$name: report: $(tail -3 "$out.report.log")"; continue; }
   [ -s "$out/report.html" ] || fail "$name: no report.html"
 done
 
@@ -50,9 +51,21 @@ warn=$tmp/warned
   --set simulation.max_energy_error=1e9 > "$warn.run.log" 2>&1 || fail "warned run: $(tail -2 "$warn.run.log")"
 grep -q "WARNING: dt = 0.005 s was above the stable limit of the live contacts" "$warn.run.log" || fail "no warning on stderr"
 grep -q '"dt_above_live_limit": true' "$warn/summary.json" || fail "summary.json does not flag the live limit"
-"$bin" report "$warn" --no-animation > /dev/null 2>&1 || fail "report of the warned run"
+"$bin" report "$warn" --no-animation --formats png > /dev/null 2>&1 || fail "report of the warned run"
 grep -q "id='warnings'" "$warn/report.html" || fail "report.html does not show the warnings"
 grep -q "id='warnings'" "$tmp/paper-sliding/report.html" && fail "sliding: a clean run shows a warnings section"
+
+# --formats: the PNGs and only the formats asked for; an unknown one refused, naming it.
+sliding=$tmp/paper-sliding
+ls "$sliding"/figures/*.svg >/dev/null 2>&1 && fail "--formats png wrote SVG files"
+rm -rf "$sliding/figures"
+"$bin" report "$sliding" --no-animation --formats pdf > "$sliding.pdf.log" 2>&1 || fail "--formats pdf: $(tail -2 "$sliding.pdf.log")"
+for stem in acceleration energy snapshots; do
+  [ -s "$sliding/figures/$stem.png" ] && [ -s "$sliding/figures/$stem.pdf" ] || fail "--formats pdf: no $stem.png and $stem.pdf"
+  [ -e "$sliding/figures/$stem.svg" ] && fail "--formats pdf wrote $stem.svg"
+done
+if "$bin" report "$sliding" --formats png,eps > "$sliding.eps.log" 2>&1; then fail "--formats eps was taken"; fi
+grep -q "unknown figure format 'eps'" "$sliding.eps.log" || fail "--formats eps: no message naming it: $(tail -2 "$sliding.eps.log")"
 
 [ $failures -eq 0 ] && echo "the report works on every example"
 exit $failures

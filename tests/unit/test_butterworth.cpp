@@ -18,7 +18,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double sample_rate_hz = 10000.0;   // dt = 1e-4 s, as in the paper's cases
 
 TEST(Butterworth, MagnitudeIsTheWarpedIdealAndTheIdealAtLowFrequency) {

@@ -49,7 +49,7 @@ thickness = 0.5
 bonded = true
 )";
 
-std::string error_of(const std::string& name, const std::string& text) {
+std::string joint_key_error_of(const std::string& name, const std::string& text) {
     return testing::scenario_error("joint-keys", name, text);
 }
 
@@ -80,21 +80,21 @@ TEST(JointKeys, FrictionAngleGivesMu) {
 
 TEST(JointKeys, JointPropertyWithPerPointStiffnessIsRefusedNamingTheKey) {
     const std::string text = replace_once(bonded_block, "stiffness = \"per_length\"\n", "");
-    const std::string e = error_of("per-point", replace_once(text, "bonded = true\n", ""));
+    const std::string e = joint_key_error_of("per-point", replace_once(text, "bonded = true\n", ""));
     expect_contains(e, "contact.cohesion");
     expect_contains(e, "needs per-length stiffness, but per-point is set");
 }
 
 TEST(JointKeys, NegativeStrengthsAreRefused) {
-    expect_contains(error_of("neg-c", replace_once(bonded_block, "cohesion = 2.0e5", "cohesion = -1.0")),
+    expect_contains(joint_key_error_of("neg-c", replace_once(bonded_block, "cohesion = 2.0e5", "cohesion = -1.0")),
                     "contact.cohesion");
-    const std::string e = error_of("neg-t", replace_once(bonded_block, "tensile_strength = 1.0e5", "tensile_strength = -1.0"));
+    const std::string e = joint_key_error_of("neg-t", replace_once(bonded_block, "tensile_strength = 1.0e5", "tensile_strength = -1.0"));
     expect_contains(e, "contact.tensile_strength");
     expect_contains(e, "must be >= 0");
 }
 
 TEST(JointKeys, ResidualAbovePeakFrictionIsRefused) {
-    const std::string e = error_of("residual", replace_once(bonded_block, "residual_mu = 0.5", "residual_mu = 0.7"));
+    const std::string e = joint_key_error_of("residual", replace_once(bonded_block, "residual_mu = 0.5", "residual_mu = 0.7"));
     expect_contains(e, "contact.residual_mu");
     expect_contains(e, "above the peak friction");
 }
@@ -103,7 +103,7 @@ TEST(JointKeys, BondsNeedPerLengthStiffness) {
     std::string text = replace_once(bonded_block, "stiffness = \"per_length\"\n", "");
     for (const char* key : {"cohesion = 2.0e5\n", "tensile_strength = 1.0e5\n", "residual_mu = 0.5\n"})
         text = replace_once(text, key, "");
-    const std::string e = error_of("bonded-per-point", text);
+    const std::string e = joint_key_error_of("bonded-per-point", text);
     expect_contains(e, "contact.stiffness");
     expect_contains(e, "body 'base' is bonded");
 }
@@ -115,7 +115,7 @@ materials = ["default", "default"]
 stiffness = "per_point"
 kn = 1.0e8
 )";
-    const std::string e = error_of("pair-basis", replace_once(pairs, "bonded = true\n", ""));
+    const std::string e = joint_key_error_of("pair-basis", replace_once(pairs, "bonded = true\n", ""));
     expect_contains(e, "contact.pairs[0].stiffness");
     expect_contains(e, "per-point stiffness given where per-length is set");
 }
@@ -126,16 +126,16 @@ TEST(JointKeys, DilationAngleIsReadAndBounded) {
     EXPECT_DOUBLE_EQ(s.world.contact.at(0, 0).tan_dilation, std::tan(20.0 * std::acos(-1.0) / 180.0));
     EXPECT_TRUE(s.world.contact.any_dilation);
     // Out of [0, 45), above the (residual) friction angle 26.6 deg, or on a per-point contact: refused.
-    const std::string too_large = error_of("dilation-45", replace_once(good, "dilation_deg = 20.0", "dilation_deg = 45.0"));
+    const std::string too_large = joint_key_error_of("dilation-45", replace_once(good, "dilation_deg = 20.0", "dilation_deg = 45.0"));
     expect_contains(too_large, "contact.dilation_deg");
     expect_contains(too_large, "[0, 45)");
-    const std::string above = error_of("dilation-phi", replace_once(good, "dilation_deg = 20.0", "dilation_deg = 30.0"));
+    const std::string above = joint_key_error_of("dilation-phi", replace_once(good, "dilation_deg = 20.0", "dilation_deg = 30.0"));
     expect_contains(above, "contact.dilation_deg");
     expect_contains(above, "above the joint's friction angle");
     const std::string per_point = replace_once(replace_once(replace_once(good, "stiffness = \"per_length\"\n", ""),
                                                             "cohesion = 2.0e5\ntensile_strength = 1.0e5\nresidual_mu = 0.5\n", ""),
                                                "kn = 1.0e10", "kn = 1.0e8");
-    const std::string on_points = error_of("dilation-per-point", per_point);
+    const std::string on_points = joint_key_error_of("dilation-per-point", per_point);
     expect_contains(on_points, "contact.dilation_deg");
     expect_contains(on_points, "per_length");
 }
@@ -146,14 +146,14 @@ TEST(JointKeys, ZeroDilationSlipIsReadAndBounded) {
     const LoadedScenario s = load_scenario(testing::write_scenario("joint-keys", "zero-slip", good), {});
     EXPECT_DOUBLE_EQ(s.world.contact.at(0, 0).dilation_zero_slip_m, 0.002);
     const std::string negative =
-        error_of("zero-slip-negative", replace_once(good, "dilation_zero_slip = 0.002", "dilation_zero_slip = -0.002"));
+        joint_key_error_of("zero-slip-negative", replace_once(good, "dilation_zero_slip = 0.002", "dilation_zero_slip = -0.002"));
     expect_contains(negative, "contact.dilation_zero_slip");
     expect_contains(negative, ">= 0");
     const std::string per_point = replace_once(replace_once(replace_once(replace_once(good, "stiffness = \"per_length\"\n", ""),
                                                                          "cohesion = 2.0e5\ntensile_strength = 1.0e5\nresidual_mu = 0.5\n", ""),
                                                             "dilation_deg = 20.0\n", ""),
                                                "kn = 1.0e10", "kn = 1.0e8");
-    const std::string on_points = error_of("zero-slip-per-point", per_point);
+    const std::string on_points = joint_key_error_of("zero-slip-per-point", per_point);
     expect_contains(on_points, "contact.dilation_zero_slip");
     expect_contains(on_points, "per_length");
 }

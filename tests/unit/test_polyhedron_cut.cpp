@@ -16,7 +16,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 void expect_near(Vec3 a, Vec3 b, double tolerance) {
     EXPECT_NEAR(a.x, b.x, tolerance);

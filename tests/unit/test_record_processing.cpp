@@ -13,7 +13,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 std::vector<double> ramp(std::size_t n) {
     std::vector<double> a(n);

@@ -6,42 +6,25 @@
 
 #include "io/input_error.hpp"
 #include "motion/records/ground_motion_record.hpp"
+#include "record_failure_helpers.hpp"
 #include "records_test_support.hpp"
 
 namespace blockdem {
 namespace {
 
-struct Failure {
-    std::string file;
-    int line = 0;
-    std::string message;
-};
-
-Failure read_failure(const std::string& name, const std::string& content, RecordReadOptions options = {}) {
-    const auto path = testing::write_temp_file(name, content);
-    try {
-        read_ground_motion_record(path, options);
-    } catch (const InputError& e) {
-        return {e.where().file, e.where().line, e.what()};
-    }
-    ADD_FAILURE() << name << ": no InputError";
-    return {};
-}
+using testing::at2_header;
+using testing::read_failure;
+using testing::RecordFailure;
 
 void expect_failure(const std::string& name, const std::string& content, int line, const std::string& words,
                     RecordReadOptions options = {}) {
-    const Failure f = read_failure(name, content, options);
+    const RecordFailure f = read_failure(name, content, options);
     EXPECT_NE(f.file.find(name), std::string::npos) << f.message;
     EXPECT_EQ(f.line, line) << f.message;
     EXPECT_NE(f.message.find(words), std::string::npos) << f.message;
     if (line > 0)
         EXPECT_NE(f.message.find(name + ":" + std::to_string(line)), std::string::npos) << "message names file:line: " << f.message;
 }
-
-const std::string at2_header =
-    "PEER NGA STRONG MOTION DATABASE RECORD\n"
-    "Bad Event, 1/2/2003, Bad Station, 90\n"
-    "ACCELERATION TIME SERIES IN UNITS OF G\n";
 
 TEST(MalformedAt2, Truncated) {
     expect_failure("truncated.AT2", at2_header + "NPTS=   8, DT= .0100 SEC\n .1E-01 .2E-01 .3E-01 .4E-01 .5E-01\n .6E-01\n", 6,
@@ -54,7 +37,7 @@ TEST(MalformedAt2, MoreValuesThanNpts) {
 }
 
 TEST(MalformedAt2, NonNumericValue) {
-    const Failure f = read_failure("non_numeric.AT2", at2_header + "NPTS=   6, DT= .0100 SEC\n .1E-01 .2E-01 .3E-01\n .4E-01 O.5E-01 .6E-01\n");
+    const RecordFailure f = read_failure("non_numeric.AT2", at2_header + "NPTS=   6, DT= .0100 SEC\n .1E-01 .2E-01 .3E-01\n .4E-01 O.5E-01 .6E-01\n");
     EXPECT_EQ(f.line, 6);
     EXPECT_NE(f.message.find("'O.5E-01' is not a number (value 5 of 6)"), std::string::npos) << f.message;
     EXPECT_NE(f.message.find("non_numeric.AT2:6:9"), std::string::npos) << "column of the bad value: " << f.message;
@@ -121,7 +104,7 @@ TEST(MalformedCosmos, TruncatedValues) {
     std::ifstream in(testing::record_samples_dir() / "cosmos_sample.V2");
     std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     content = content.substr(0, content.find("   1.100000e+00"));  // drop the last data line and the trailer
-    const Failure f = read_failure("cut.V2", content);
+    const RecordFailure f = read_failure("cut.V2", content);
     EXPECT_NE(f.message.find("after 10 of the 12 values"), std::string::npos) << f.message;
     EXPECT_GT(f.line, 40);
 }
@@ -131,7 +114,7 @@ TEST(MalformedCosmos, UnknownUnits) {
     std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const auto at = content.find("units=cm/sec2");
     content.replace(at, 13, "units=in/sec2");
-    const Failure f = read_failure("inches.V2", content);
+    const RecordFailure f = read_failure("inches.V2", content);
     EXPECT_NE(f.message.find("unknown acceleration units 'in/sec2'"), std::string::npos) << f.message;
     EXPECT_EQ(f.line, 49);  // the data header line
 }

@@ -12,7 +12,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 
 // u'' = -a_g(t) - 2 zeta w u' - w^2 u, a_g linear between samples and 0 after the record; run
 // until one period after the end (the spectrum's definition). RK4, h <= min(dt / 20, T / 400).

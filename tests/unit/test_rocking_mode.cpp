@@ -20,7 +20,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double period = 0.5;     // [s]
 constexpr double threshold = 1e-3; // [rad]
 

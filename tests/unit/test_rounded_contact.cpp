@@ -10,19 +10,13 @@
 #include "geometry/polygon.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "geometry/rounded_contact.hpp"
+#include "polygon_test_support.hpp"
 
 namespace blockdem {
 namespace {
 
-struct Poly {
-    std::vector<Vec2> v, n;
-    explicit Poly(std::vector<Vec2> vertices) : v(std::move(vertices)) {
-        for (std::size_t i = 0; i < v.size(); ++i) n.push_back(edge_normal(v[i], v[(i + 1) % v.size()]));
-    }
-    PolygonView view() const { return {v.data(), n.data(), static_cast<std::uint32_t>(v.size())}; }
-};
-
-Poly box(double w, double h, Vec2 c, double rot = 0.0) { return Poly(rectangle_vertices(w, h, c, rot)); }
+using testing::box;
+using testing::Poly;
 
 constexpr double r = 0.01;  // [m]
 

@@ -16,7 +16,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 const std::filesystem::path records_dir = std::filesystem::path(BLOCKDEM_SOURCE_DIR) / "tests/data/records";
 
 // A scenario with a fixed slab (top at z = 0) and the given text after it.

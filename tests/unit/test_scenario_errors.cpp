@@ -14,10 +14,8 @@ namespace blockdem {
 namespace {
 
 using testing::expect_contains;
+using testing::replace_once;
 using testing::write_scenario;
-std::string replace(const std::string& text, const std::string& from, const std::string& to) {
-    return testing::replace_once(text, from, to);
-}
 std::filesystem::path write(const std::string& name, const std::string& text) { return write_scenario("test", name, text); }
 
 const char* valid = R"(
@@ -67,28 +65,28 @@ TEST(ScenarioErrors, ValidScenarioLoads) {
 }
 
 TEST(ScenarioErrors, MisspelledKeySuggestsTheNearest) {
-    const std::string m = error_of("typo", replace(valid, "mu = 0.3", "muu = 0.3"));
+    const std::string m = error_of("typo", replace_once(valid, "mu = 0.3", "muu = 0.3"));
     expect_contains(m, "blockdem-test-typo.toml:");
     expect_contains(m, "key 'contact.muu'");
     expect_contains(m, "did you mean 'mu'?");
 }
 
 TEST(ScenarioErrors, MisspelledBodyKeyNamesTheBodyAndLine) {
-    const std::string m = error_of("bodytypo", replace(valid, "width = 0.5", "widht = 0.5"));
+    const std::string m = error_of("bodytypo", replace_once(valid, "width = 0.5", "widht = 0.5"));
     expect_contains(m, "key 'bodies.block.widht'");
     expect_contains(m, "did you mean 'width'?");
     expect_contains(m, ".toml:23:");
 }
 
 TEST(ScenarioErrors, MissingRequiredKey) {
-    expect_contains(error_of("missing", replace(valid, "duration = 1.0", "")), "missing required key 'simulation.duration'");
+    expect_contains(error_of("missing", replace_once(valid, "duration = 1.0", "")), "missing required key 'simulation.duration'");
 }
 
 TEST(ScenarioErrors, WrongTypeAndUnits) {
-    expect_contains(error_of("type", replace(valid, "kn = 2.0e4", "kn = \"stiff\"")),
+    expect_contains(error_of("type", replace_once(valid, "kn = 2.0e4", "kn = \"stiff\"")),
                     "key 'contact.kn': must be a number, got the string \"stiff\"");
-    expect_contains(error_of("unit", replace(valid, "unit = \"gal\"", "unit = \"gall\"")), "did you mean 'gal'?");
-    expect_contains(error_of("negative", replace(valid, "mass = 1.0", "mass = -1.0")), "must be > 0");
+    expect_contains(error_of("unit", replace_once(valid, "unit = \"gal\"", "unit = \"gall\"")), "did you mean 'gal'?");
+    expect_contains(error_of("negative", replace_once(valid, "mass = 1.0", "mass = -1.0")), "must be > 0");
 }
 
 TEST(ScenarioErrors, OverlapLimitIsAFractionOfAWidth) {
@@ -103,26 +101,26 @@ TEST(ScenarioErrors, ConcaveAcceptedSelfIntersectingAndTouchingPolygonsRefused) 
     // touches itself is not.
     const std::string arrow = R"(shape = "polygon"
 vertices = [[0.0, 0.0], [0.5, 0.0], [0.5, 0.3], [0.25, 0.1], [0.0, 0.3]])";
-    std::string text = replace(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", arrow);
+    std::string text = replace_once(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", arrow);
     EXPECT_EQ(error_of("concave", text), "");
     const std::string bowtie = R"(shape = "polygon"
 vertices = [[0.0, 0.0], [0.5, 0.3], [0.5, 0.0], [0.0, 0.3]])";
-    text = replace(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", bowtie);
+    text = replace_once(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", bowtie);
     expect_contains(error_of("bowtie", text), "key 'bodies.block.vertices': the edge from vertex");
     expect_contains(error_of("bowtie", text), "the outline crosses itself");
     const std::string touching = R"(shape = "polygon"
 vertices = [[0.0, 0.0], [0.5, 0.0], [0.5, 0.3], [0.25, 0.0], [0.0, 0.3]])";
-    text = replace(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", touching);
+    text = replace_once(valid, "shape = \"rectangle\"\nwidth = 0.5\nheight = 0.2\ncenter = [0.0, 0.1]", touching);
     expect_contains(error_of("touching", text), "vertex 3 (0.25, 0) m lies on the edge from vertex 0 to vertex 1");
 }
 
 TEST(ScenarioErrors, OverlapAtStartNamesBothBodies) {
-    expect_contains(error_of("overlap", replace(valid, "center = [0.0, 0.1]", "center = [0.0, 0.09]")),
+    expect_contains(error_of("overlap", replace_once(valid, "center = [0.0, 0.1]", "center = [0.0, 0.09]")),
                     "bodies 'table' and 'block' overlap at the start by 0.01 m");
 }
 
 TEST(ScenarioErrors, TimeStepAboveStableLimitIsRefusedWithTheLimit) {
-    const std::string m = error_of("dt", replace(valid, "dt = 1.0e-4", "dt = 0.01"));
+    const std::string m = error_of("dt", replace_once(valid, "dt = 1.0e-4", "dt = 0.01"));
     expect_contains(m, "time step dt = 0.01 s is above the stable limit 0.00243 s");
     expect_contains(m, "body 'block'");
 }
@@ -144,11 +142,11 @@ TEST(ScenarioErrors, MissingFileAndSyntaxError) {
     } catch (const InputError& e) {
         expect_contains(e.what(), "/nonexistent/scenario.toml: cannot open the file");
     }
-    expect_contains(error_of("syntax", replace(valid, "mu = 0.3", "mu = = 0.3")), "TOML syntax error");
+    expect_contains(error_of("syntax", replace_once(valid, "mu = 0.3", "mu = = 0.3")), "TOML syntax error");
 }
 
 TEST(ScenarioErrors, DuplicateNamesAndBadMaterialPairs) {
-    expect_contains(error_of("dup", replace(valid, "name = \"block\"", "name = \"table\"")), "two bodies are named 'table'");
+    expect_contains(error_of("dup", replace_once(valid, "name = \"block\"", "name = \"table\"")), "two bodies are named 'table'");
     const std::string pairs = std::string(valid) + "\n[[contact.pairs]]\nmaterials = [\"default\", \"stone\"]\nmu = 0.5\n";
     expect_contains(error_of("pairs", pairs), "no body uses material 'stone'");
 }
@@ -160,8 +158,8 @@ namespace blockdem {
 namespace {
 
 TEST(ScenarioErrors, PairsInheritTheRestitutionMeaning) {
-    std::string text = replace(valid, "e = 0.4", "e = 0.4\ne_meaning = \"rebound\"");
-    text = replace(text, "name = \"block\"", "name = \"block\"\nmaterial = \"stone\"");
+    std::string text = replace_once(valid, "e = 0.4", "e = 0.4\ne_meaning = \"rebound\"");
+    text = replace_once(text, "name = \"block\"", "name = \"block\"\nmaterial = \"stone\"");
     text += "\n[[contact.pairs]]\nmaterials = [\"default\", \"stone\"]\ne = 0.4\n";
     const LoadedScenario s = load_scenario(write("inherit", text), {});
     const double rebound_h = damping_ratio_rebound(0.4);
@@ -170,9 +168,9 @@ TEST(ScenarioErrors, PairsInheritTheRestitutionMeaning) {
 }
 
 TEST(ScenarioErrors, BodyNamesAndGravity) {
-    expect_contains(error_of("name", replace(valid, "name = \"block\"", "name = \"block, left\"")), "is not a valid body name");
-    expect_contains(error_of("emptyname", replace(valid, "name = \"block\"", "name = \"\"")), "is not a valid body name");
-    expect_contains(error_of("gravity", replace(valid, "dt = 1.0e-4", "dt = 1.0e-4\ngravity = -9.81")), "must be >= 0");
+    expect_contains(error_of("name", replace_once(valid, "name = \"block\"", "name = \"block, left\"")), "is not a valid body name");
+    expect_contains(error_of("emptyname", replace_once(valid, "name = \"block\"", "name = \"\"")), "is not a valid body name");
+    expect_contains(error_of("gravity", replace_once(valid, "dt = 1.0e-4", "dt = 1.0e-4\ngravity = -9.81")), "must be >= 0");
 }
 
 TEST(ScenarioErrors, OverriddenValuesAreReportedByKeyWithoutAFakeLine) {

@@ -15,6 +15,7 @@ namespace blockdem {
 namespace {
 
 using testing::expect_contains;
+using testing::replace_once;
 
 // Two 0.6 x 0.9 m drums on a 0.2 m high driven table, all of stone.
 const char* column = R"(
@@ -55,15 +56,11 @@ density = 2600.0
 material = "stone"
 )";
 
-std::string replace(const std::string& text, const std::string& from, const std::string& to) {
-    return testing::replace_once(text, from, to);
-}
-
 LoadedScenario load(const std::string& name, const std::string& text, const std::vector<std::string>& sets = {}) {
     return load_scenario(testing::write_scenario("material", name, text), sets);
 }
 
-std::string error_of(const std::string& name, const std::string& text, const std::vector<std::string>& sets = {}) {
+std::string material_error_of(const std::string& name, const std::string& text, const std::vector<std::string>& sets = {}) {
     return testing::scenario_error("material", name, text, sets);
 }
 
@@ -129,55 +126,55 @@ kn = 5.0e8
 }
 
 TEST(ScenarioMaterial, ModulusAndExplicitStiffnessTogetherRefused) {
-    const std::string m = error_of("both", replace(column, "mu = 0.7", "mu = 0.7\nkn = 1.0e9"));
+    const std::string m = material_error_of("both", replace_once(column, "mu = 0.7", "mu = 0.7\nkn = 1.0e9"));
     expect_contains(m, "contact.kn");
     expect_contains(m, "give either young_modulus");
     expect_contains(m, "not both");
-    expect_contains(error_of("both_ks", replace(column, "mu = 0.7", "mu = 0.7\nks = 1.0e9")), "contact.ks");
+    expect_contains(material_error_of("both_ks", replace_once(column, "mu = 0.7", "mu = 0.7\nks = 1.0e9")), "contact.ks");
     // The same through --set: an override cannot silently win either.
-    expect_contains(error_of("both_set", column, {"contact.kn=1e9"}), "contact.kn");
+    expect_contains(material_error_of("both_set", column, {"contact.kn=1e9"}), "contact.kn");
 }
 
 TEST(ScenarioMaterial, BadModulusAndPoissonRatioRefused) {
     for (const char* bad : {"0.0", "-30.0e9"})
-        expect_contains(error_of("bad_e", replace(column, "young_modulus = 30.0e9", std::string("young_modulus = ") + bad)),
+        expect_contains(material_error_of("bad_e", replace_once(column, "young_modulus = 30.0e9", std::string("young_modulus = ") + bad)),
                         "contact.young_modulus': must be > 0");
     for (const char* bad : {"0.5", "-1.0", "0.7", "-2.0"})
-        expect_contains(error_of("bad_nu", replace(column, "poisson_ratio = 0.2", std::string("poisson_ratio = ") + bad)),
+        expect_contains(material_error_of("bad_nu", replace_once(column, "poisson_ratio = 0.2", std::string("poisson_ratio = ") + bad)),
                         "contact.poisson_ratio': must be in (-1, 0.5)");
-    EXPECT_EQ(error_of("good_nu", replace(column, "poisson_ratio = 0.2", "poisson_ratio = -0.5")), "");
+    EXPECT_EQ(material_error_of("good_nu", replace_once(column, "poisson_ratio = 0.2", "poisson_ratio = -0.5")), "");
 }
 
 TEST(ScenarioMaterial, UnknownRuleRefused) {
-    const std::string m = error_of("rule", replace(column, "mu = 0.7", "mu = 0.7\nstiffness_rule = \"block_deformabilty\""));
+    const std::string m = material_error_of("rule", replace_once(column, "mu = 0.7", "mu = 0.7\nstiffness_rule = \"block_deformabilty\""));
     expect_contains(m, "contact.stiffness_rule");
     expect_contains(m, "did you mean 'block_deformability'");
-    EXPECT_EQ(error_of("rule_ok", replace(column, "mu = 0.7", "mu = 0.7\nstiffness_rule = \"block_deformability\"")), "");
+    EXPECT_EQ(material_error_of("rule_ok", replace_once(column, "mu = 0.7", "mu = 0.7\nstiffness_rule = \"block_deformability\"")), "");
 }
 
 TEST(ScenarioMaterial, MisplacedMaterialKeysRefused) {
     // Neither a modulus nor kn and ks.
-    expect_contains(error_of("none", replace(column, "young_modulus = 30.0e9\npoisson_ratio = 0.2\n", "")),
+    expect_contains(material_error_of("none", replace_once(column, "young_modulus = 30.0e9\npoisson_ratio = 0.2\n", "")),
                     "missing the contact stiffness");
     // poisson_ratio or a rule without a modulus.
-    const std::string explicit_k = replace(column, "young_modulus = 30.0e9\npoisson_ratio = 0.2\n", "kn = 1e9\nks = 1e9\n");
-    EXPECT_EQ(error_of("explicit", explicit_k), "");
-    expect_contains(error_of("nu_alone", replace(explicit_k, "mu = 0.7", "mu = 0.7\npoisson_ratio = 0.2")),
+    const std::string explicit_k = replace_once(column, "young_modulus = 30.0e9\npoisson_ratio = 0.2\n", "kn = 1e9\nks = 1e9\n");
+    EXPECT_EQ(material_error_of("explicit", explicit_k), "");
+    expect_contains(material_error_of("nu_alone", replace_once(explicit_k, "mu = 0.7", "mu = 0.7\npoisson_ratio = 0.2")),
                     "contact.poisson_ratio': needs young_modulus");
-    expect_contains(error_of("rule_alone", replace(explicit_k, "mu = 0.7", "mu = 0.7\nstiffness_rule = \"block_deformability\"")),
+    expect_contains(material_error_of("rule_alone", replace_once(explicit_k, "mu = 0.7", "mu = 0.7\nstiffness_rule = \"block_deformability\"")),
                     "contact.stiffness_rule': needs young_modulus");
     // A material's modulus without the rule, or for a material no body uses.
-    expect_contains(error_of("mat_explicit", explicit_k + "\n[contact.materials.plate]\nyoung_modulus = 2e11\n"),
+    expect_contains(material_error_of("mat_explicit", explicit_k + "\n[contact.materials.plate]\nyoung_modulus = 2e11\n"),
                     "contact.materials");
-    expect_contains(error_of("mat_unknown", std::string(column) + "\n[contact.materials.plat]\nyoung_modulus = 2e11\n"),
+    expect_contains(material_error_of("mat_unknown", std::string(column) + "\n[contact.materials.plat]\nyoung_modulus = 2e11\n"),
                     "did you mean 'plate'");
-    expect_contains(error_of("mat_bad", std::string(column) + "\n[contact.materials.plate]\nyoung_modulus = -1.0\n"),
+    expect_contains(material_error_of("mat_bad", std::string(column) + "\n[contact.materials.plate]\nyoung_modulus = -1.0\n"),
                     "contact.materials.plate.young_modulus': must be > 0");
-    expect_contains(error_of("mat_typo", std::string(column) + "\n[contact.materials.plate]\nyoungs_modulus = 2e11\n"),
+    expect_contains(material_error_of("mat_typo", std::string(column) + "\n[contact.materials.plate]\nyoungs_modulus = 2e11\n"),
                     "did you mean 'young_modulus'");
     // A modulus is a material's, not a pair's.
-    expect_contains(error_of("pair_e", std::string(column) +
-                                           "\n[[contact.pairs]]\nmaterials = [\"stone\", \"plate\"]\nyoung_modulus = 2e11\n"),
+    expect_contains(material_error_of("pair_e", std::string(column) +
+                                                    "\n[[contact.pairs]]\nmaterials = [\"stone\", \"plate\"]\nyoung_modulus = 2e11\n"),
                     "is a property of one material");
 }
 

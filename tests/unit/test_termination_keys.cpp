@@ -13,7 +13,7 @@
 namespace blockdem {
 namespace {
 
-std::string scenario(const std::string& contact_extra, const std::string& pairs = "") {
+std::string termination_scenario(const std::string& contact_extra, const std::string& pairs = "") {
     return R"(
 [simulation]
 duration = 0.1
@@ -49,7 +49,7 @@ LoadedScenario load(const std::string& name, const std::string& text) {
 }
 
 TEST(TerminationKeys, DefaultIsNoTension) {
-    const LoadedScenario s = load("default", scenario(""));
+    const LoadedScenario s = load("default", termination_scenario(""));
     EXPECT_EQ(s.world.contact.at(0, 1).termination, ContactTermination::no_tension);
     EXPECT_NEAR(s.world.contact.at(0, 1).h_n, damping_ratio_paper(0.4), 1e-15);
 }
@@ -57,7 +57,7 @@ TEST(TerminationKeys, DefaultIsNoTension) {
 TEST(TerminationKeys, ZeroOverlapMakesBothMeaningsThePapers) {
     // With the paper's termination the contact really rebounds with the paper's e, so asking
     // for a rebound of 0.4 gives the paper's h_n, not the no-tension one.
-    const LoadedScenario s = load("zero", scenario("termination = \"zero_overlap\"\ne_meaning = \"rebound\""));
+    const LoadedScenario s = load("zero", termination_scenario("termination = \"zero_overlap\"\ne_meaning = \"rebound\""));
     const ContactParameters& p = s.world.contact.at(0, 1);
     EXPECT_EQ(p.termination, ContactTermination::zero_overlap);
     EXPECT_NEAR(p.h_n, damping_ratio_paper(0.4), 1e-15);
@@ -66,20 +66,20 @@ TEST(TerminationKeys, ZeroOverlapMakesBothMeaningsThePapers) {
 
 TEST(TerminationKeys, PairsInheritAndOverride) {
     const std::string pair = "\n[[contact.pairs]]\nmaterials = [\"default\", \"steel\"]\ntermination = \"no_tension\"\n";
-    const LoadedScenario s = load("pairs", scenario("termination = \"zero_overlap\"", pair));
+    const LoadedScenario s = load("pairs", termination_scenario("termination = \"zero_overlap\"", pair));
     const std::uint32_t steel = s.world.contact.id("steel");
     const std::uint32_t other = s.world.contact.id("default");
     EXPECT_EQ(s.world.contact.at(other, steel).termination, ContactTermination::no_tension);
     EXPECT_EQ(s.world.contact.at(steel, other).termination, ContactTermination::no_tension);
     EXPECT_EQ(s.world.contact.at(steel, steel).termination, ContactTermination::zero_overlap);
     const std::string inherit = "\n[[contact.pairs]]\nmaterials = [\"default\", \"steel\"]\nmu = 0.5\n";
-    EXPECT_EQ(load("inherit", scenario("termination = \"zero_overlap\"", inherit)).world.contact.at(other, steel).termination,
+    EXPECT_EQ(load("inherit", termination_scenario("termination = \"zero_overlap\"", inherit)).world.contact.at(other, steel).termination,
               ContactTermination::zero_overlap);
 }
 
 TEST(TerminationKeys, UnknownRuleNamesTheKey) {
     try {
-        load("bad", scenario("termination = \"sticky\""));
+        load("bad", termination_scenario("termination = \"sticky\""));
         FAIL() << "a bad termination loaded";
     } catch (const InputError& e) {
         const std::string message = e.what();

@@ -39,7 +39,7 @@ namespace blockdem {
 namespace {
 
 constexpr int sides = 32;
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double g = 9.81;             // [m/s^2]
 constexpr double density = 2500.0;     // [kg/m^3]
 

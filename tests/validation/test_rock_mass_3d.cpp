@@ -20,7 +20,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double pi = std::numbers::pi;
+using std::numbers::pi;
 constexpr double g = 9.81;
 constexpr double mu = 0.5;
 
