@@ -21,10 +21,6 @@ namespace py = pybind11;
 namespace blockdem::python {
 namespace {
 
-void require_positive(double value, const char* name) {
-    if (!(value > 0.0) || !std::isfinite(value)) throw py::value_error(fmt::format("{} must be > 0, got {}", name, value));
-}
-
 py::dict calibrate(double width_m, double height_m, double kn, std::optional<double> ks, double mu, double h_n,
                    double h_s, const std::string& termination, double density, std::optional<double> release_tilt,
                    double target, double tolerance, const std::string& parameter, int impacts) {

@@ -43,10 +43,6 @@ KinematicsRows kinematics_rows(const Array& overlap_m, const Array& normal_speed
     return rows;
 }
 
-void require_positive(double value, const char* name) {
-    if (!(value > 0.0)) throw py::value_error(fmt::format("{} must be > 0, got {}", name, value));
-}
-
 /// The law's output at every step, as numpy arrays keyed like ContactForce's fields.
 struct ForceRows {
     std::vector<double> normal_n, shear_n, shear_spring_n, normal_dashpot_n, shear_dashpot_n;

@@ -33,6 +33,7 @@
 #include "laws/restitution.hpp"
 #include "scenes/assemblies.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/interface_monitor.hpp"
 #include "world/parallel.hpp"
 #include "world/response_monitor.hpp"
@@ -40,8 +41,8 @@
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double deg = std::numbers::pi / 180.0;
+using validation::g;
+using validation::deg;
 
 struct Rect {
     double x0, y0, x1, y1;  ///< [m]

@@ -34,13 +34,14 @@
 #include "analysis/housner_rocking.hpp"
 #include "laws/restitution.hpp"
 #include "support/table_run_3d.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
 constexpr int sides = 32;
 using std::numbers::pi;
-constexpr double g = 9.81;             // [m/s^2]
+using validation::g;
 constexpr double density = 2500.0;     // [kg/m^3]
 
 // The base polygon of n corners, circumradius r, its first corner at angle `first_corner_rad` from +x.
@@ -60,15 +61,15 @@ std::vector<Vec3> turned_prism(const std::vector<Vec2>& polygon, double height_m
     return vertices;
 }
 
-struct Peaks {
+struct PrismPeaks {
     std::vector<double> theta;    // [rad] the release angle, then the signed peaks between impacts
     std::vector<double> impacts;  // [s] times theta crosses zero
 };
 
 // Peaks before the first impact are left out: the prism is placed at zero overlap and settles
 // onto its corner springs in the first steps, which the search would take for a peak.
-Peaks peaks_of(const std::vector<double>& t, const std::vector<double>& theta) {
-    Peaks p;
+PrismPeaks prism_peaks_of(const std::vector<double>& t, const std::vector<double>& theta) {
+    PrismPeaks p;
     p.theta.push_back(theta[0]);
     for (std::size_t i = 1; i + 1 < theta.size(); ++i) {
         if (!p.impacts.empty() && std::abs(theta[i]) > 1e-4 && std::abs(theta[i]) >= std::abs(theta[i - 1]) &&
@@ -84,7 +85,7 @@ Peaks peaks_of(const std::vector<double>& t, const std::vector<double>& theta) {
 struct PlanarRocking {
     HousnerBlock block;      // the equivalent block, with the prism's own I_0 / (m R^2)
     double theta0_rad = 0.0;
-    Peaks dem;
+    PrismPeaks dem;
     double out_of_plane_rad = 0.0;
     double balance_error = 0.0;
 };
@@ -123,13 +124,13 @@ PlanarRocking rock(int n) {
         out.out_of_plane_rad = std::max({out.out_of_plane_rad, std::abs(turned.x), std::abs(turned.z)});
         run.step();
     }
-    out.dem = peaks_of(t, theta);
+    out.dem = prism_peaks_of(t, theta);
     out.balance_error = run.ledger.balance_error();
     return out;
 }
 
 // The coefficient of restitution between successive peaks, from the energy at each.
-double impact_ratio(double alpha, double before, double after) {
+double prism_impact_ratio(double alpha, double before, double after) {
     return std::sqrt((std::cos(alpha - std::abs(after)) - std::cos(alpha)) / (std::cos(alpha - std::abs(before)) - std::cos(alpha)));
 }
 
@@ -141,7 +142,7 @@ std::vector<double> housner_peaks(const HousnerBlock& block, double theta0) {
         t.push_back(p.time_s);
         theta.push_back(p.theta_rad);
     }
-    return peaks_of(t, theta).theta;
+    return prism_peaks_of(t, theta).theta;
 }
 
 // Housner's time from rest at theta to the impact: a quarter of that amplitude's cycle.
@@ -166,10 +167,10 @@ TEST(Cylinder3d, SquarePrismRocksAsHousnersBlock) {
     ASSERT_GE(r.dem.theta.size(), 6u);
     ASSERT_GE(ref.size(), 6u);
     for (std::size_t k = 0; k + 1 < 6; ++k)
-        EXPECT_NEAR(impact_ratio(alpha, r.dem.theta[k], r.dem.theta[k + 1]), r.block.housner_restitution(), 0.005);
+        EXPECT_NEAR(prism_impact_ratio(alpha, r.dem.theta[k], r.dem.theta[k + 1]), r.block.housner_restitution(), 0.005);
     for (std::size_t k = 1; k < 6; ++k) EXPECT_NEAR(r.dem.theta[k], ref[k], 0.02 * std::abs(ref[k])) << "peak " << k;
     std::printf("square prism: r %.4f (Housner %.4f), peak 5 %.5f rad (Housner %.5f)\n",
-                impact_ratio(alpha, r.dem.theta[0], r.dem.theta[1]), r.block.housner_restitution(), r.dem.theta[5], ref[5]);
+                prism_impact_ratio(alpha, r.dem.theta[0], r.dem.theta[1]), r.block.housner_restitution(), r.dem.theta[5], ref[5]);
 }
 
 // The 32-sided prism. Between impacts it follows Housner's equation with its own I_0: the first
@@ -210,10 +211,10 @@ TEST(Cylinder3d, PlanarRockingFollowsHousnersEquationWithItsOwnInertia) {
         std::printf("cylinder half-cycle %zu: DEM %.4f s, Housner from its peak %.4f s (%+.2f%%)\n", k, half, ref,
                     100.0 * (half - ref) / ref);
     }
-    const double r0 = impact_ratio(alpha, r.dem.theta[0], r.dem.theta[1]);
+    const double r0 = prism_impact_ratio(alpha, r.dem.theta[0], r.dem.theta[1]);
     double r_mean = 0.0;
     for (std::size_t k = 0; k + 1 < 6; ++k) {
-        const double rk = impact_ratio(alpha, r.dem.theta[k], r.dem.theta[k + 1]);
+        const double rk = prism_impact_ratio(alpha, r.dem.theta[k], r.dem.theta[k + 1]);
         EXPECT_GT(rk, e_housner) << "impact " << k;
         EXPECT_NEAR(rk, r0, 0.005) << "impact " << k;
         r_mean += rk / 5.0;

@@ -12,6 +12,7 @@
 #include "geometry/quaternion.hpp"
 #include "geometry/vec3.hpp"
 #include "scenes/brick_wall_3d.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/external_loads_3d.hpp"
 #include "world/step_3d.hpp"
 
@@ -22,15 +23,15 @@
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;          // [m/s^2]
+using validation::g;
 constexpr double mass_kg = 16.0;    // [kg] a 0.4 x 0.4 x 0.1 m box
-constexpr double mu = 0.5;
+constexpr double slab_mu = 0.5;     // the box's friction coefficient on the slab
 
 // A flat box (low, so that a push at its centroid slides it rather than tips it) resting on a
 // fixed slab, settled for 0.02 s.
 World3d box_on_slab() {
     World3d w;
-    w.contact = ContactParameters{.kn_N_m = 1e8, .ks_N_m = 1e8, .mu = mu, .h_n = 0.3, .h_s = 0.3};
+    w.contact = ContactParameters{.kn_N_m = 1e8, .ks_N_m = 1e8, .mu = slab_mu, .h_n = 0.3, .h_s = 0.3};
     w.dt_s = 2e-5;
     add_body(w, make_rigid_body_3d("slab", box_vertices({4.0, 4.0, 0.2}, {0.0, 0.0, -0.1}), 1000.0), BodyKind3d::fixed);
     add_body(w, make_rigid_body_3d("box", box_vertices({0.4, 0.4, 0.1}, {0.0, 0.0, 0.05}), mass_kg / 0.016),
@@ -41,7 +42,7 @@ World3d box_on_slab() {
 
 TEST(ExternalLoads3d, APushAboveFrictionAcceleratesTheBoxAtFMinusMuMgOverM) {
     World3d w = box_on_slab();
-    const double force_n = 1.5 * mu * mass_kg * g;
+    const double force_n = 1.5 * slab_mu * mass_kg * g;
     set_external_load(w, 1, {0.0, force_n, 0.0}, {});
     for (int i = 0; i < 1000; ++i) step_3d(w);  // the shear springs load up to the cap first
     const double t0_s = w.time_s;
@@ -50,7 +51,7 @@ TEST(ExternalLoads3d, APushAboveFrictionAcceleratesTheBoxAtFMinusMuMgOverM) {
     const double acceleration_m_s2 = (w.bodies[1].velocity_at_t_m_s.y - v0_m_s) / (w.time_s - t0_s);
     // Closed form; 0.5 %: the settling's ringing of the normal springs moves the normal force by
     // less (measured 1e-13 relative).
-    EXPECT_NEAR(acceleration_m_s2, (force_n - mu * mass_kg * g) / mass_kg, 5e-3 * (force_n / mass_kg - mu * g));
+    EXPECT_NEAR(acceleration_m_s2, (force_n - slab_mu * mass_kg * g) / mass_kg, 5e-3 * (force_n / mass_kg - slab_mu * g));
     EXPECT_NEAR(w.bodies[1].velocity_at_t_m_s.x, 0.0, 1e-9);
     EXPECT_GT(w.ledger.external_work_j, 0.0);
     EXPECT_LT(w.ledger.balance_error(), 1e-3);
@@ -59,7 +60,7 @@ TEST(ExternalLoads3d, APushAboveFrictionAcceleratesTheBoxAtFMinusMuMgOverM) {
 TEST(ExternalLoads3d, APushBelowFrictionLeavesTheBoxWhereItIs) {
     World3d w = box_on_slab();
     const Vec3 start_m = w.bodies[1].position_m;
-    set_external_load(w, 1, {0.3 * mu * mass_kg * g, 0.4 * mu * mass_kg * g, 0.0}, {});
+    set_external_load(w, 1, {0.3 * slab_mu * mass_kg * g, 0.4 * slab_mu * mass_kg * g, 0.0}, {});
     for (int i = 0; i < 5000; ++i) step_3d(w);
     // The shear springs' elastic give, F / (4 ks) ~ 1e-7 m, and nothing more.
     EXPECT_LT(length(w.bodies[1].position_m - start_m), 1e-6);
@@ -95,7 +96,7 @@ TEST(ExternalLoads3d, AHeldVelocityIsKeptAndHeldByTheFrictionForce) {
     for (int i = 0; i < 2500; ++i) step_3d(w);
     EXPECT_NEAR(length(w.bodies[1].velocity_m_s - Vec3{0.2, 0.0, 0.0}), 0.0, 1e-12);
     // Steady sliding: the holding force is mu m g along the motion (measured 1e-10 relative).
-    EXPECT_NEAR(w.external_loads.force_n[1].x, mu * mass_kg * g, 1e-6 * mu * mass_kg * g);
+    EXPECT_NEAR(w.external_loads.force_n[1].x, slab_mu * mass_kg * g, 1e-6 * slab_mu * mass_kg * g);
     // The jump to the held velocity leaves half a step's friction work unbooked, once (the ledger's
     // kinetic energy is at t, the jump at a half step): 1.6e-4 J of 0.8 J here.
     EXPECT_LT(w.ledger.balance_error(), 1e-3);

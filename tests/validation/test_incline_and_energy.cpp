@@ -18,14 +18,15 @@
 
 #include "analysis/rigid_plastic_sliding.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/settling.hpp"
 #include "world/simulation_error.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double deg = std::numbers::pi / 180.0;
+using validation::g;
+using validation::deg;
 
 struct InclineRun {
     double displacement_m;        ///< along the slope, downhill positive, at the end

@@ -15,11 +15,12 @@
 #include <numbers>
 
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double deg = std::numbers::pi / 180.0;
+using validation::deg;
 
 struct Slide {
     double slip_m = 0.0;

@@ -14,11 +14,12 @@
 #include "scenes/assemblies.hpp"
 #include "world/settling.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
+using validation::g;
 
 Model wall_at_rest(bool per_length) {
     scenes::WallSpec spec;

@@ -27,12 +27,13 @@
 #include <vector>
 
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double deg = std::numbers::pi / 180.0;
+using validation::g;
+using validation::deg;
 
 ContactParameters joint(double kn_pa_m, double ks_pa_m, double mu) {
     ContactParameters p;

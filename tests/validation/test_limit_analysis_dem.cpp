@@ -31,14 +31,15 @@
 #include "analysis/limit_analysis.hpp"
 #include "scenes/assemblies.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
 using testing::rectangle_body;
 
-constexpr double deg = std::numbers::pi / 180.0;
-constexpr double g = 9.81;
+using validation::deg;
+using validation::g;
 
 struct DemCollapse {
     double tilt_deg = NAN;                 ///< the table's tilt at the onset (NaN: none)

@@ -13,12 +13,13 @@
 
 #include "io/input_error.hpp"
 #include "io/scenario_3d.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/step_3d.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;  // [m/s^2]
+using validation::g;
 
 LoadedScenario3d dropped_beside_a_slab(const std::string& simulation_more = "") {
     const std::string text = R"(dimension = 3

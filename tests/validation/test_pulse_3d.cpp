@@ -22,12 +22,14 @@
 #include "analysis/housner_rocking.hpp"
 #include "laws/restitution.hpp"
 #include "support/table_run_3d.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double b = 0.2, h = 0.8, depth = 1.0, g = 9.81;
-constexpr double density = 1536.0;   // [kg/m^3] as the 2-D test
+using validation::g;
+constexpr double b = 0.2, h = 0.8, depth = 1.0;
+constexpr double pulse_density_kg_m3 = 1536.0;   // [kg/m^3] as the 2-D test
 constexpr double period_s = 1.0;     // [s] of the pulse
 constexpr double end_s = 5.0;        // [s] as the 2-D test
 constexpr double overturned_rad = 1.2;  // [rad] far past alpha = 0.245: the 2-D test's mark of overturning
@@ -53,7 +55,7 @@ struct PulseOutcome {
 PulseOutcome run_pulse(double amplitude_g, double azimuth_rad) {
     const Quaternion turn = from_rotation_vector({0.0, 0.0, azimuth_rad});
     const Vec3 direction{std::cos(azimuth_rad), std::sin(azimuth_rad), 0.0};
-    RigidBody3d box = make_rigid_body_3d("block", box_vertices({2 * b, depth, 2 * h}, {0.0, 0.0, h}, turn), density);
+    RigidBody3d box = make_rigid_body_3d("block", box_vertices({2 * b, depth, 2 * h}, {0.0, 0.0, h}, turn), pulse_density_kg_m3);
     const ContactParameters contact{
         .kn_N_m = 0.5e9 * depth, .ks_N_m = 0.5e9 * depth, .mu = 2.0, .h_n = damping_ratio_paper(0.2), .h_s = 1.0};
     testing::TableRun3d run = testing::table_run(std::move(box), contact);

@@ -16,15 +16,15 @@ using testing::contact;
 using testing::model_with;
 using testing::rectangle_body;
 
-constexpr double kn = 1.0e6;   // [N/m]
-constexpr double dt = 1.0e-6;  // [s]
+constexpr double restitution_kn_N_m = 1.0e6;  // [N/m]
+constexpr double restitution_dt_s = 1.0e-6;   // [s]
 
 // A block moving down at 1 m/s onto a fixed table; returns the measured rebound ratio of the
 // centroid's vertical velocity once all contacts have opened.
 double drop_rebound(double h_n, double tilt_rad, double mu) {
     Model m = model_with({rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0, -0.1}),
                           rectangle_body("block", BodyKind::dynamic, 0.5, 0.2, {0, 0.101 + 0.3 * std::abs(tilt_rad)}, tilt_rad)},
-                         contact(kn, mu, h_n, 0.0), dt, 0.0);
+                         contact(restitution_kn_N_m, mu, h_n, 0.0), restitution_dt_s, 0.0);
     m.bodies[1].velocity_m_s = {0.0, -1.0};
     World w = build_world(m);
     const std::uint32_t block = w.body_id("block");
@@ -64,7 +64,7 @@ TEST(RestitutionImpact, HeadOnEqualBlocksUseReducedMass) {
     for (double e : {0.3, 0.7}) {
         Model m = model_with({rectangle_body("left", BodyKind::dynamic, 0.2, 0.2, {-0.1005, 0}),
                               rectangle_body("right", BodyKind::dynamic, 0.2, 0.2, {0.1005, 0})},
-                             contact(kn, 0.0, damping_ratio_rebound(e), 0.0), dt, 0.0);
+                             contact(restitution_kn_N_m, 0.0, damping_ratio_rebound(e), 0.0), restitution_dt_s, 0.0);
         m.bodies[0].velocity_m_s = {1.0, 0.0};
         m.bodies[1].velocity_m_s = {-1.0, 0.0};
         World w = build_world(m);
@@ -90,7 +90,7 @@ TEST(RestitutionImpact, OneCornerImpactFollowsEffectiveMass) {
     const double h = damping_ratio_rebound(e);
     Model m = model_with({rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0, -0.1}),
                           rectangle_body("block", BodyKind::dynamic, 0.5, 0.2, {0, 0.2}, tilt)},
-                         contact(kn, 0.0, h, 0.0), dt, 0.0);
+                         contact(restitution_kn_N_m, 0.0, h, 0.0), restitution_dt_s, 0.0);
     m.bodies[1].velocity_m_s = {0.0, -1.0};
     World w = build_world(m);
     const std::uint32_t block = 1;

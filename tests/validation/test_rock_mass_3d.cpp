@@ -15,13 +15,14 @@
 
 #include "geometry/joint_set_3d.hpp"
 #include "io/scenario_3d.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/step_3d.hpp"
 
 namespace blockdem {
 namespace {
 
 using std::numbers::pi;
-constexpr double g = 9.81;
+using validation::g;
 constexpr double mu = 0.5;
 
 // A 1 m cube of rock cut by one joint dipping at beta_deg toward east, through its bottom east

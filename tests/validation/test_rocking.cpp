@@ -16,23 +16,27 @@
 
 #include "analysis/housner_rocking.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double b = 0.2, h = 0.8, g = 9.81;
-constexpr double kn = 1.0e9;  // [N/m] stiff: static overlap 7.5 um
-constexpr double dt = 2.0e-5; // [s]
+using validation::g;
+constexpr double rocking_b_m = 0.2, rocking_h_m = 0.8;  // [m] the block's half sizes b and h
+constexpr double rocking_kn_N_m = 1.0e9;  // [N/m] stiff: static overlap 7.5 um
+constexpr double rocking_dt_s = 2.0e-5; // [s]
 
-double alpha() { return std::atan(b / h); }
+double alpha() { return std::atan(rocking_b_m / rocking_h_m); }
 
 Model rocking_model(double theta0, double duration) {
     // Tilt about the left corner (theta > 0, counter-clockwise): the corner stays on the table.
-    const Vec2 pivot{-b, 0.0};
-    const Vec2 center = pivot + Rotation::from_angle(theta0).apply(Vec2{b, h});
-    BodyDef block = testing::rectangle_body("block", BodyKind::dynamic, 2 * b, 2 * h, center, theta0, 1536.0);
+    const Vec2 pivot{-rocking_b_m, 0.0};
+    const Vec2 center = pivot + Rotation::from_angle(theta0).apply(Vec2{rocking_b_m, rocking_h_m});
+    BodyDef block =
+        testing::rectangle_body("block", BodyKind::dynamic, 2 * rocking_b_m, 2 * rocking_h_m, center, theta0, 1536.0);
     BodyDef table = testing::rectangle_body("table", BodyKind::driven, 4.0, 0.2, {0, -0.1});
-    return testing::model_with({table, block}, testing::contact(kn, 2.0, damping_ratio_paper(0.2), 1.0), dt, g, duration);
+    return testing::model_with({table, block}, testing::contact(rocking_kn_N_m, 2.0, damping_ratio_paper(0.2), 1.0),
+                               rocking_dt_s, g, duration);
 }
 
 struct Peaks {
@@ -56,10 +60,10 @@ double impact_ratio(double peak_before, double peak_after) {
     return std::sqrt((std::cos(a - std::abs(peak_after)) - std::cos(a)) / (std::cos(a - std::abs(peak_before)) - std::cos(a)));
 }
 
-HousnerBlock housner_block() {
+HousnerBlock housner_rocking_block() {
     HousnerBlock hb;
-    hb.half_width_m = b;
-    hb.half_height_m = h;
+    hb.half_width_m = rocking_b_m;
+    hb.half_height_m = rocking_h_m;
     hb.gravity_m_s2 = g;
     return hb;
 }
@@ -74,7 +78,7 @@ TEST(Rocking, FreeRockingMatchesHousner) {
         theta.push_back(theta0 + w.bodies.rotation_rad[1]);
     }
     const Peaks dem = peaks_of(t, theta);
-    const RockingResult ref = housner_rocking(housner_block(), RestMotion{}, theta0, 0.0, 4.0, 1e-5);
+    const RockingResult ref = housner_rocking(housner_rocking_block(), RestMotion{}, theta0, 0.0, 4.0, 1e-5);
     std::vector<double> rt, rtheta;
     for (const auto& p : ref.history) {
         rt.push_back(p.time_s);
@@ -89,7 +93,7 @@ TEST(Rocking, FreeRockingMatchesHousner) {
     // Impact damping: the per-impact velocity ratio of the DEM against Housner's r (0.5%).
     for (std::size_t k = 0; k + 1 < 6; ++k) {
         const double r = impact_ratio(dem.theta[k], dem.theta[k + 1]);
-        EXPECT_NEAR(r, housner_block().housner_restitution(), 0.005) << "impact " << k;
+        EXPECT_NEAR(r, housner_rocking_block().housner_restitution(), 0.005) << "impact " << k;
     }
     // Amplitude decay (3%) and timing of the impacts (1% of the time since release).
     for (std::size_t k = 1; k < 6; ++k) {
@@ -100,14 +104,14 @@ TEST(Rocking, FreeRockingMatchesHousner) {
     }
     for (std::size_t k = 0; k < 5; ++k) EXPECT_NEAR(dem.impacts[k], housner.impacts[k], 0.01 * housner.impacts[k]);
     std::printf("DEM impact ratio r = %.4f (first impact), Housner 1 - 1.5 sin^2 alpha = %.4f\n",
-                impact_ratio(dem.theta[0], dem.theta[1]), housner_block().housner_restitution());
+                impact_ratio(dem.theta[0], dem.theta[1]), housner_rocking_block().housner_restitution());
 }
 
 // Uplift: the heel's contact point opens while the toe carries the block.
 bool uplifted(const World& w) { return testing::contact_points_of(w, 1) == 1; }
 
 TEST(Rocking, OnsetAtStaticThresholdAndNotBelow) {
-    const double threshold = g * b / h;  // [m/s^2]
+    const double threshold = g * rocking_b_m / rocking_h_m;  // [m/s^2]
     // Slow ramp (quasi-static) of the table acceleration up to 1.2 x the threshold over 6 s.
     {
         Model m = rocking_model(0.0, 6.0);
@@ -146,7 +150,7 @@ TEST(Rocking, OneSinePulseAgainstHousner) {
             peak = std::max(peak, std::abs(w.bodies.rotation_rad[1]));
             if (peak > 1.2) break;
         }
-        const RockingResult ref = housner_rocking(housner_block(), pulse, 0.0, 0.0, 5.0, 1e-5);
+        const RockingResult ref = housner_rocking(housner_rocking_block(), pulse, 0.0, 0.0, 5.0, 1e-5);
         std::printf("one-sine %.1f g: DEM peak %.4f rad, Housner peak %.4f rad, Housner overturned %d\n", amplitude_g, peak,
                     ref.peak_abs_theta_rad, ref.overturned);
         if (ref.overturned) {

@@ -14,13 +14,15 @@
 #include "contact/table_contact_3d.hpp"
 #include "dynamics/rigid_rotation_3d.hpp"
 #include "laws/restitution.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double b = 0.2, h = 0.8, depth = 1.0, g = 9.81;
+using validation::g;
+constexpr double box_b_m = 0.2, box_h_m = 0.8, box_depth_m = 1.0;  // [m] half sizes b and h, depth
 
-struct Peaks {
+struct Rocking3dPeaks {
     std::vector<double> theta;    // signed peak angles [rad]
     std::vector<double> impacts;  // [s] times theta crosses zero
 };
@@ -28,8 +30,8 @@ struct Peaks {
 // The release angle, then the peaks between impacts. (Peaks before the first impact are left
 // out: the box is placed at zero overlap and settles onto its corner springs in the first steps,
 // which the peak search would take for a peak.)
-Peaks peaks_of(const std::vector<double>& t, const std::vector<double>& theta) {
-    Peaks p;
+Rocking3dPeaks rocking_3d_peaks_of(const std::vector<double>& t, const std::vector<double>& theta) {
+    Rocking3dPeaks p;
     p.theta.push_back(theta[0]);
     for (std::size_t i = 1; i + 1 < theta.size(); ++i) {
         if (!p.impacts.empty() && std::abs(theta[i]) > 1e-4 && std::abs(theta[i]) >= std::abs(theta[i - 1]) &&
@@ -42,20 +44,21 @@ Peaks peaks_of(const std::vector<double>& t, const std::vector<double>& theta) {
 
 TEST(Rocking3d, FreeRockingOnAnEdgeMatchesHousner) {
     HousnerBlock block;
-    block.half_width_m = b;
-    block.half_height_m = h;
+    block.half_width_m = box_b_m;
+    block.half_height_m = box_h_m;
     block.gravity_m_s2 = g;
     const double alpha = block.alpha_rad();
     const double theta0 = 0.5 * alpha;
     // theta counter-clockwise seen from -y (x right, z up), as in 2-D: a turn about -y. Tilted
     // about its left edge (x = -b), which stays on the table.
     const Quaternion tilt = from_rotation_vector({0.0, -theta0, 0.0});
-    const Vec3 center = Vec3{-b, 0.0, 0.0} + rotate(tilt, {b, 0.0, h});
-    RigidBody3d body = make_rigid_body_3d("block", box_vertices({2 * b, depth, 2 * h}, center, tilt), 1536.0);
+    const Vec3 center = Vec3{-box_b_m, 0.0, 0.0} + rotate(tilt, {box_b_m, 0.0, box_h_m});
+    RigidBody3d body =
+        make_rigid_body_3d("block", box_vertices({2 * box_b_m, box_depth_m, 2 * box_h_m}, center, tilt), 1536.0);
     const Quaternion start = body.orientation;
     // The 2-D contact: kn = 1e9 N/m per corner of a unit-thick block; here two corners per edge.
-    const ContactParameters contact{
-        .kn_N_m = 0.5e9 * depth, .ks_N_m = 0.5e9 * depth, .mu = 2.0, .h_n = damping_ratio_paper(0.2), .h_s = 1.0};
+    const ContactParameters contact{.kn_N_m = 0.5e9 * box_depth_m, .ks_N_m = 0.5e9 * box_depth_m, .mu = 2.0,
+                                    .h_n = damping_ratio_paper(0.2), .h_s = 1.0};
     std::vector<VertexContact3d> vertices(body.shape.vertices_m.size());
     const double dt = 2e-5, end = 4.0;
     std::vector<double> t, theta;
@@ -71,14 +74,14 @@ TEST(Rocking3d, FreeRockingOnAnEdgeMatchesHousner) {
         out_of_plane = std::max({out_of_plane, std::abs(turned.x), std::abs(turned.z)});
         update_position_3d(body, dt);
     }
-    const Peaks dem = peaks_of(t, theta);
+    const Rocking3dPeaks dem = rocking_3d_peaks_of(t, theta);
     const RockingResult ref = housner_rocking(block, RestMotion{}, theta0, 0.0, end, 1e-5);
     std::vector<double> rt, rtheta;
     for (const auto& p : ref.history) {
         rt.push_back(p.time_s);
         rtheta.push_back(p.theta_rad);
     }
-    Peaks housner = peaks_of(rt, rtheta);
+    Rocking3dPeaks housner = rocking_3d_peaks_of(rt, rtheta);
     housner.impacts = ref.impact_times_s;
     ASSERT_GE(dem.theta.size(), 6u);
     ASSERT_GE(housner.theta.size(), 6u);

@@ -20,14 +20,15 @@
 
 #include "contact/contact_forces.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
+using validation::g;
 constexpr double r = 0.02;  // [m] the rounding radius
 
-ContactParameters joint(double h) {
+ContactParameters concave_joint(double h) {
     ContactParameters p;
     p.stiffness = StiffnessBasis::per_length;
     p.kn_pa_m = 1e9;
@@ -39,7 +40,7 @@ ContactParameters joint(double h) {
 }
 
 Model model(std::vector<BodyDef> bodies, double h, double duration_s, double rounding_m) {
-    Model m = testing::model_with(std::move(bodies), joint(h), 0.0, g, duration_s);
+    Model m = testing::model_with(std::move(bodies), concave_joint(h), 0.0, g, duration_s);
     m.settings.dt_s.reset();
     m.settings.dt_safety = 0.3;
     m.contact.rounding_m = rounding_m;

@@ -15,14 +15,15 @@
 #include <string>
 
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double r = 0.01;  // [m] the rounding radius
+using validation::g;
+constexpr double joint_rounding_m = 0.01;  // [m] the rounding radius
 
-ContactParameters joint(double kn_pa_m, double ks_pa_m, double mu) {
+ContactParameters rounded_joint(double kn_pa_m, double ks_pa_m, double mu) {
     ContactParameters p;
     p.stiffness = StiffnessBasis::per_length;
     p.kn_pa_m = kn_pa_m;
@@ -41,15 +42,15 @@ Model rounded_model(std::vector<BodyDef> bodies, const ContactParameters& c, dou
     return m;
 }
 
-struct PairLoad {
+struct RoundedPairLoad {
     double normal_n = 0.0;
     int points = 0;
     int intact = 0;
     double overlap_m = 0.0;  ///< [m] the first point's
 };
 
-PairLoad load_of(const World& w, std::uint32_t a, std::uint32_t b) {
-    PairLoad l;
+RoundedPairLoad rounded_load_of(const World& w, std::uint32_t a, std::uint32_t b) {
+    RoundedPairLoad l;
     for (const PairContact& pair : w.contacts) {
         if (pair.a != std::min(a, b) || pair.b != std::max(a, b)) continue;
         l.points += static_cast<int>(pair.count);
@@ -70,24 +71,24 @@ TEST(RoundedJoints, BondedDirectTensionBreaksAtTensileStrengthTimesTheStraightJo
     std::vector<BodyDef> bodies{testing::rectangle_body("ceiling", BodyKind::driven, 1.0, 0.2, {0.0, 0.1}),
                                 testing::rectangle_body("block", BodyKind::dynamic, width, 0.2, {0.0, -0.1}, 0.0, mass)};
     for (BodyDef& b : bodies) b.bond_group = 1;
-    ContactParameters p = joint(1e9, 5e8, 0.6);
+    ContactParameters p = rounded_joint(1e9, 5e8, 0.6);
     p.cohesion_pa = 1e5;
     p.tensile_strength_pa = sigma_t;
     p.h_n = 1.0;
-    Model m = rounded_model(bodies, p, 0.6, r);
+    Model m = rounded_model(bodies, p, 0.6, joint_rounding_m);
     m.table_motion.vertical = make_acceleration_series({0.0, 1.0}, {0.0, 100.0});
     World w = build_world(m);
-    ASSERT_EQ(load_of(w, 0, 1).intact, 2);
+    ASSERT_EQ(rounded_load_of(w, 0, 1).intact, 2);
     double pull_at_break = NAN;
     double last_pull = 0.0;
     while (w.time_s < 0.6 && std::isnan(pull_at_break)) {
         step_begin(w);
-        const PairLoad l = load_of(w, 0, 1);
+        const RoundedPairLoad l = rounded_load_of(w, 0, 1);
         if (l.intact < 2) pull_at_break = last_pull;
         last_pull = -l.normal_n;  // n points from the ceiling (a) down to the block (b): a pull is < 0
         step_end(w);
     }
-    const double area_m2 = (width - 2.0 * r) * 1.0;
+    const double area_m2 = (width - 2.0 * joint_rounding_m) * 1.0;
     RecordProperty("pull_at_break_N", std::to_string(pull_at_break));
     EXPECT_NEAR(pull_at_break, sigma_t * area_m2, 0.01 * sigma_t * area_m2);
     EXPECT_LT(w.energy.balance_error(), 1e-2);
@@ -105,12 +106,12 @@ double corner_overlap(double rounding_m, double& normal_n, double& turn_rad) {
     std::vector<BodyDef> bodies{
         testing::rectangle_body("floor", BodyKind::fixed, 4.0, 1.0, {0.0, -0.5}),
         testing::rectangle_body("block", BodyKind::dynamic, w, h, {0.0, centre_depth + rounding_m}, theta, mass)};
-    World world = build_world(rounded_model(bodies, joint(1e9, 5e8, 0.6), 0.5, rounding_m));
+    World world = build_world(rounded_model(bodies, rounded_joint(1e9, 5e8, 0.6), 0.5, rounding_m));
     while (world.time_s < 0.5) {
         step_begin(world);
         step_end(world);
     }
-    const PairLoad l = load_of(world, 0, 1);
+    const RoundedPairLoad l = rounded_load_of(world, 0, 1);
     EXPECT_EQ(l.points, 1);
     normal_n = l.normal_n;
     turn_rad = world.bodies.rotation_rad[1];  // (the body starts at rotation 0: its corners are drawn tilted)

@@ -17,11 +17,12 @@
 #include "analysis/rigid_plastic_sliding.hpp"
 #include "scenes/basic_scenes.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
+using validation::g;
 
 TEST(Rounding, NewmarkSlidingUnchanged) {
     // The paper's block, 0.5 x 0.2 m: r = 0.5 mm.
@@ -47,17 +48,18 @@ TEST(Rounding, NewmarkSlidingUnchanged) {
 }
 
 // test_rocking.cpp's slender block: b = 0.2, h = 0.8 m half sizes, stiff contact, e = 0.2.
-constexpr double b = 0.2, h = 0.8;
+constexpr double rounded_b_m = 0.2, rounded_h_m = 0.8;  // [m] the half sizes b and h
 constexpr double rocking_r = 0.8e-3;  // [m] 1e-3 x the block's height
 
-Model rocking_model(double theta0, double duration, double rounding_m) {
-    const Vec2 pivot{-b, 0.0};
+Model rounded_rocking_model(double theta0, double duration, double rounding_m) {
+    const Vec2 pivot{-rounded_b_m, 0.0};
     // Rounded, the block stands on the arc of its corner: lowered so that the arc's lowest point
     // (r below the arc's centre, r in from the corner along both edges) touches the table.
     const Rotation turn = Rotation::from_angle(theta0);
     const double lowest_arc_point = turn.apply(Vec2{rounding_m, rounding_m}).y - rounding_m;
-    const Vec2 center = pivot + turn.apply(Vec2{b, h}) - Vec2{0.0, lowest_arc_point};
-    BodyDef block = testing::rectangle_body("block", BodyKind::dynamic, 2 * b, 2 * h, center, theta0, 1536.0);
+    const Vec2 center = pivot + turn.apply(Vec2{rounded_b_m, rounded_h_m}) - Vec2{0.0, lowest_arc_point};
+    BodyDef block =
+        testing::rectangle_body("block", BodyKind::dynamic, 2 * rounded_b_m, 2 * rounded_h_m, center, theta0, 1536.0);
     BodyDef table = testing::rectangle_body("table", BodyKind::driven, 4.0, 0.2, {0, -0.1});
     Model m = testing::model_with({table, block}, testing::contact(1.0e9, 2.0, damping_ratio_paper(0.2), 1.0), 2.0e-5, g,
                                   duration);
@@ -71,9 +73,9 @@ struct RockingPeaks {
 };
 
 RockingPeaks free_rocking(double rounding_m) {
-    const double alpha = std::atan(b / h);
+    const double alpha = std::atan(rounded_b_m / rounded_h_m);
     const double theta0 = 0.5 * alpha;
-    World w = build_world(rocking_model(theta0, 4.0, rounding_m));
+    World w = build_world(rounded_rocking_model(theta0, 4.0, rounding_m));
     std::vector<double> t, theta;
     while (w.time_s < 4.0) {
         step(w);
@@ -90,10 +92,10 @@ RockingPeaks free_rocking(double rounding_m) {
 }
 
 TEST(Rounding, HousnerFreeRockingAndImpactRestitutionUnchanged) {
-    const double alpha = std::atan(b / h);
+    const double alpha = std::atan(rounded_b_m / rounded_h_m);
     HousnerBlock hb;
-    hb.half_width_m = b;
-    hb.half_height_m = h;
+    hb.half_width_m = rounded_b_m;
+    hb.half_height_m = rounded_h_m;
     hb.gravity_m_s2 = g;
     const RockingResult ref = housner_rocking(hb, RestMotion{}, 0.5 * alpha, 0.0, 4.0, 1e-5);
     std::vector<double> ref_peaks;
@@ -128,8 +130,8 @@ TEST(Rounding, HousnerFreeRockingAndImpactRestitutionUnchanged) {
 
 TEST(Rounding, RockingOnsetUnchanged) {
     // The slow ramp of test_rocking.cpp (to 1.2 g b/h over 6 s); onset within its 2% of g b/h.
-    const double threshold = g * b / h;
-    Model m = rocking_model(0.0, 6.0, rocking_r);
+    const double threshold = g * rounded_b_m / rounded_h_m;
+    Model m = rounded_rocking_model(0.0, 6.0, rocking_r);
     m.table_motion.horizontal = make_acceleration_series({0.0, 6.0}, {0.0, 1.2 * threshold});
     World w = build_world(m);
     double onset = -1.0;
@@ -140,7 +142,8 @@ TEST(Rounding, RockingOnsetUnchanged) {
     ASSERT_GT(onset, 0.0) << "no uplift up to 1.2 g b/h";
     EXPECT_NEAR(onset / threshold, 1.0, 0.02);
     std::printf("rounded (r = %.1f mm) rocking onset at %.4f g b/h; arc pivot g (b - r)/(h - r) = %.4f g b/h\n",
-                1e3 * rocking_r, onset / threshold, (b - rocking_r) / (h - rocking_r) / (b / h));
+                1e3 * rocking_r, onset / threshold,
+                (rounded_b_m - rocking_r) / (rounded_h_m - rocking_r) / (rounded_b_m / rounded_h_m));
 }
 
 // test_restitution_impact.cpp's drops (no gravity, 1 m/s, kn = 1e6 N/m, dt = 1e-6 s) on a

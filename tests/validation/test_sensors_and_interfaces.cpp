@@ -27,6 +27,7 @@
 #include "analysis/rigid_plastic_sliding.hpp"
 #include "scenes/basic_scenes.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/interface_monitor.hpp"
 #include "world/response_monitor.hpp"
 #include "world/sensor.hpp"
@@ -34,7 +35,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
+using validation::g;
 
 TEST(SensorsAndInterfaces, LvdtAndAccumulatedSlipOfASlidingBlock) {
     const Model m = scenes::paper_sliding(1.0, 5.0);

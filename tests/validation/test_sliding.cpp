@@ -17,11 +17,12 @@
 #include "analysis/rigid_plastic_sliding.hpp"
 #include "scenes/basic_scenes.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
+using validation::g;
 
 struct SlidingRun {
     std::vector<double> t, a_block, relative_x;

@@ -16,11 +16,12 @@
 #include "laws/restitution.hpp"
 #include "motion/table_motion.hpp"
 #include "support/table_run_3d.hpp"
+#include "validation/validation_constants.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
+using validation::g;
 
 using BoxOnTable = testing::TableRun3d;
 

@@ -20,13 +20,14 @@
 
 #include "io/summary_writer.hpp"
 #include "support/world_helpers.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/response_monitor.hpp"
 
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double deg = std::numbers::pi / 180.0;
+using validation::g;
+using validation::deg;
 constexpr double ramp_deg_s = 0.5;
 
 struct TiltRun {

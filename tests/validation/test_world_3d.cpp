@@ -20,6 +20,7 @@
 #include "support/table_run_3d.hpp"
 #include "scenes/brick_wall_3d.hpp"
 #include "scenes/s3d_wall_3d.hpp"
+#include "validation/validation_constants.hpp"
 #include "world/step_3d.hpp"
 
 #ifdef _OPENMP
@@ -29,7 +30,7 @@
 namespace blockdem {
 namespace {
 
-constexpr double g = 9.81;
+using validation::g;
 
 // A box of the given size [m], centre [m], mass [kg] and turn.
 RigidBody3d box(const char* name, Vec3 lengths_m, Vec3 center_m, double mass_kg, Quaternion turn = {}) {
