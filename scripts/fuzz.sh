@@ -16,7 +16,7 @@
 set -euo pipefail
 
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-build_dir="$source_dir/build/fuzz"
+build_dir=
 seconds=
 smoke=0
 build=1
@@ -35,6 +35,11 @@ done
 all=(fuzz_scenario fuzz_overrides fuzz_time_series_csv fuzz_record_auto fuzz_record_peer_at2 fuzz_record_knet
      fuzz_record_cosmos_v2 fuzz_record_jma_csv fuzz_record_plain fuzz_drawing)
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
+# The smoke (-O0) and a long run (-O1) each in their own folder: sharing one, each would rebuild
+# the whole sanitized library for the other's flags.
+if [ -z "$build_dir" ]; then
+  if [ "$smoke" = 1 ]; then build_dir="$source_dir/build/fuzz-smoke"; else build_dir="$source_dir/build/fuzz"; fi
+fi
 
 if [ "$build" = 1 ]; then
   # Only what the harnesses need: the library and fuzz/ (no tests, benchmarks, MPI or OpenMP),

@@ -9,8 +9,10 @@ source_dir=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=$(realpath -m "${1:-$source_dir/build-sanitize}")
 shift || true
 
+# One file a unit (BLOCKDEM_UNITY_BUILD off): the one build that compiles every file alone, so
+# that a file which only compiles with what another file of its unit brings in is caught here.
 cmake -S "$source_dir" -B "$build_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \
-  -DBLOCKDEM_SANITIZE=ON -DBLOCKDEM_BUILD_BENCHMARKS=OFF >/dev/null
+  -DBLOCKDEM_SANITIZE=ON -DBLOCKDEM_BUILD_BENCHMARKS=OFF -DBLOCKDEM_UNITY_BUILD=OFF >/dev/null
 cmake --build "$build_dir" -j "${JOBS:-$(nproc)}"
 
 # halt_on_error: the first report ends the process with a failure status, which fails the test.

@@ -82,7 +82,7 @@ void add_report_command(CLI::App& app) {
     cmd->add_flag("--no-animation", *no_animation, "skip the MP4/GIF file (the report animates anyway)");
     cmd->add_option("--formats", *formats,
                     "figure files written beside the report, comma-separated from png, svg, pdf (png always; "
-                    "--formats png skips the vector copies, about half the report's time)")
+                    "--formats png skips the vector copies, about a third of the report's time)")
         ->check(CLI::Validator(
             [](const std::string& value) -> std::string {
                 std::size_t start = 0;
@@ -95,7 +95,8 @@ void add_report_command(CLI::App& app) {
                 }
                 return {};
             },
-            "FORMAT[,FORMAT...]"));
+            "FORMAT[,FORMAT...]"))
+        ->capture_default_str();
     cmd->callback([=] { write_report(*dir, !*no_animation, *formats); });
 }
 
