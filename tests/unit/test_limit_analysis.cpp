@@ -4,6 +4,7 @@
 // semicircular arch (Heyman: t/R = 0.1075 for a continuous ring; a ring of n voussoirs with
 // chord faces differs by the choice of hinge positions). The LP is solved to round-off:
 // tolerances on lambda are 1e-9.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -72,7 +73,7 @@ TEST(LimitAnalysis, InterfaceSearchFindsEveryJointOfAGrid) {
         std::vector<BodyDef> bodies{rectangle_body("base", BodyKind::fixed, 0.2 * columns + 1.0, 0.2, {0.1 * columns, -0.1})};
         for (int r = 0; r < rows; ++r)
             for (int c = 0; c < columns; ++c)
-                bodies.push_back(rectangle_body("b" + std::to_string(r) + "_" + std::to_string(c), BodyKind::dynamic, 0.2, 0.1,
+                bodies.push_back(rectangle_body(fmt::format("b{}_{}", r, c), BodyKind::dynamic, 0.2, 0.1,
                                                 {0.2 * c + 0.1, 0.1 * r + 0.05}));
         Model m = testing::model_with(bodies, testing::contact(1e8, 0.6, 0.0, 0.0), 1e-4, 9.81);
         const std::size_t expected = static_cast<std::size_t>(rows * (columns - 1) + (rows - 1) * columns + columns);
