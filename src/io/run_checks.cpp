@@ -1,5 +1,6 @@
 #include "io/run_checks.hpp"
 
+#include <cmath>
 #include <set>
 #include <utility>
 
@@ -8,57 +9,119 @@
 
 namespace blockdem {
 
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
+namespace {
+
+// The thresholds' objects and sentences, one form for 2-D and 3-D.
+
+nlohmann::json time_step_check(double dt_s, double start_bound_s, double least_limit_s, const std::string& least_body,
+                               double least_time_s, double first_exceeded_s) {
+    return {{"dt_s", dt_s},
+            {"stable_limit_at_start_s", finite_or_null(start_bound_s)},
+            {"least_live_limit_s", least_limit_s > 0.0 ? nlohmann::json(least_limit_s) : nlohmann::json(nullptr)},
+            {"least_live_limit_body", least_body},
+            {"least_live_limit_time_s", least_time_s},
+            {"dt_above_live_limit", first_exceeded_s >= 0.0},
+            {"dt_above_live_limit_from_s", first_exceeded_s >= 0.0 ? nlohmann::json(first_exceeded_s) : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json overlap_check(double max_ratio, double max_overlap_m, double time_s, const std::string& body_a,
+                             const std::string& body_b, double limit_ratio) {
+    nlohmann::json overlap = {{"max_ratio", max_ratio}, {"warning_ratio", overlap_warning_ratio}, {"limit_ratio", limit_ratio}};
+    if (max_ratio > 0.0) {
+        overlap["max_m"] = max_overlap_m;
+        overlap["time_s"] = time_s;
+        overlap["bodies"] = {body_a, body_b};
+    }
+    return overlap;
+}
+
+nlohmann::json energy_check(const EnergyLedger& e, double stop_ratio) {
+    return {{"residual_j", e.residual_j()},
+            {"balance_error_relative", e.balance_error()},
+            {"warning_ratio", energy_warning_ratio},
+            {"stop_ratio", stop_ratio}};
+}
+
+std::string live_limit_warning(double dt_s, double first_exceeded_s, const std::string& exceeded_body,
+                               double least_limit_s, const std::string& least_body, double least_time_s) {
+    return fmt::format(
+        "dt = {:g} s was above the stable limit of the live contacts from t = {:.6g} s (body '{}'; least {:.4g} s, body "
+        "'{}' at t = {:.6g} s): the result may be wrong; rerun with a smaller dt (blockdem converge)",
+        dt_s, first_exceeded_s, exceeded_body, least_limit_s, least_body, least_time_s);
+}
+
+std::string overlap_warning(const std::string& body_a, const std::string& body_b, double overlap_m, double time_s,
+                            double ratio) {
+    return fmt::format(
+        "bodies '{}' and '{}' overlapped by {:.4g} m at t = {:.6g} s, {:.3g} of the thinner body's least width "
+        "(above {:g}): the contacts are soft for their load; raise kn",
+        body_a, body_b, overlap_m, time_s, ratio, overlap_warning_ratio);
+}
+
+std::string energy_warning(double balance_error) {
+    return fmt::format(
+        "the energy balance error is {:.3g} of the largest term (above {:g}): the time step or the contact "
+        "stiffness may be too coarse for this run; check with blockdem converge",
+        balance_error, energy_warning_ratio);
+}
+
+// The warnings of a run's watches (2-D StabilityWatch or StabilityWatch3d), name(i) naming body i.
+template <class Watch, class Name>
+std::vector<std::string> watch_warnings(const Watch& s, double dt_s, const EnergyLedger& energy, const Name& name,
+                                        std::uint32_t overlap_a, std::uint32_t overlap_b) {
+    std::vector<std::string> warnings;
+    if (s.first_exceeded_s >= 0.0)
+        warnings.push_back(live_limit_warning(dt_s, s.first_exceeded_s, s.exceeded_body, s.least_limit_s,
+                                              s.least_limit_body, s.least_limit_time_s));
+    if (s.max_overlap_ratio > overlap_warning_ratio)
+        warnings.push_back(
+            overlap_warning(name(overlap_a), name(overlap_b), s.max_overlap_m, s.max_overlap_time_s, s.max_overlap_ratio));
+    if (energy.balance_error() > energy_warning_ratio) warnings.push_back(energy_warning(energy.balance_error()));
+    return warnings;
+}
+
+}  // namespace
+
 nlohmann::json run_checks(const World& w) {
     const StabilityWatch& s = w.stability;
     const Bodies& b = w.bodies;
     nlohmann::json j;
-    j["time_step"] = {{"dt_s", w.dt_s},
-                      {"stable_limit_at_start_s", w.critical_dt_s},
-                      {"proven_stable_below_s", w.proven_stable_dt_s},
-                      {"least_live_limit_s", s.least_limit_s},
-                      {"least_live_limit_body", s.least_limit_body},
-                      {"least_live_limit_time_s", s.least_limit_time_s},
-                      {"dt_above_live_limit", s.first_exceeded_s >= 0.0},
-                      {"dt_above_live_limit_from_s", s.first_exceeded_s >= 0.0 ? nlohmann::json(s.first_exceeded_s)
-                                                                                : nlohmann::json(nullptr)}};
-    nlohmann::json overlap = {{"max_ratio", s.max_overlap_ratio},
-                              {"warning_ratio", overlap_warning_ratio},
-                              {"limit_ratio", w.settings.max_overlap_ratio}};
-    if (s.max_overlap_ratio > 0.0) {
-        overlap["max_m"] = s.max_overlap_m;
-        overlap["time_s"] = s.max_overlap_time_s;
-        overlap["bodies"] = {b.name[s.max_overlap_pair_a], b.name[s.max_overlap_pair_b]};
-    }
-    j["overlap"] = overlap;
-    const EnergyLedger& e = w.energy;
-    j["energy"] = {{"residual_j", e.residual_j()},
-                   {"balance_error_relative", e.balance_error()},
-                   {"warning_ratio", energy_warning_ratio},
-                   {"stop_ratio", w.settings.max_energy_error}};
+    j["time_step"] = time_step_check(w.dt_s, w.critical_dt_s, s.least_limit_s, s.least_limit_body, s.least_limit_time_s,
+                                     s.first_exceeded_s);
+    j["time_step"]["proven_stable_below_s"] = w.proven_stable_dt_s;
+    const bool seen = s.max_overlap_ratio > 0.0;  // (a pair to name only then)
+    j["overlap"] = overlap_check(s.max_overlap_ratio, s.max_overlap_m, s.max_overlap_time_s,
+                                 seen ? b.name[s.max_overlap_pair_a] : std::string(),
+                                 seen ? b.name[s.max_overlap_pair_b] : std::string(), w.settings.max_overlap_ratio);
+    j["energy"] = energy_check(w.energy, w.settings.max_energy_error);
     return j;
 }
 
 std::vector<std::string> run_warnings(const World& w) {
-    const StabilityWatch& s = w.stability;
     const Bodies& b = w.bodies;
-    std::vector<std::string> warnings;
-    if (s.first_exceeded_s >= 0.0)
-        warnings.push_back(fmt::format(
-            "dt = {:g} s was above the stable limit of the live contacts from t = {:.6g} s (least {:.4g} s, body '{}' at "
-            "t = {:.6g} s): the result may be wrong; rerun with a smaller dt (blockdem converge)",
-            w.dt_s, s.first_exceeded_s, s.least_limit_s, s.least_limit_body, s.least_limit_time_s));
-    if (s.max_overlap_ratio > overlap_warning_ratio)
-        warnings.push_back(fmt::format(
-            "bodies '{}' and '{}' overlapped by {:.4g} m at t = {:.6g} s, {:.3g} of the thinner body's least width "
-            "(above {:g}): the contacts are soft for their load; raise kn",
-            b.name[s.max_overlap_pair_a], b.name[s.max_overlap_pair_b], s.max_overlap_m, s.max_overlap_time_s,
-            s.max_overlap_ratio, overlap_warning_ratio));
-    if (w.energy.balance_error() > energy_warning_ratio)
-        warnings.push_back(fmt::format(
-            "the energy balance error is {:.3g} of the largest term (above {:g}): the time step or the contact "
-            "stiffness may be too coarse for this run; check with blockdem converge",
-            w.energy.balance_error(), energy_warning_ratio));
-    return warnings;
+    return watch_warnings(w.stability, w.dt_s, w.energy, [&](std::uint32_t i) { return b.name[i]; },
+                          w.stability.max_overlap_pair_a, w.stability.max_overlap_pair_b);
+}
+
+nlohmann::json run_checks_3d(const World3d& w, double start_bound_s, double max_overlap_ratio, double max_energy_error) {
+    const StabilityWatch3d& s = w.stability;
+    nlohmann::json j;
+    j["time_step"] = time_step_check(w.dt_s, start_bound_s, s.least_limit_s, s.least_limit_body, s.least_limit_time_s,
+                                     s.first_exceeded_s);
+    // (The pair's names only where an overlap was seen: a world without bodies has none to name.)
+    const bool seen = s.max_overlap_ratio > 0.0;
+    j["overlap"] = overlap_check(s.max_overlap_ratio, s.max_overlap_m, s.max_overlap_time_s,
+                                 seen ? w.bodies[s.max_overlap_body_a].name : std::string(),
+                                 seen ? w.bodies[s.max_overlap_body_b].name : std::string(), max_overlap_ratio);
+    j["energy"] = energy_check(w.ledger, max_energy_error);
+    return j;
+}
+
+std::vector<std::string> run_warnings_3d(const World3d& w) {
+    return watch_warnings(w.stability, w.dt_s, w.ledger, [&](std::uint32_t i) { return w.bodies[i].name; },
+                          w.stability.max_overlap_body_a, w.stability.max_overlap_body_b);
 }
 
 namespace {

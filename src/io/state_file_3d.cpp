@@ -74,6 +74,11 @@ void write_stability(StateGroup g, const StabilityWatch3d& s) {
     g.set("least_limit_time_s", s.least_limit_time_s);
     g.set("first_exceeded_s", s.first_exceeded_s);
     g.set("exceeded_body", s.exceeded_body);
+    g.set("max_overlap_ratio", s.max_overlap_ratio);
+    g.set("max_overlap_m", s.max_overlap_m);
+    g.set("max_overlap_time_s", s.max_overlap_time_s);
+    g.set("max_overlap_body_a", std::int64_t{s.max_overlap_body_a});
+    g.set("max_overlap_body_b", std::int64_t{s.max_overlap_body_b});
 }
 
 [[noreturn]] void refuse(const StateFile& file, const std::filesystem::path& scenario, const std::string& why) {
@@ -157,6 +162,14 @@ StabilityWatch3d read_stability_3d(const StateGroup& g) {
     s.least_limit_time_s = g.number("least_limit_time_s");
     s.first_exceeded_s = g.number("first_exceeded_s");
     s.exceeded_body = g.text("exceeded_body");
+    // The deepest overlap: absent from a state saved before it was watched (none seen then).
+    if (g.has("max_overlap_ratio")) {
+        s.max_overlap_ratio = g.number("max_overlap_ratio");
+        s.max_overlap_m = g.number("max_overlap_m");
+        s.max_overlap_time_s = g.number("max_overlap_time_s");
+        s.max_overlap_body_a = static_cast<std::uint32_t>(g.integer("max_overlap_body_a"));
+        s.max_overlap_body_b = static_cast<std::uint32_t>(g.integer("max_overlap_body_b"));
+    }
     return s;
 }
 
@@ -243,6 +256,8 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
     replace_contacts(w, read_contacts_3d(root.open_group("contacts3d"), w.bodies.size()));
     w.ledger = read_ledger(root.open_group("energy"));
     w.stability = read_stability_3d(root.open_group("stability3d"));
+    if (w.stability.max_overlap_body_a >= w.bodies.size() || w.stability.max_overlap_body_b >= w.bodies.size())
+        throw InputError(where, "not a readable blockdem state file: /stability3d/max_overlap_body_a or _b names no body");
     if (root.has("domain3d")) read_domain(root.open_group("domain3d"), w);  // (files of earlier versions lack it)
     // A caller's loads as saved; none without the group (a run without loads, or an earlier file),
     // also when w had some (a world going back to a checkpoint).

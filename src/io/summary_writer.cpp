@@ -15,7 +15,6 @@ namespace {
 
 nlohmann::json time_or_null(double t_s) { return t_s >= 0.0 ? nlohmann::json(t_s) : nlohmann::json(nullptr); }
 nlohmann::json point(Vec2 p) { return {p.x, p.y}; }
-nlohmann::json finite_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 // The outcome (world/outcome.hpp) and what decided it.
 void add_outcome(nlohmann::json& j, const World& w, const BodyRecord& record, const ClassifiedOutcome& o) {

@@ -12,6 +12,7 @@
 #include "io/input_error.hpp"
 #include "io/output_file.hpp"
 #include "io/output_folder.hpp"
+#include "io/run_checks.hpp"
 #include "io/run_restart.hpp"
 #include "io/scenario.hpp"
 #include "io/scenario_3d.hpp"
@@ -63,7 +64,6 @@ nlohmann::json domain_3d(const World3d& w) {
     for (const BodyLeftModel3d& l : d.left)
         left.push_back({{"body", w.bodies[l.body].name}, {"time_s", l.time_s}, {"position_m", vec(l.position_m)},
                         {"velocity_m_s", vec(l.velocity_m_s)}});
-    const auto finite_or_null = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     const auto corner = [&](Vec3 p) { return nlohmann::json::array({p.x, p.y, finite_or_null(p.z)}); };
     return {{"from", d.from_scenario ? "scenario" : "derived"},
             {"lo_m", corner(d.box_m.lo)},
@@ -110,8 +110,6 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
         if (w.kinds[i] == BodyKind3d::dynamic) add_outcome_3d(bodies.back(), w, i, r, records[i], outcomes[i]);
     }
     const EnergyLedger& e = w.ledger;
-    const StabilityWatch3d& watch = w.stability;
-    const auto finite_or_null = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
     nlohmann::json summary = {
         {"status", status},
         {"scenario", scenario},
@@ -134,18 +132,9 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
           {"removed_with_bodies_leaving", e.removed_j},
           {"residual", e.residual_j()},
           {"balance_error_relative", e.balance_error()}}},
-        // The 2-D "checks" object's time step part (io/run_checks.hpp), for the 3-D watch.
-        {"checks",
-         {{"time_step",
-           {{"dt_s", w.dt_s},
-            {"stable_limit_at_start_s", finite_or_null(s.critical_dt_s)},
-            {"least_live_limit_s", watch.least_limit_s > 0.0 ? nlohmann::json(watch.least_limit_s) : nlohmann::json(nullptr)},
-            {"least_live_limit_body", watch.least_limit_body},
-            {"least_live_limit_time_s", watch.least_limit_time_s},
-            {"dt_above_live_limit", watch.first_exceeded_s >= 0.0},
-            {"dt_above_live_limit_from_s",
-             watch.first_exceeded_s >= 0.0 ? nlohmann::json(watch.first_exceeded_s) : nlohmann::json(nullptr)}}}}}};
-    if (const std::string warning = live_time_step_warning_3d(w); !warning.empty()) summary["warnings"].push_back(warning);
+        // The 2-D run's "checks" object and warnings (io/run_checks.hpp), for the 3-D watches.
+        {"checks", run_checks_3d(w, s.critical_dt_s, s.max_overlap_ratio, s.max_energy_error)}};
+    for (const std::string& warning : run_warnings_3d(w)) summary["warnings"].push_back(warning);
     summary["settling"] = settling_summary(s.settled);
     std::vector<std::string> names;
     for (const RigidBody3d& b : w.bodies) names.push_back(b.name);
@@ -337,7 +326,7 @@ struct ScenarioRun3d::Parts {
             World3d& w = loaded.world;
             watch_live_time_step_3d(w);
             check_energy_balance_3d(w, loaded.max_energy_error, loaded.critical_dt_s);
-            check_overlap_3d(w, least_widths, loaded.max_overlap_ratio);
+            watch_overlap_3d(w, least_widths, loaded.max_overlap_ratio);
             monitor->update(w);
         };
         options.on_progress = request.on_progress;

@@ -49,15 +49,6 @@ void watch_live_time_step_3d(World3d& w) {
     }
 }
 
-std::string live_time_step_warning_3d(const World3d& w) {
-    const StabilityWatch3d& s = w.stability;
-    if (s.first_exceeded_s < 0.0) return "";
-    return fmt::format(
-        "dt = {:g} s was above the stable limit of the live contacts from t = {:.6g} s (body '{}'; least {:.4g} s, body "
-        "'{}' at t = {:.6g} s): the result may be wrong; rerun with a smaller dt (blockdem converge)",
-        w.dt_s, s.first_exceeded_s, s.exceeded_body, s.least_limit_s, s.least_limit_body, s.least_limit_time_s);
-}
-
 std::vector<double> least_widths_m(const World3d& w) {
     std::vector<double> widths;
     for (const RigidBody3d& b : w.bodies) {
@@ -75,19 +66,34 @@ std::vector<double> least_widths_m(const World3d& w) {
     return widths;
 }
 
-void check_overlap_3d(const World3d& w, const std::vector<double>& widths_m, double max_ratio) {
+void watch_overlap_3d(World3d& w, const std::vector<double>& widths_m, double max_ratio) {
+    const ContactPoint3d* deepest = nullptr;
+    double deepest_ratio = 0.0;
     for (const ContactPoint3d& c : w.contacts) {
         const double ratio = c.overlap_m / std::min(widths_m[c.key.body_a], widths_m[c.key.body_b]);
-        if (ratio <= max_ratio) continue;
-        // As in 2-D: the impact rule (overlap as 1/sqrt(kn)) brings the overlap near 1% either way.
-        const double kn = w.contact.kn_N_m;
-        throw SimulationError(fmt::format(
-            "penetration: bodies '{}' and '{}' overlap by {:.4g} m at t = {:.6g} s (step {}), {:.3g} of the least width "
-            "of the thinner body; the limit is {:g} (simulation.max_overlap). The contact is too soft for its load: "
-            "raise kn (now {:.4g} N/m) to about {:.3g} N/m for an overlap near 1%",
-            w.bodies[c.key.body_a].name, w.bodies[c.key.body_b].name, c.overlap_m, w.time_s, w.steps, ratio, max_ratio,
-            kn, kn * (ratio / overlap_warning_ratio) * (ratio / overlap_warning_ratio)));
+        if (ratio > deepest_ratio) {
+            deepest_ratio = ratio;
+            deepest = &c;
+        }
     }
+    if (deepest == nullptr) return;
+    StabilityWatch3d& watch = w.stability;
+    if (deepest_ratio > watch.max_overlap_ratio) {
+        watch.max_overlap_ratio = deepest_ratio;
+        watch.max_overlap_m = deepest->overlap_m;
+        watch.max_overlap_time_s = w.time_s;
+        watch.max_overlap_body_a = deepest->key.body_a;
+        watch.max_overlap_body_b = deepest->key.body_b;
+    }
+    if (deepest_ratio <= max_ratio) return;
+    // As in 2-D: the impact rule (overlap as 1/sqrt(kn)) brings the overlap near 1% either way.
+    const double kn = w.contact.kn_N_m;
+    throw SimulationError(fmt::format(
+        "penetration: bodies '{}' and '{}' overlap by {:.4g} m at t = {:.6g} s (step {}), {:.3g} of the least width "
+        "of the thinner body; the limit is {:g} (simulation.max_overlap). The contact is too soft for its load: "
+        "raise kn (now {:.4g} N/m) to about {:.3g} N/m for an overlap near 1%",
+        w.bodies[deepest->key.body_a].name, w.bodies[deepest->key.body_b].name, deepest->overlap_m, w.time_s, w.steps,
+        deepest_ratio, max_ratio, kn, kn * (deepest_ratio / overlap_warning_ratio) * (deepest_ratio / overlap_warning_ratio)));
 }
 
 }  // namespace blockdem

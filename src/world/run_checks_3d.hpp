@@ -6,7 +6,8 @@
 // every 32 steps: a body landing on a lighter one, or a stack gaining points, may need a smaller
 // dt than the start's contacts did. Going above it does not stop the run (the bound is 1.3 to 3
 // times below the true limit, docs/physics.md); it is a warning in summary.json, and the
-// energy stop names it.
+// energy stop names it. What they found is reported by io/run_checks.hpp (run_checks_3d,
+// run_warnings_3d), as the 2-D run's.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -28,15 +29,14 @@ inline constexpr std::int64_t live_limit_every_3d = 32;
 /// into w.stability, its least value and when dt first went above it.
 void watch_live_time_step_3d(World3d& w);
 
-/// The warning sentence when dt went above the live bound during the run, or "".
-std::string live_time_step_warning_3d(const World3d& w);
-
 /// [m] each body's least width: the least extent over its face normals (exact for boxes and
 /// prisms; an upper bound otherwise).
 std::vector<double> least_widths_m(const World3d& w);
 
-/// Throws SimulationError naming the two bodies when a point's overlap exceeds max_ratio times
-/// the least width of the thinner body of its pair, with the kn that would bring it near 1%.
-void check_overlap_3d(const World3d& w, const std::vector<double>& least_widths_m, double max_ratio);
+/// The deepest overlap of this step's points, as a fraction of the least width of the thinner
+/// body of its pair, kept in w.stability when it is the run's deepest (summary.json's
+/// checks.overlap; above overlap_warning_ratio a warning). Throws SimulationError naming the two
+/// bodies when it exceeds max_ratio, with the kn that would bring it near 1%.
+void watch_overlap_3d(World3d& w, const std::vector<double>& least_widths_m, double max_ratio);
 
 }  // namespace blockdem

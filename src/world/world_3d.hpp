@@ -173,6 +173,11 @@ struct StabilityWatch3d {
     double least_limit_time_s = 0.0;     ///< [s] when
     double first_exceeded_s = -1.0;      ///< [s] first time dt was above the live bound; -1: never
     std::string exceeded_body;           ///< the body whose contacts were too stiff then
+    double max_overlap_ratio = 0.0;      ///< [-] deepest overlap / least width of the thinner body of its pair
+    double max_overlap_m = 0.0;          ///< [m] that overlap
+    double max_overlap_time_s = 0.0;     ///< [s] when
+    std::uint32_t max_overlap_body_a = 0;///< the pair's bodies
+    std::uint32_t max_overlap_body_b = 0;
 };
 
 struct World3d {

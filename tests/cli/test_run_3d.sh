@@ -6,7 +6,9 @@
 # naming the file and the key or the bodies: an unknown key, overlapping bodies, a non-convex
 # polyhedron, a dt above the stable bound, a record of two components where three are asked; a
 # ledger that stops closing or a block sinking into the table ends the run with status 3; a 2-D command refuses a 3-D file; Ctrl-C leaves whole files and status "interrupted"; a light block
-# landing on a heavy one with dt above its contacts' stable bound is reported (the live stable step).
+# landing on a heavy one with dt above its contacts' stable bound is reported (the live stable step),
+# with its energy balance error above 1 %; a block on soft springs reports its deepest overlap
+# (summary.json checks.overlap and a warning).
 # Usage: test_run_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1
@@ -318,11 +320,62 @@ assert step["dt_above_live_limit"] is True and step["least_live_limit_body"] == 
 assert 0.1 < step["dt_above_live_limit_from_s"] < 0.101 + 33 * step["dt_s"], step
 assert step["least_live_limit_s"] < 0.2 * step["dt_s"], step
 assert any("live contacts" in w for w in coarse["warnings"]), coarse.get("warnings")
+# The cube's landing at that dt leaves the ledger open by a tenth: said, as in 2-D.
+energy = coarse["checks"]["energy"]
+assert energy["balance_error_relative"] > 0.05 and energy["warning_ratio"] == 0.01 and energy["stop_ratio"] == 0.5, energy
+assert any("energy balance error is" in w for w in coarse["warnings"]), coarse.get("warnings")
 fine = json.load(open(f"{sys.argv[2]}/summary.json"))
 step = fine["checks"]["time_step"]
 assert step["dt_above_live_limit"] is False and step["dt_above_live_limit_from_s"] is None, step
 assert step["dt_s"] < step["least_live_limit_s"], step
+assert fine["checks"]["energy"]["balance_error_relative"] < 0.01, fine["checks"]["energy"]
+assert 0.0 < fine["checks"]["overlap"]["max_ratio"] < 0.01, fine["checks"]["overlap"]
 assert "warnings" not in fine, fine["warnings"]
+PY
+expect_in "$out" "energy balance error is"
+
+# The deepest overlap (summary.json checks.overlap, a warning above 1 % of the thinner body's
+# least width): a 10 cm cube of 1 kg placed on the table on four corner springs of 1000 N/m sinks
+# to 9.81 / 4000 = 2.45 mm at rest, and, let go at the springs' ends, overshoots to at most twice
+# that (undamped; e = 0.5 damps it): 2.5 to 4.9 % of its width, a warning, not a stop.
+cat > "$tmp/soft_block.toml" <<'TOML'
+dimension = 3
+[simulation]
+duration = 0.3
+dt = 2e-4
+output_interval = 0.01
+[contact]
+kn = 1000.0
+ks = 1000.0
+mu = 0.5
+e = 0.5
+[[bodies]]
+name = "table"
+kind = "fixed"
+shape = "box"
+size = [1.0, 1.0, 0.1]
+position = [0.0, 0.0, -0.05]
+[[bodies]]
+name = "block"
+shape = "box"
+size = [0.1, 0.1, 0.1]
+position = [0.0, 0.0, 0.05]
+density = 1000.0
+TOML
+out=$("$bin" run "$tmp/soft_block.toml" --out "$tmp/soft_block" -q 2>&1); status=$?
+[[ $status -eq 0 ]] || fail "the soft block: exit status $status, expected 0 (a warning, not a stop): $out"
+expect_in "$out" "WARNING: bodies 'table' and 'block' overlapped by"
+/usr/bin/python3 - "$tmp/soft_block" <<'PY' || fail "the deepest overlap is not reported as expected"
+import json, sys
+summary = json.load(open(f"{sys.argv[1]}/summary.json"))
+overlap = summary["checks"]["overlap"]
+assert overlap["bodies"] == ["table", "block"], overlap
+static_m = 9.81 / 4000.0
+assert static_m < overlap["max_m"] < 2.0 * static_m, overlap
+assert abs(overlap["max_ratio"] - overlap["max_m"] / 0.1) < 1e-12, overlap
+assert overlap["warning_ratio"] == 0.01 and overlap["limit_ratio"] == 0.25, overlap
+assert 0.0 < overlap["time_s"] < 0.3, overlap
+assert len(summary["warnings"]) == 1 and "soft for their load" in summary["warnings"][0], summary["warnings"]
 PY
 
 if [[ $failures -gt 0 ]]; then echo "$failures failure(s)"; exit 1; fi

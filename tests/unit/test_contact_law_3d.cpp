@@ -20,14 +20,11 @@ namespace blockdem {
 namespace {
 
 // Named one by one, not by a using-directive: in a unit build this namespace is the other files'
-// of the unit too (tests/CMakeLists.txt).
-using law_3d::add_halves;
-using law_3d::four_point_law;
+// of the unit too (tests/CMakeLists.txt). The four-point law's names only where it is compiled
+// (GCC on x86-64: laws/quad_lanes.hpp), as its tests below.
 using law_3d::law_constants;
-using law_3d::law_quads;
 using law_3d::LawConstants;
 using law_3d::pair_lanes;
-using law_3d::pair_quads;
 using law_3d::pair_sums;
 using law_3d::PairDashpots;
 using law_3d::PairEnergySums;
@@ -35,9 +32,15 @@ using law_3d::PairLaneSums;
 using law_3d::PairLanes;
 using law_3d::PairLaw;
 using law_3d::PairMotion;
-using law_3d::PairQuadTerms;
 using law_3d::PairSums;
 using law_3d::two_point_law;
+#if BLOCKDEM_QUAD_LANES
+using law_3d::add_halves;
+using law_3d::four_point_law;
+using law_3d::law_quads;
+using law_3d::pair_quads;
+using law_3d::PairQuadTerms;
+#endif
 
 Vec3 unit(Vec3 v) { return (1.0 / length(v)) * v; }
 

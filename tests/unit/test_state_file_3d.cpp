@@ -18,6 +18,7 @@
 #include "io/state_file_3d.hpp"
 #include "support/bit_checks.hpp"
 #include "world/external_loads_3d.hpp"
+#include "world/run_checks_3d.hpp"
 #include "world/step_3d.hpp"
 
 namespace blockdem {
@@ -69,9 +70,11 @@ period = 0.07
 }
 
 void advance(World3d& w, ResponseMonitor3d& monitor, int steps) {
+    const std::vector<double> widths_m = least_widths_m(w);
     for (int i = 0; i < steps; ++i) {
         step_begin(w);
         monitor.update(w);
+        watch_overlap_3d(w, widths_m, 0.25);  // the run's deepest overlap, kept in the state
         step_end(w);
     }
 }
@@ -122,6 +125,15 @@ TEST_F(StateFile3dTest, ARestoredWorldGoesOnBitForBit) {
     Monitor3dStatePart part(second_monitor);
     state.restore(part);
     EXPECT_EQ(second.world.steps, 200);
+    // The deepest overlap so far comes back with the state (summary.json's checks.overlap).
+    const StabilityWatch3d& saved = first.world.stability;
+    const StabilityWatch3d& restored = second.world.stability;
+    ASSERT_GT(saved.max_overlap_ratio, 0.0);
+    EXPECT_TRUE(same_bits(restored.max_overlap_ratio, saved.max_overlap_ratio));
+    EXPECT_TRUE(same_bits(restored.max_overlap_m, saved.max_overlap_m));
+    EXPECT_TRUE(same_bits(restored.max_overlap_time_s, saved.max_overlap_time_s));
+    EXPECT_EQ(restored.max_overlap_body_a, saved.max_overlap_body_a);
+    EXPECT_EQ(restored.max_overlap_body_b, saved.max_overlap_body_b);
     advance(second.world, second_monitor, 200);
 
     const World3d& a = whole.world;
@@ -141,6 +153,8 @@ TEST_F(StateFile3dTest, ARestoredWorldGoesOnBitForBit) {
         EXPECT_TRUE(same_bits(a.contacts[k].shear.spring_n.x, b.contacts[k].shear.spring_n.x));
     }
     EXPECT_TRUE(same_bits(a.ledger.residual_j(), b.ledger.residual_j()));
+    EXPECT_TRUE(same_bits(a.stability.max_overlap_ratio, b.stability.max_overlap_ratio));
+    EXPECT_TRUE(same_bits(a.stability.max_overlap_time_s, b.stability.max_overlap_time_s));
     EXPECT_TRUE(same_bits(a.ledger.friction_j, b.ledger.friction_j));
     EXPECT_TRUE(same_bits(whole_monitor.bodies()[1].peak_tilt_rad, second_monitor.bodies()[1].peak_tilt_rad));
     EXPECT_TRUE(same_bits(whole_monitor.bodies()[1].peak_slip_m, second_monitor.bodies()[1].peak_slip_m));
