@@ -133,8 +133,8 @@ double least_overlap_m(const Posed& a, const Posed& b) {
     return least;
 }
 
-// Hulls of 10 points on spheres 0.08 to 0.12 m across (the random packing example's rocks), turned
-// at random and pressed together along a random direction by 0.1 to 20 mm: every pair that
+// Hulls of 10 points on spheres 0.08 to 0.12 m across (the random packing example's rocks), and
+// every third pair one of them against a box of 0.06 to 0.12 m turned at random, pressed together along a random direction by 0.1 to 20 mm: every pair that
 // overlaps gets points, and the deepest point is as deep as the least overlap over all axes (a
 // vertex or an edge of one inside the other by that much: the face or edge the narrow phase takes
 // is within its 0.95 preference of the least). Before the incident face was taken at the deepest
@@ -162,7 +162,11 @@ TEST(PolyhedronContact3d, OverlappingHullsGiveTheirLeastOverlapAsTheDeepestPoint
     };
     int overlapping = 0;
     for (int trial = 0; trial < 3000; ++trial) {
-        const std::vector<Vec3> a_points = hull({0, 0, 0});
+        // Every third pair a hull against a turned box (the general test too: one body is no box).
+        const std::vector<Vec3> a_points =
+            trial % 3 == 2 ? box_vertices({0.06 + 0.06 * u01(random), 0.06 + 0.06 * u01(random), 0.06 + 0.06 * u01(random)},
+                                          {0, 0, 0}, from_rotation_vector({u(random), u(random), u(random)}))
+                           : hull({0, 0, 0});
         std::vector<Vec3> b_points = hull({0, 0, 0});
         const Vec3 d = unit();
         const double press_m = 1e-4 + 0.02 * u01(random);
