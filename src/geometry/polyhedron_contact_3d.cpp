@@ -391,7 +391,7 @@ struct IncidentExtent {
     double greatest_m = -std::numeric_limits<double>::infinity();  ///< [m] the highest vertex's
 };
 
-std::uint32_t most_opposed_face(const PosedPolyhedron& inc, Vec3 n, IncidentExtent& extent) {
+std::uint32_t incident_face_at_deepest_vertex(const PosedPolyhedron& inc, Vec3 n, IncidentExtent& extent) {
     std::size_t deepest = 0;
     const std::size_t vertices = inc.shape->vertices_m.size();
     for (std::size_t i = 0; i < vertices; ++i) {
@@ -508,7 +508,7 @@ void face_contact(const PosedPolyhedron& ref, std::uint32_t ref_face, const Pose
                   const BoxPair* pair, ContactScratch3d& scratch, std::vector<ContactGeometry3d>& out) {
     IncidentExtent extent;  // (along the reference normal; left unmeasured for two boxes)
     const std::uint32_t inc_face = pair != nullptr ? most_opposed_box_face(ref, ref_face, inc, *pair, ref_is_a)
-                                                   : most_opposed_face(inc, face_normal(ref, ref_face), extent);
+                                                   : incident_face_at_deepest_vertex(inc, face_normal(ref, ref_face), extent);
     // Two boxes: the rectangle clip applies (a box face has 4 corners), no need to ask; its
     // polygon is read in the face's frame.
     if (pair != nullptr) {

@@ -5,7 +5,8 @@
 # threads; a state of --save-state-every too); a run interrupted by SIGINT resumes in place from
 # the state it wrote as it stopped and ends as a run straight to the same time; a 3-D state
 # given a 2-D scenario, a state of another scenario and a 2-D state given to a 3-D scenario are
-# refused with exit 2, naming the file.
+# refused with exit 2, naming the file, and so is a state whose deepest-overlap pair names no
+# body; a state without the deepest overlap (saved before it was kept) restarts.
 # Usage: test_restart_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$(realpath "$1"); src=$(realpath "$2")
@@ -85,6 +86,29 @@ expect_in "$out" "t_0.100000s.h5"
 out=$("$bin" run --restart "$state" "$wall" --out "$tmp/bad2" -q 2>&1); status=$?
 [[ $status -eq 2 ]] || fail "state of another scenario: exit status $status, expected 2: $out"
 expect_in "$out" "does not belong to scenario"
+# The deepest overlap's pair (summary.json checks.overlap) naming no body: refused. A state saved
+# before the deepest overlap was kept (no such attributes) restarts, with none seen before it.
+cp "$state" "$tmp/bad_pair.h5"
+cp "$state" "$tmp/no_overlap.h5"
+/usr/bin/python3 - "$tmp/bad_pair.h5" "$tmp/no_overlap.h5" <<'PY' || fail "could not edit the state files (h5py)"
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    f["stability3d"].attrs["max_overlap_body_a"] = 999
+with h5py.File(sys.argv[2], "r+") as f:
+    for name in ("max_overlap_ratio", "max_overlap_m", "max_overlap_time_s", "max_overlap_body_a", "max_overlap_body_b"):
+        del f["stability3d"].attrs[name]
+PY
+out=$("$bin" run --restart "$tmp/bad_pair.h5" --out "$tmp/bad_pair" -q 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "a deepest-overlap pair naming no body: exit status $status, expected 2: $out"
+expect_in "$out" "bad_pair.h5"
+expect_in "$out" "max_overlap_body_a or _b names no body"
+"$bin" run --restart "$tmp/no_overlap.h5" --out "$tmp/no_overlap" -q >"$tmp/log" 2>&1 \
+  || fail "a state without the deepest overlap did not restart: $(cat "$tmp/log")"
+/usr/bin/python3 - "$tmp/no_overlap" <<'PY' || fail "the restart without the deepest overlap does not report one of its own"
+import json, sys
+overlap = json.load(open(f"{sys.argv[1]}/summary.json"))["checks"]["overlap"]
+assert 0.0 < overlap["max_ratio"] < 0.01 and 0.1 <= overlap["time_s"] <= 0.2, overlap
+PY
 
 "$bin" run "$src/examples/paper/sliding.toml" --out "$tmp/flat" --set simulation.duration=0.2 --save-state 0.1 -q >"$tmp/log" 2>&1 \
   || fail "the 2-D run failed: $(cat "$tmp/log")"
