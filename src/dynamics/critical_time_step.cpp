@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dynamics/highest_mode.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 #include "laws/mohr_coulomb_joint.hpp"
@@ -221,57 +222,16 @@ void apply_pencil(const Bodies& b, const std::vector<StiffnessPoint>& points, do
     }
 }
 
-double dot_product(const std::vector<double>& a, const std::vector<double>& b) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i) sum += a[i] * b[i];
-    return sum;
-}
-
 }  // namespace
 
 CriticalTimeStep highest_mode_time_step(const Bodies& b, const std::vector<StiffnessPoint>& points,
                                         const CriticalTimeStep& bound) {
     if (!std::isfinite(bound.dt_s)) return bound;
-    const std::size_t n = 3 * b.size();
-    // A start vector with a share of every mode: a fixed pseudo-random pattern (the all-ones
-    // vector would miss the alternating modes of a regular lattice, the highest ones).
-    std::vector<double> x(n), y(n);
-    std::uint64_t state = 0x9e3779b97f4a7c15ull;
-    for (double& v : x) {
-        state = state * 6364136223846793005ull + 1442695040888963407ull;
-        v = static_cast<double>(state >> 11) * 0x1.0p-53 - 0.5;
-    }
-    double dt = bound.dt_s;
-    for (int outer = 0; outer < 4; ++outer) {
-        // Power iteration on B(dt) = (dt^2/4) K~ + (dt/2) C~: its top eigenvector.
-        for (int k = 0; k < power_iterations; ++k) {
-            apply_pencil(b, points, 0.25 * dt * dt, 0.5 * dt, x, y);
-            const double norm = std::sqrt(dot_product(y, y));
-            if (!(norm > 0.0)) return bound;
-            for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / norm;
-        }
-        // The dt at which that mode's own (dt^2/4) q_k + (dt/2) q_c reaches 1.
-        apply_pencil(b, points, 1.0, 0.0, x, y);
-        const double qk = dot_product(x, y);
-        apply_pencil(b, points, 0.0, 1.0, x, y);
-        const double qc = dot_product(x, y);
-        if (!(qk > 0.0)) return bound;
-        const double next = (std::sqrt(qc * qc + 4.0 * qk) - qc) / qk;
-        const bool settled = std::abs(next - dt) < 1e-3 * dt;
-        dt = next;
-        if (settled) break;
-    }
-    // The body that moves most in that mode.
-    std::size_t body = 0;
-    double most = -1.0;
-    for (std::size_t i = 0; i < b.size(); ++i) {
-        const double share = x[3 * i] * x[3 * i] + x[3 * i + 1] * x[3 * i + 1] + x[3 * i + 2] * x[3 * i + 2];
-        if (share > most) most = share, body = i;
-    }
-    apply_pencil(b, points, 1.0, 0.0, x, y);
-    const double omega = std::sqrt(dot_product(x, y));
-    apply_pencil(b, points, 0.0, 1.0, x, y);
-    return {std::max(dt, bound.dt_s), b.name[body], omega, dot_product(x, y) / (2.0 * omega)};
+    const HighestMode mode = highest_mode(3 * b.size(), bound.dt_s, [&](double wk, double wc, const auto& x, auto& y) {
+        apply_pencil(b, points, wk, wc, x, y);
+    });
+    if (!mode.found) return bound;
+    return {std::max(mode.dt_s, bound.dt_s), b.name[body_moving_most(mode.mode, 3)], mode.omega_rad_s, mode.h};
 }
 
 StartTimeStep critical_time_step(const World& w) {

@@ -58,9 +58,6 @@ CriticalTimeStep live_time_step(const World& w, StabilityRows& rows);
 /// a flat landing on a fixed body for a dynamic body that touches nothing.
 std::vector<StiffnessPoint> start_stiffness_points(const World& w);
 
-/// Power iterations per estimate of the highest mode (highest_mode_time_step).
-inline constexpr int power_iterations = 60;
-
 /// The limit of the points' highest mode, estimated by power iteration on
 /// (dt^2/4) K~ + (dt/2) C~ and its Rayleigh quotients: the dt at which M - (dt/2) C - (dt^2/4) K
 /// stops being positive definite along that mode. Never below bound (the Gershgorin bound of

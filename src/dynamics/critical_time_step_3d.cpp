@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "dynamics/highest_mode.hpp"
+#include "geometry/quaternion.hpp"
 #include "laws/linear_spring_dashpot.hpp"
 
 namespace blockdem {
@@ -51,21 +53,45 @@ void add_direction(const World3d& w, const ContactPoint3d& c, Vec3 d, double k, 
 
 }  // namespace
 
-CriticalTimeStep3d live_time_step_3d(const World3d& w) {
+namespace {
+
+// The two tangents of a point: any unit vector off the normal, and the third of the frame (the
+// shear springs and dashpots are isotropic in the tangent plane, so any pair spans them).
+std::array<Vec3, 2> tangents(Vec3 n) {
+    const Vec3 helper = std::abs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    const Vec3 t1 = normalized(cross(n, helper));
+    return {t1, cross(n, t1)};
+}
+
+// A point's springs and dashpots as the law applies them: kn and ks times its share, its
+// dashpots from its share of the pair's reduced mass.
+struct PointLaw {
+    double kn_N_m, ks_N_m, cn_N_s_m, cs_N_s_m;
+};
+
+std::vector<PointLaw> point_laws(const World3d& w, const std::vector<ContactPoint3d>& points) {
+    const std::vector<double> dashpot_masses_kg = point_dashpot_masses_kg(w, points);
+    std::vector<PointLaw> laws;
+    laws.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const ContactParameters p = point_parameters(w.contact, points[i].stiffness_share);
+        const DashpotCoefficients c = dashpot_coefficients(p, dashpot_masses_kg[i]);
+        laws.push_back({p.kn_N_m, p.ks_N_m, c.cn_N_s_m, c.cs_N_s_m});
+    }
+    return laws;
+}
+
+}  // namespace
+
+CriticalTimeStep3d stable_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points) {
     std::vector<Rows> rows_k(w.bodies.size(), Rows{}), rows_c(w.bodies.size(), Rows{});
-    const std::vector<double> dashpot_masses_kg = point_dashpot_masses_kg(w, w.contacts);
-    for (std::size_t i = 0; i < w.contacts.size(); ++i) {
-        const ContactPoint3d& c = w.contacts[i];
-        const ContactParameters p = point_parameters(w.contact, c.stiffness_share);
-        const DashpotCoefficients k = dashpot_coefficients(p, dashpot_masses_kg[i]);
-        // Two tangents: any unit vector off the normal, and the third of the frame.
-        const Vec3 n = c.normal;
-        const Vec3 helper = std::abs(n.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
-        const Vec3 t1 = normalized(cross(n, helper));
-        const Vec3 t2 = cross(n, t1);
-        add_direction(w, c, n, p.kn_N_m, k.cn_N_s_m, rows_k, rows_c);
-        add_direction(w, c, t1, p.ks_N_m, k.cs_N_s_m, rows_k, rows_c);
-        add_direction(w, c, t2, p.ks_N_m, k.cs_N_s_m, rows_k, rows_c);
+    const std::vector<PointLaw> laws = point_laws(w, points);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const ContactPoint3d& c = points[i];
+        const std::array<Vec3, 2> t = tangents(c.normal);
+        add_direction(w, c, c.normal, laws[i].kn_N_m, laws[i].cn_N_s_m, rows_k, rows_c);
+        add_direction(w, c, t[0], laws[i].ks_N_m, laws[i].cs_N_s_m, rows_k, rows_c);
+        add_direction(w, c, t[1], laws[i].ks_N_m, laws[i].cs_N_s_m, rows_k, rows_c);
     }
     CriticalTimeStep3d r;
     double lambda_k = 0.0, lambda_c = 0.0;
@@ -87,6 +113,82 @@ CriticalTimeStep3d live_time_step_3d(const World3d& w) {
     r.omega_rad_s = std::sqrt(lambda_k);
     r.h = lambda_c / (2.0 * r.omega_rad_s);
     return r;
+}
+
+CriticalTimeStep3d live_time_step_3d(const World3d& w) { return stable_time_step_3d(w, w.contacts); }
+
+namespace {
+
+// What the pencil needs of a body: 1 / sqrt(m), and M^-1/2 of its rotation in the world frame,
+// R diag(I^-1/2) R^T (zero for a body that does not move: no entries in g).
+struct BodyRoots {
+    double over_sqrt_mass = 0.0;
+    Matrix3d over_sqrt_inertia{};
+};
+
+std::vector<BodyRoots> body_roots(const World3d& w) {
+    std::vector<BodyRoots> roots(w.bodies.size());
+    for (std::size_t i = 0; i < w.bodies.size(); ++i) {
+        if (w.kinds[i] != BodyKind3d::dynamic) continue;
+        const RigidBody3d& b = w.bodies[i];
+        const Matrix3d r = rotation_matrix(b.orientation);
+        const Vec3 s{std::sqrt(b.inverse_moments_1_kg_m2.x), std::sqrt(b.inverse_moments_1_kg_m2.y),
+                     std::sqrt(b.inverse_moments_1_kg_m2.z)};
+        const Matrix3d scaled = Matrix3d::from_columns(s.x * r.column(0), s.y * r.column(1), s.z * r.column(2));
+        roots[i] = {1.0 / std::sqrt(b.mass_kg), scaled * transpose(r)};
+    }
+    return roots;
+}
+
+// y = (weight_k K~ + weight_c C~) x over 6 entries a body (x, y, z, rotation about x, y, z).
+void apply_pencil_3d(const World3d& w, const std::vector<ContactPoint3d>& points, const std::vector<PointLaw>& laws,
+                     const std::vector<BodyRoots>& roots, double weight_k, double weight_c, const std::vector<double>& x,
+                     std::vector<double>& y) {
+    std::fill(y.begin(), y.end(), 0.0);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const ContactPoint3d& c = points[i];
+        const std::uint32_t ends[2] = {c.key.body_a, c.key.body_b};
+        const std::array<Vec3, 2> t = tangents(c.normal);
+        const Vec3 directions[3] = {c.normal, t[0], t[1]};
+        const PointLaw& law = laws[i];
+        const double weights[3] = {weight_k * law.kn_N_m + weight_c * law.cn_N_s_m,
+                                   weight_k * law.ks_N_m + weight_c * law.cs_N_s_m,
+                                   weight_k * law.ks_N_m + weight_c * law.cs_N_s_m};
+        for (int d = 0; d < 3; ++d) {
+            // g's part on each end: -(d, r x d) on a, +(d, r x d) on b, mass-normalised.
+            Vec3 translation[2], rotation[2];
+            double s = 0.0;
+            for (int e = 0; e < 2; ++e) {
+                const BodyRoots& root = roots[ends[e]];
+                const double sign = e == 0 ? -1.0 : 1.0;
+                translation[e] = (sign * root.over_sqrt_mass) * directions[d];
+                rotation[e] = sign * (root.over_sqrt_inertia * cross(c.point_m - w.bodies[ends[e]].position_m, directions[d]));
+                const double* xb = &x[6 * ends[e]];
+                s += translation[e].x * xb[0] + translation[e].y * xb[1] + translation[e].z * xb[2] +
+                     rotation[e].x * xb[3] + rotation[e].y * xb[4] + rotation[e].z * xb[5];
+            }
+            s *= weights[d];
+            for (int e = 0; e < 2; ++e) {
+                double* yb = &y[6 * ends[e]];
+                yb[0] += s * translation[e].x, yb[1] += s * translation[e].y, yb[2] += s * translation[e].z;
+                yb[3] += s * rotation[e].x, yb[4] += s * rotation[e].y, yb[5] += s * rotation[e].z;
+            }
+        }
+    }
+}
+
+}  // namespace
+
+CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points,
+                                             const CriticalTimeStep3d& bound) {
+    if (!std::isfinite(bound.dt_s)) return bound;
+    const std::vector<PointLaw> laws = point_laws(w, points);
+    const std::vector<BodyRoots> roots = body_roots(w);
+    const HighestMode mode = highest_mode(6 * w.bodies.size(), bound.dt_s, [&](double wk, double wc, const auto& x, auto& y) {
+        apply_pencil_3d(w, points, laws, roots, wk, wc, x, y);
+    });
+    if (!mode.found || mode.dt_s <= bound.dt_s) return bound;
+    return {mode.dt_s, static_cast<std::uint32_t>(body_moving_most(mode.mode, 6)), mode.omega_rad_s, mode.h};
 }
 
 }  // namespace blockdem

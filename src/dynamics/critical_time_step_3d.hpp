@@ -10,6 +10,7 @@
 // unstable at dt = 5e-5 s through its shear dashpots (docs/3d.md), which one body's vertical
 // frequency sqrt(4 kn / m) does not show.
 #include <cstdint>
+#include <vector>
 
 #include "world/world_3d.hpp"
 
@@ -22,9 +23,26 @@ struct CriticalTimeStep3d {
     double h = 0.0;            ///< [-] Lambda_C / (2 omega)
 };
 
-/// The bound over w.contacts, with each point's springs and dashpots as the law applies them
-/// (kn and ks times the point's stiffness share, which reaches 2 at a sharp corner; the pair's
-/// reduced mass shared by the shares).
+/// The bound over the given points (of w's bodies, at w's poses), with each point's springs and
+/// dashpots as the law applies them (kn and ks times the point's stiffness share, which reaches 2
+/// at a sharp corner; the pair's reduced mass shared by the shares). Every dt below it is stable.
+CriticalTimeStep3d stable_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points);
+
+/// The bound over w.contacts.
 CriticalTimeStep3d live_time_step_3d(const World3d& w);
+
+/// The limit of the points' highest mode (dynamics/highest_mode.hpp): the dt at which
+/// M - (dt/2) C - (dt^2/4) K stops being positive definite along it, estimated by power iteration;
+/// never below bound (the points' stable_time_step_3d), which it refines. For a brick in a wall
+/// the Gershgorin row sums are 2 to 3 times below it. body: the body that moves most in the mode.
+CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points,
+                                             const CriticalTimeStep3d& bound);
+
+/// The limits at the start (world/world_3d_start.hpp).
+struct StartTimeStep3d {
+    CriticalTimeStep3d proven;        ///< of the contacts at the start: every dt below it is stable
+    CriticalTimeStep3d highest_mode;  ///< of the contacts at the start: the estimated limit (>= proven)
+    CriticalTimeStep3d landing;       ///< the highest mode's limit of the bodies touching nothing, landing flat
+};
 
 }  // namespace blockdem

@@ -105,11 +105,12 @@ std::vector<std::string> run_warnings(const World& w) {
                           w.stability.max_overlap_pair_a, w.stability.max_overlap_pair_b);
 }
 
-nlohmann::json run_checks_3d(const World3d& w, double start_bound_s, double max_overlap_ratio, double max_energy_error) {
+nlohmann::json run_checks_3d(const World3d& w, double start_limit_s, double max_overlap_ratio, double max_energy_error) {
     const StabilityWatch3d& s = w.stability;
     nlohmann::json j;
-    j["time_step"] = time_step_check(w.dt_s, start_bound_s, s.least_limit_s, s.least_limit_body, s.least_limit_time_s,
+    j["time_step"] = time_step_check(w.dt_s, start_limit_s, s.least_limit_s, s.least_limit_body, s.least_limit_time_s,
                                      s.first_exceeded_s);
+    j["time_step"]["proven_stable_below_s"] = finite_or_null(s.start_bound_s);
     // (The pair's names only where an overlap was seen: a world without bodies has none to name.)
     const bool seen = s.max_overlap_ratio > 0.0;
     j["overlap"] = overlap_check(s.max_overlap_ratio, s.max_overlap_m, s.max_overlap_time_s,

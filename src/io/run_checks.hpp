@@ -29,10 +29,10 @@ nlohmann::json run_checks(const World& w);
 /// One sentence per problem found (empty: nothing to warn about).
 std::vector<std::string> run_warnings(const World& w);
 
-/// The 3-D run's "checks" object (the same keys as 2-D's but proven_stable_below_s): its start
-/// bound, the live bound's watch, the deepest overlap and the energy balance
+/// The 3-D run's "checks" object (the same keys as 2-D's): its start limit (the highest mode's)
+/// and proven bound, the live limit's watch, the deepest overlap and the energy balance
 /// (world/run_checks_3d.hpp), each with the threshold it is judged by.
-nlohmann::json run_checks_3d(const World3d& w, double start_bound_s, double max_overlap_ratio, double max_energy_error);
+nlohmann::json run_checks_3d(const World3d& w, double start_limit_s, double max_overlap_ratio, double max_energy_error);
 
 /// The 3-D run's warnings, the same sentences as run_warnings' (empty: nothing to warn about).
 std::vector<std::string> run_warnings_3d(const World3d& w);

@@ -28,7 +28,7 @@ struct LoadedScenario3d {
     World3d world;                    ///< at t = 0, dt set
     double duration_s = 0.0;          ///< [s]
     double output_interval_s = 1e-3;  ///< [s] between rows of history.csv and energy.csv
-    double critical_dt_s = 0.0;       ///< [s] the stable bound at the start (infinite: none)
+    double critical_dt_s = 0.0;       ///< [s] the highest contact mode's limit at the start (infinite: no contact)
     double max_energy_error = 0.5;    ///< [-] stop when the balance error exceeds it (as 2-D)
     double max_overlap_ratio = 0.25;  ///< [-] stop when an overlap exceeds it of the thinner body's least width
     OutputSettings output;            ///< [output] vtk, vtk_interval

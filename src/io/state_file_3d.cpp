@@ -69,6 +69,10 @@ void write_contacts(StateGroup g, const World3d& w) {
 }
 
 void write_stability(StateGroup g, const StabilityWatch3d& s) {
+    g.set("start_bound_s", s.start_bound_s);
+    g.set("limit_ratio", s.limit_ratio);
+    g.set("ratio_bound_s", s.ratio_bound_s);
+    g.set("estimates", s.estimates);
     g.set("least_limit_s", s.least_limit_s);
     g.set("least_limit_body", s.least_limit_body);
     g.set("least_limit_time_s", s.least_limit_time_s);
@@ -155,8 +159,15 @@ std::vector<ContactPoint3d> read_contacts_3d(const StateGroup& g, std::size_t bo
     return out;
 }
 
-StabilityWatch3d read_stability_3d(const StateGroup& g) {
-    StabilityWatch3d s;
+// Over the watch the scenario started (its start bound and ratio): a state saved before the live
+// limit was the highest mode's lacks the ratio, which the scenario's start then gives.
+StabilityWatch3d read_stability_3d(const StateGroup& g, StabilityWatch3d s) {
+    if (g.has("limit_ratio")) {
+        s.start_bound_s = g.number("start_bound_s");
+        s.limit_ratio = g.number("limit_ratio");
+        s.ratio_bound_s = g.number("ratio_bound_s");
+        s.estimates = g.integer("estimates");
+    }
     s.least_limit_s = g.number("least_limit_s");
     s.least_limit_body = g.text("least_limit_body");
     s.least_limit_time_s = g.number("least_limit_time_s");
@@ -255,7 +266,7 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
                                             dt_s, scenario.string(), w.dt_s));
     replace_contacts(w, read_contacts_3d(root.open_group("contacts3d"), w.bodies.size()));
     w.ledger = read_ledger(root.open_group("energy"));
-    w.stability = read_stability_3d(root.open_group("stability3d"));
+    w.stability = read_stability_3d(root.open_group("stability3d"), w.stability);
     if (w.stability.max_overlap_body_a >= w.bodies.size() || w.stability.max_overlap_body_b >= w.bodies.size())
         throw InputError(where, "not a readable blockdem state file: /stability3d/max_overlap_body_a or _b names no body");
     if (root.has("domain3d")) read_domain(root.open_group("domain3d"), w);  // (files of earlier versions lack it)

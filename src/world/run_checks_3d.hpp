@@ -4,9 +4,11 @@
 // sinking into each other (a contact too soft for its load: the rigid-block model no longer
 // holds); and, as the 2-D StabilityWatch, the stable step of the live contacts, re-evaluated
 // every 32 steps: a body landing on a lighter one, or a stack gaining points, may need a smaller
-// dt than the start's contacts did. Going above it does not stop the run (the bound is 1.3 to 3
-// times below the true limit, docs/physics.md); it is a warning in summary.json, and the
-// energy stop names it. What they found is reported by io/run_checks.hpp (run_checks_3d,
+// dt than the start's contacts did. The live limit is the live contacts' proven bound times the
+// ratio of the highest mode's limit to that bound, estimated at the start and again on the live
+// contacts when their layout has changed (dynamics/critical_time_step_3d.hpp). Going above it
+// does not stop the run (the highest mode's limit is an estimate); it is a warning in
+// summary.json, and the energy stop names it. What they found is reported by io/run_checks.hpp (run_checks_3d,
 // run_warnings_3d), as the 2-D run's.
 #include <cstdint>
 #include <string>
@@ -16,17 +18,19 @@
 
 namespace blockdem {
 
-/// Throws SimulationError naming the error, the time, the fastest body, dt and the live stable
-/// bound when the balance error exceeds max_error (after the first 10 steps, whose terms are
-/// all near zero).
-void check_energy_balance_3d(const World3d& w, double max_error, double start_bound_s);
+/// Throws SimulationError naming the error, the time, the fastest body, dt and the stable limits
+/// (start_limit_s at the start, the live one now) when the balance error exceeds max_error (after
+/// the first 10 steps, whose terms are all near zero).
+void check_energy_balance_3d(const World3d& w, double max_error, double start_limit_s);
+
 
 /// Every this many steps the live bound is evaluated (as in 2-D: a contact configuration lasts
 /// far longer than 32 steps; one bound costs about half a step: 1.7 % of the brick wall example).
 inline constexpr std::int64_t live_limit_every_3d = 32;
 
-/// At every live_limit_every_3d-th step: the bound of w's contacts (dynamics/critical_time_step_3d.hpp)
-/// into w.stability, its least value and when dt first went above it.
+/// At every live_limit_every_3d-th step: the limit of w's contacts (their proven bound times the
+/// watch's ratio, estimated afresh as the header says) into w.stability, its least value and when
+/// dt first went above it.
 void watch_live_time_step_3d(World3d& w);
 
 /// [m] each body's least width: the least extent over its face normals (exact for boxes and

@@ -168,10 +168,16 @@ struct WorldScratch3d {
 /// 2-D StabilityWatch: a body landing on a lighter one, or a stack gaining points, may need a
 /// smaller dt than the start did.
 struct StabilityWatch3d {
-    double least_limit_s = 0.0;          ///< [s] least live bound seen; 0: not yet evaluated
+    double start_bound_s = 0.0;          ///< [s] the proven bound of the start contacts (infinite: none)
+    /// [-] the highest mode's limit over the proven bound, for the contacts it was last estimated
+    /// on (the start's, or live ones): the live limit is the live bound times it; 0: none yet
+    double limit_ratio = 0.0;
+    double ratio_bound_s = 0.0;          ///< [s] the proven bound of the contacts the ratio was estimated on
+    std::int64_t estimates = 0;          ///< highest-mode estimates made on live contacts
+    double least_limit_s = 0.0;          ///< [s] least live limit seen; 0: not yet evaluated
     std::string least_limit_body;        ///< the body that set it
     double least_limit_time_s = 0.0;     ///< [s] when
-    double first_exceeded_s = -1.0;      ///< [s] first time dt was above the live bound; -1: never
+    double first_exceeded_s = -1.0;      ///< [s] first time dt was above the live limit; -1: never
     std::string exceeded_body;           ///< the body whose contacts were too stiff then
     double max_overlap_ratio = 0.0;      ///< [-] deepest overlap / least width of the thinner body of its pair
     double max_overlap_m = 0.0;          ///< [m] that overlap

@@ -75,10 +75,52 @@ std::optional<World3d> probed(const World3d& w) {
 
 }  // namespace
 
-CriticalTimeStep3d start_time_step_3d(const World3d& w) {
+namespace {
+
+// A dynamic body that touches nothing at the start (dropped, thrown) lands, at the stiffest, flat
+// on its lowest face on a fixed body: points at that face's corners, each with its share of the
+// 4 kn a face lying on another carries (geometry/corner_share_3d.hpp), the pair's reduced mass the
+// body's own. As 2-D's landing (dynamics/critical_time_step.hpp), so that the step derived for a
+// model with falling bodies is one they can land with. None without a fixed or driven body.
+void add_landings(const World3d& probe, std::vector<ContactPoint3d>& points) {
+    std::uint32_t ground = 0;
+    while (ground < probe.bodies.size() && probe.kinds[ground] == BodyKind3d::dynamic) ++ground;
+    if (ground == probe.bodies.size()) return;
+    std::vector<bool> touches(probe.bodies.size(), false);
+    for (const ContactPoint3d& c : probe.contacts) touches[c.key.body_a] = touches[c.key.body_b] = true;
+    for (std::uint32_t i = 0; i < probe.bodies.size(); ++i) {
+        if (probe.kinds[i] != BodyKind3d::dynamic || touches[i]) continue;
+        const RigidBody3d& b = probe.bodies[i];
+        std::size_t lowest = 0;
+        for (std::size_t f = 1; f < b.shape.faces.size(); ++f)
+            if (rotate(b.orientation, b.shape.face_normals[f]).z < rotate(b.orientation, b.shape.face_normals[lowest]).z)
+                lowest = f;
+        const std::vector<std::size_t>& corners = b.shape.faces[lowest];
+        const bool ground_first = ground < i;
+        for (std::uint32_t k = 0; k < corners.size(); ++k) {
+            ContactPoint3d c;
+            c.key = {std::min(ground, i), std::max(ground, i), k, k};
+            c.point_m = world_vertex(b, corners[k]);
+            c.normal = ground_first ? Vec3{0, 0, 1} : Vec3{0, 0, -1};  // from a to b
+            c.stiffness_share = 4.0 / static_cast<double>(corners.size());
+            points.push_back(c);
+        }
+    }
+}
+
+}  // namespace
+
+StartTimeStep3d start_time_step_3d(const World3d& w) {
     const std::optional<World3d> probe = probed(w);
-    if (!probe) return {.dt_s = std::numeric_limits<double>::infinity()};
-    return live_time_step_3d(*probe);
+    constexpr double none = std::numeric_limits<double>::infinity();
+    if (!probe) return {.proven = {.dt_s = none}, .highest_mode = {.dt_s = none}, .landing = {.dt_s = none}};
+    StartTimeStep3d s;
+    s.proven = stable_time_step_3d(*probe, probe->contacts);
+    s.highest_mode = highest_mode_time_step_3d(*probe, probe->contacts, s.proven);
+    std::vector<ContactPoint3d> landings;
+    add_landings(*probe, landings);
+    s.landing = highest_mode_time_step_3d(*probe, landings, stable_time_step_3d(*probe, landings));
+    return s;
 }
 
 std::vector<ContactPoint3d> start_contacts_3d(const World3d& w) {
@@ -86,24 +128,36 @@ std::vector<ContactPoint3d> start_contacts_3d(const World3d& w) {
     return probe ? std::move(probe->contacts) : std::vector<ContactPoint3d>{};
 }
 
-CriticalTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety, double output_interval_s) {
-    const CriticalTimeStep3d limit = start_time_step_3d(w);
+void start_live_watch_3d(StabilityWatch3d& watch, const StartTimeStep3d& start) {
+    watch.start_bound_s = start.proven.dt_s;
+    if (!std::isfinite(start.proven.dt_s)) return;
+    watch.limit_ratio = start.highest_mode.dt_s / start.proven.dt_s;
+    watch.ratio_bound_s = start.proven.dt_s;
+}
+
+StartTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety, double output_interval_s) {
+    const StartTimeStep3d start = start_time_step_3d(w);
+    start_live_watch_3d(w.stability, start);
+    // A given dt is refused only against the contacts there are; a derived one is also safe for
+    // the landings there may be.
+    const CriticalTimeStep3d& limit = dt_s || start.highest_mode.dt_s <= start.landing.dt_s ? start.highest_mode : start.landing;
     if (dt_s) {
         w.dt_s = *dt_s;
         if (w.dt_s > limit.dt_s)
-            throw ModelError(fmt::format("time step dt = {:g} s is above the stable limit {:.4g} s of the contacts at the "
-                                         "start (mostly body '{}': frequency {:.4g} rad/s, damping ratio {:.3g}); use "
-                                         "dt <= {:.3g} s",
+            throw ModelError(fmt::format("time step dt = {:g} s is above the stable limit {:.4g} s of the highest contact "
+                                         "mode at the start (mostly body '{}': frequency {:.4g} rad/s, damping ratio "
+                                         "{:.3g}); use dt <= {:.3g} s (every dt <= {:.3g} s is proven stable)",
                                          w.dt_s, limit.dt_s, w.bodies[limit.body].name, limit.omega_rad_s, limit.h,
-                                         default_dt_safety * limit.dt_s));
-        return limit;
+                                         default_dt_safety * limit.dt_s, start.proven.dt_s));
+        return start;
     }
     if (!std::isfinite(limit.dt_s))
-        throw ModelError("cannot derive the time step: no body rests on another at the start; give simulation.dt");
+        throw ModelError("cannot derive the time step: no body rests on another at the start, and none can land on a "
+                         "fixed or driven body; give simulation.dt");
     const double largest_s = dt_safety * limit.dt_s;
     const double steps = std::ceil(output_interval_s / largest_s);
     w.dt_s = steps <= 1e9 ? std::min(largest_s, output_interval_s / steps) : largest_s;
-    return limit;
+    return start;
 }
 
 }  // namespace blockdem

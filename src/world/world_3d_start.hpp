@@ -1,7 +1,8 @@
 #pragma once
 // What a 3-D run checks before its first step, as build_world does in 2-D (world/world.cpp):
-// no two bodies overlap at t = 0, and the time step is below the stable bound of the contacts the
-// model starts with (dynamics/critical_time_step_3d.hpp).
+// no two bodies overlap at t = 0, and the time step is below the stable limit of the contacts the
+// model starts with (dynamics/critical_time_step_3d.hpp: the highest mode's limit, and the proven
+// bound below it).
 //
 // Bodies placed touching (drums stacked face on face, a box on the table) have no contact point
 // at t = 0: the narrow phase makes points only where the overlap is positive. So the bound is
@@ -12,8 +13,12 @@
 // a tall stack's upper courses count as its lowest do. The springs are linear, so the bound does
 // not depend on how far they are compressed, only on which points exist. The probe sees every
 // touching face closed at once, so its bound is on the safe side of the loaded model's (a wall's
-// head and collar joints, some open at any moment once settled: docs/3d.md). A model that starts with no body on another (a drop from a height) has
-// no bound at the start, and the time step must then be given, as in 2-D.
+// head and collar joints, some open at any moment once settled: docs/3d.md). A dynamic body that
+// touches nothing in the probe (dropped from a height) is taken as landing flat on its lowest face
+// on a fixed or driven body, as 2-D's landing; a dt derived by the tool is safe for those landings
+// too, a given one is refused only against the contacts there are (a hull's lowest face at the
+// start need not be one it comes to rest on, and the live check watches the landings it makes). A
+// model with neither a resting body nor one to land on has no limit, and dt must then be given.
 #include <optional>
 #include <vector>
 
@@ -26,17 +31,23 @@ namespace blockdem {
 /// round-off (1e-9 of the smaller body's size).
 void check_no_initial_overlap_3d(const World3d& w);
 
-/// The stable bound at the start, from the probe above (dt_s infinite: no point at the start).
-CriticalTimeStep3d start_time_step_3d(const World3d& w);
+/// The stable limits at the start, from the probe above: the proven bound and the highest mode's
+/// limit (dt_s infinite: no point at the start).
+StartTimeStep3d start_time_step_3d(const World3d& w);
 
 /// The probe's contact points (above): those the loaded model at rest carries, with each point's
 /// share of its pair's reduced mass (empty: no dynamic body). For `blockdem check`.
 std::vector<ContactPoint3d> start_contacts_3d(const World3d& w);
 
-/// Sets w.dt_s: the given dt, refused (ModelError, naming the body of the bound) above the bound;
-/// or dt_safety times the bound, rounded down to a whole number of steps per output interval.
-/// Returns the bound.
-CriticalTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety,
+/// The live watch's start (world/run_checks_3d.hpp): the proven bound of the start contacts and the
+/// ratio of their highest mode's limit to it (none: estimated on the live contacts when they exist).
+void start_live_watch_3d(StabilityWatch3d& watch, const StartTimeStep3d& start);
+
+/// Sets w.dt_s: the given dt, refused (ModelError, naming the body of the mode) above the start
+/// contacts' highest-mode limit; or dt_safety times the lesser of that limit and the landings',
+/// rounded down to a whole number of steps per output interval. Starts the live watch from the
+/// limits (world/run_checks_3d.hpp). Returns the limits.
+StartTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety,
                                     double output_interval_s);
 
 }  // namespace blockdem
