@@ -158,24 +158,18 @@ void print_time_step(const LoadedScenario3d& s) {
     const long long steps = std::llround(s.duration_s / w.dt_s);
     const StartTimeStep3d start = start_time_step_3d(w);
     if (!std::isfinite(s.critical_dt_s)) {
-        fmt::print("time step: dt = {:.4g} s; no stable limit at the start: no body rests on another; {} steps\n", w.dt_s,
-                   steps);
+        fmt::print("time step: dt = {:.4g} s; no stable limit at the start: no body rests on another, none can land on a "
+                   "fixed or driven body; {} steps\n",
+                   w.dt_s, steps);
     } else {
         const CriticalTimeStep3d& limit = start.highest_mode;
         fmt::print("time step: dt = {:.4g} s; stable limit {:.6g} s (dt / limit = {:.3f}); {} steps\n", w.dt_s,
                    s.critical_dt_s, w.dt_s / s.critical_dt_s, steps);
-        fmt::print("  (the limit of the highest contact mode at the start, mostly body '{}': frequency {:.4g} rad/s, "
-                   "damping ratio {:.3g}; proven stable below {:.6g} s; dynamics/critical_time_step_3d.hpp)\n",
+        fmt::print("  (the limit of the highest contact mode at the start, a body touching nothing taken as landing flat "
+                   "on a fixed body; mostly body '{}': frequency {:.4g} rad/s, damping ratio {:.3g}; proven stable below "
+                   "{:.6g} s; dynamics/critical_time_step_3d.hpp)\n",
                    w.bodies[limit.body].name, limit.omega_rad_s, limit.h, start.proven.dt_s);
     }
-    // (A given dt is checked against the contacts at the start only; a derived one is also safe for
-    // the landings: world/world_3d_start.hpp.)
-    if (std::isfinite(start.landing.dt_s))
-        fmt::print("  bodies touching nothing at the start, taken as landing flat on a fixed body: limit {:.6g} s (mostly "
-                   "body '{}'){}\n",
-                   start.landing.dt_s, w.bodies[start.landing.body].name,
-                   w.dt_s > start.landing.dt_s ? "; dt is above it: the run's live check will tell if a landing needs less"
-                                               : "");
 }
 
 void print_motion(const World3d& w, double end_s) {

@@ -38,11 +38,11 @@ CriticalTimeStep3d live_time_step_3d(const World3d& w);
 CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points,
                                              const CriticalTimeStep3d& bound);
 
-/// The limits at the start (world/world_3d_start.hpp).
+/// The limits at the start (world/world_3d_start.hpp: the contacts at the start and the landings
+/// of the bodies that touch nothing).
 struct StartTimeStep3d {
-    CriticalTimeStep3d proven;        ///< of the contacts at the start: every dt below it is stable
-    CriticalTimeStep3d highest_mode;  ///< of the contacts at the start: the estimated limit (>= proven)
-    CriticalTimeStep3d landing;       ///< the highest mode's limit of the bodies touching nothing, landing flat
+    CriticalTimeStep3d proven;        ///< every dt below it is stable
+    CriticalTimeStep3d highest_mode;  ///< the estimated limit (>= proven)
 };
 
 }  // namespace blockdem

@@ -83,11 +83,12 @@ namespace {
 // body's own. As 2-D's landing (dynamics/critical_time_step.hpp), so that the step derived for a
 // model with falling bodies is one they can land with. None without a fixed or driven body.
 void add_landings(const World3d& probe, std::vector<ContactPoint3d>& points) {
+    // (points holds the probe's contacts: the bodies they touch do not land.)
     std::uint32_t ground = 0;
     while (ground < probe.bodies.size() && probe.kinds[ground] == BodyKind3d::dynamic) ++ground;
     if (ground == probe.bodies.size()) return;
     std::vector<bool> touches(probe.bodies.size(), false);
-    for (const ContactPoint3d& c : probe.contacts) touches[c.key.body_a] = touches[c.key.body_b] = true;
+    for (const ContactPoint3d& c : points) touches[c.key.body_a] = touches[c.key.body_b] = true;
     for (std::uint32_t i = 0; i < probe.bodies.size(); ++i) {
         if (probe.kinds[i] != BodyKind3d::dynamic || touches[i]) continue;
         const RigidBody3d& b = probe.bodies[i];
@@ -113,13 +114,12 @@ void add_landings(const World3d& probe, std::vector<ContactPoint3d>& points) {
 StartTimeStep3d start_time_step_3d(const World3d& w) {
     const std::optional<World3d> probe = probed(w);
     constexpr double none = std::numeric_limits<double>::infinity();
-    if (!probe) return {.proven = {.dt_s = none}, .highest_mode = {.dt_s = none}, .landing = {.dt_s = none}};
+    if (!probe) return {.proven = {.dt_s = none}, .highest_mode = {.dt_s = none}};
+    std::vector<ContactPoint3d> points = probe->contacts;
+    add_landings(*probe, points);
     StartTimeStep3d s;
-    s.proven = stable_time_step_3d(*probe, probe->contacts);
-    s.highest_mode = highest_mode_time_step_3d(*probe, probe->contacts, s.proven);
-    std::vector<ContactPoint3d> landings;
-    add_landings(*probe, landings);
-    s.landing = highest_mode_time_step_3d(*probe, landings, stable_time_step_3d(*probe, landings));
+    s.proven = stable_time_step_3d(*probe, points);
+    s.highest_mode = highest_mode_time_step_3d(*probe, points, s.proven);
     return s;
 }
 
@@ -138,9 +138,7 @@ void start_live_watch_3d(StabilityWatch3d& watch, const StartTimeStep3d& start) 
 StartTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety, double output_interval_s) {
     const StartTimeStep3d start = start_time_step_3d(w);
     start_live_watch_3d(w.stability, start);
-    // A given dt is refused only against the contacts there are; a derived one is also safe for
-    // the landings there may be.
-    const CriticalTimeStep3d& limit = dt_s || start.highest_mode.dt_s <= start.landing.dt_s ? start.highest_mode : start.landing;
+    const CriticalTimeStep3d& limit = start.highest_mode;
     if (dt_s) {
         w.dt_s = *dt_s;
         if (w.dt_s > limit.dt_s)

@@ -15,10 +15,8 @@
 // touching face closed at once, so its bound is on the safe side of the loaded model's (a wall's
 // head and collar joints, some open at any moment once settled: docs/3d.md). A dynamic body that
 // touches nothing in the probe (dropped from a height) is taken as landing flat on its lowest face
-// on a fixed or driven body, as 2-D's landing; a dt derived by the tool is safe for those landings
-// too, a given one is refused only against the contacts there are (a hull's lowest face at the
-// start need not be one it comes to rest on, and the live check watches the landings it makes). A
-// model with neither a resting body nor one to land on has no limit, and dt must then be given.
+// on a fixed or driven body, as 2-D's landing, and its points join the start's. A model with
+// neither a resting body nor one to land on has no limit, and dt must then be given.
 #include <optional>
 #include <vector>
 
@@ -43,10 +41,10 @@ std::vector<ContactPoint3d> start_contacts_3d(const World3d& w);
 /// ratio of their highest mode's limit to it (none: estimated on the live contacts when they exist).
 void start_live_watch_3d(StabilityWatch3d& watch, const StartTimeStep3d& start);
 
-/// Sets w.dt_s: the given dt, refused (ModelError, naming the body of the mode) above the start
-/// contacts' highest-mode limit; or dt_safety times the lesser of that limit and the landings',
-/// rounded down to a whole number of steps per output interval. Starts the live watch from the
-/// limits (world/run_checks_3d.hpp). Returns the limits.
+/// Sets w.dt_s: the given dt, refused (ModelError, naming the body of the mode) above the start's
+/// highest-mode limit; or dt_safety times that limit, rounded down to a whole number of steps per
+/// output interval. Starts the live watch from the limits (world/run_checks_3d.hpp). Returns the
+/// limits.
 StartTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety,
                                     double output_interval_s);
 

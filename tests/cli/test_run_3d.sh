@@ -321,14 +321,15 @@ expect_in "$out" "above the stable limit of the live contacts"
 import json, sys
 coarse = json.load(open(f"{sys.argv[1]}/summary.json"))
 step = coarse["checks"]["time_step"]
-# Nothing touches at the start: no limit there (a given dt is not refused), dt half the limit of
-# a cube landing flat on the table, 3.5949e-4 s, rounded down to whole steps of the output interval.
-assert step["proven_stable_below_s"] is None and step["stable_limit_at_start_s"] is None, step
-assert 0.98 * 0.5 * 3.5949e-4 < step["dt_s"] <= 0.5 * 3.5949e-4 * (1 + 1e-4), step
+# Nothing touches at the start: the limit is a cube's landing flat on the table, 3.5949e-4 s
+# (the proven bound below it), and dt half of it, rounded down to whole steps of the output interval.
+assert abs(step["stable_limit_at_start_s"] - 3.5949e-4) < 1e-4 * 3.5949e-4, step
+assert step["proven_stable_below_s"] < step["stable_limit_at_start_s"], step
+assert 0.98 * 0.5 * 3.5949e-4 < step["dt_s"] <= 0.5 * step["stable_limit_at_start_s"] * (1 + 1e-12), step
 assert step["dt_above_live_limit"] is True and step["least_live_limit_body"] in ("low", "middle", "top"), step
 # The lowest gap closes after sqrt(2 x 0.001 / 9.81) = 0.014 s; the watch looks every 32 steps.
 assert 0.014 < step["dt_above_live_limit_from_s"] < 0.3, step
-assert step["least_live_limit_s"] < step["dt_s"], step
+assert step["least_live_limit_s"] < step["dt_s"] < step["stable_limit_at_start_s"], step
 assert any("live contacts" in w for w in coarse["warnings"]), coarse.get("warnings")
 energy = coarse["checks"]["energy"]
 assert energy["balance_error_relative"] > 0.01 and energy["warning_ratio"] == 0.01 and energy["stop_ratio"] == 0.5, energy
