@@ -51,13 +51,13 @@ std::string value_text(const std::optional<double>& v) { return v ? fmt::format(
 std::string change_text(const std::optional<double>& v) { return v ? fmt::format("{:.2f}%", 100.0 * *v) : "-"; }
 
 void print_dt_table(const BodyConvergence& b, const Labels& label) {
-    fmt::print("  {:<22}{:>11}{:>11}{:>11}{:>13}{:>13}  {}\n", "quantity", "dt", "dt/2", "dt/4", "dt -> dt/2", "dt/2 -> dt/4",
+    fmt::print("  {:<22}{:>16}{:>16}{:>16}{:>13}{:>13}  {}\n", "quantity", "dt", "dt/2", "dt/4", "dt -> dt/2", "dt/2 -> dt/4",
                "");
     for (const QuantityComparison& q : b.dt) {
         std::vector<std::string> v;
         for (std::size_t i = 0; i < 3; ++i) v.push_back(q.discrete ? q.words[i].value_or("-") : value_text(q.values[i]));
         const std::string note = !q.judged ? "(not judged)" : q.converged ? "ok" : "NOT CONVERGED";
-        fmt::print("  {:<22}{:>11}{:>11}{:>11}{:>13}{:>13}  {}\n", label.of(q.quantity), v[0], v[1], v[2],
+        fmt::print("  {:<22}{:>16}{:>16}{:>16}{:>13}{:>13}  {}\n", label.of(q.quantity), v[0], v[1], v[2],
                    q.discrete ? "" : change_text(q.changes[0]), q.discrete ? "" : change_text(q.changes[1]), note);
     }
 }
@@ -80,7 +80,7 @@ void print_stiffness(const BodyConvergence& b, const Labels& label) {
     for (const StiffnessComparison& s : b.stiffness) {
         std::vector<std::string> v;
         for (std::size_t i = 0; i < 3; ++i) v.push_back(s.discrete ? s.words[i].value_or("-") : value_text(s.values[i]));
-        fmt::print("    {:<22}{:>11}{:>11}{:>11}{:>13}  {}\n", label.of(s.quantity), v[0], v[1], v[2],
+        fmt::print("    {:<22}{:>16}{:>16}{:>16}{:>13}  {}\n", label.of(s.quantity), v[0], v[1], v[2],
                    s.discrete ? "" : change_text(s.max_change), !s.judged ? "(not judged)" : s.sensitive ? "SENSITIVE" : "ok");
     }
 }

@@ -33,8 +33,9 @@ CriticalTimeStep3d live_time_step_3d(const World3d& w);
 
 /// The limit of the points' highest mode (dynamics/highest_mode.hpp): the dt at which
 /// M - (dt/2) C - (dt^2/4) K stops being positive definite along it, estimated by power iteration;
-/// never below bound (the points' stable_time_step_3d), which it refines. For a brick in a wall
-/// the Gershgorin row sums are 2 to 3 times below it. body: the body that moves most in the mode.
+/// never below bound (the points' stable_time_step_3d), which it refines. The Gershgorin row sums
+/// are 1.7 to 2.1 times below it for a block on its base, 3.7 to 4 times for a brick in a wall
+/// (docs/3d.md). body: the body that moves most in the mode.
 CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points,
                                              const CriticalTimeStep3d& bound);
 

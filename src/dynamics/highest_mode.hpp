@@ -8,7 +8,8 @@
 // 1; the trial dt is updated and the iteration repeated until it settles.
 //
 // The Gershgorin row sums (the proven bound) add every coupling with the same sign, so for a
-// brick in a wall with six neighbours they are 2 to 3 times below this limit. A Rayleigh quotient
+// brick in a wall with six neighbours they are 2 to 3 times below this limit in 2-D, 3.7 to 4 times
+// in 3-D (docs/physics.md, docs/3d.md). A Rayleigh quotient
 // is never above the top eigenvalue, so an unconverged estimate errs towards a larger dt: the
 // result is an estimate, and the proven bound stays the guarantee.
 #include <cmath>

@@ -38,7 +38,7 @@ void watch_live_time_step_3d(World3d& w) {
     if (!std::isfinite(bound.dt_s)) return;  // (no dynamic body carries a point)
     StabilityWatch3d& watch = w.stability;
     // The limit is the proven bound times the ratio of the highest mode's limit to it, a ratio that
-    // depends on the layout (1.0 to 1.3 for a block on its base, 2 to 3 for a brick with six
+    // depends on the layout (1.7 to 2.1 for a block on its base, 3.7 to 4 for a brick with six
     // neighbours) much more than on the stiffness. It is estimated afresh on the live contacts
     // when none is known (no contact at the start) and when a scaled limit below dt rests on a
     // bound that has fallen by re_estimate_fall since the ratio's own: a body landing on another,
