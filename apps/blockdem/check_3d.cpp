@@ -156,7 +156,7 @@ void print_derived(const World3d& w, std::size_t shown = 20) {
 void print_time_step(const LoadedScenario3d& s) {
     const World3d& w = s.world;
     const long long steps = std::llround(s.duration_s / w.dt_s);
-    const StartTimeStep3d start = start_time_step_3d(w);
+    const StartTimeStep3d& start = s.start;
     if (!std::isfinite(s.critical_dt_s)) {
         fmt::print("time step: dt = {:.4g} s; no stable limit at the start: no body rests on another, none can land on a "
                    "fixed or driven body; {} steps\n",
@@ -165,9 +165,11 @@ void print_time_step(const LoadedScenario3d& s) {
         const CriticalTimeStep3d& limit = start.highest_mode;
         fmt::print("time step: dt = {:.4g} s; stable limit {:.6g} s (dt / limit = {:.3f}); {} steps\n", w.dt_s,
                    s.critical_dt_s, w.dt_s / s.critical_dt_s, steps);
-        fmt::print("  (the limit of the highest contact mode at the start, a body touching nothing taken as landing flat "
-                   "on a fixed body; mostly body '{}': frequency {:.4g} rad/s, damping ratio {:.3g}; proven stable below "
-                   "{:.6g} s; dynamics/critical_time_step_3d.hpp)\n",
+        fmt::print("  (the limit of the highest contact mode at the start{}, mostly body '{}': frequency {:.4g} rad/s, "
+                   "damping ratio {:.3g}; proven stable below {:.6g} s; dynamics/critical_time_step_3d.hpp)\n",
+                   start.landing_bodies == 0 ? std::string()
+                                             : fmt::format(" ({} bod{} touching nothing taken as landing flat on a fixed body)",
+                                                           start.landing_bodies, start.landing_bodies == 1 ? "y" : "ies"),
                    w.bodies[limit.body].name, limit.omega_rad_s, limit.h, start.proven.dt_s);
     }
 }

@@ -44,6 +44,7 @@ CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector
 struct StartTimeStep3d {
     CriticalTimeStep3d proven;        ///< every dt below it is stable
     CriticalTimeStep3d highest_mode;  ///< the estimated limit (>= proven)
+    std::uint32_t landing_bodies = 0; ///< bodies touching nothing, taken as landing flat
 };
 
 }  // namespace blockdem

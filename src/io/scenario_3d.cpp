@@ -432,7 +432,8 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     top.reject_unknown_keys();
     try {
         check_no_initial_overlap_3d(s.world);
-        s.critical_dt_s = set_time_step_3d(s.world, settings.dt_s, settings.dt_safety, s.output_interval_s).highest_mode.dt_s;
+        s.start = set_time_step_3d(s.world, settings.dt_s, settings.dt_safety, s.output_interval_s);
+        s.critical_dt_s = s.start.highest_mode.dt_s;
     } catch (const ModelError& e) {
         throw model_error(file, settings.dt_s && std::string(e.what()).starts_with("time step") ? "simulation.dt" : "",
                           e.what());

@@ -11,6 +11,7 @@
 
 #include <toml++/toml.h>
 
+#include "dynamics/critical_time_step_3d.hpp"
 #include "io/output_keys.hpp"
 #include "world/outcome.hpp"
 #include "world/world.hpp"
@@ -29,6 +30,7 @@ struct LoadedScenario3d {
     double duration_s = 0.0;          ///< [s]
     double output_interval_s = 1e-3;  ///< [s] between rows of history.csv and energy.csv
     double critical_dt_s = 0.0;       ///< [s] the highest contact mode's limit at the start (infinite: no contact)
+    StartTimeStep3d start;            ///< the start's limits (world/world_3d_start.hpp), critical_dt_s among them
     double max_energy_error = 0.5;    ///< [-] stop when the balance error exceeds it (as 2-D)
     double max_overlap_ratio = 0.25;  ///< [-] stop when an overlap exceeds it of the thinner body's least width
     OutputSettings output;            ///< [output] vtk, vtk_interval

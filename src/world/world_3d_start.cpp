@@ -84,16 +84,18 @@ namespace {
 // body's own. As 2-D's landing (dynamics/critical_time_step.hpp), so that the step for a model with
 // falling bodies is one they can land with. It is a guess: a body that tumbles and lands on
 // another face may need less (a 0.3 x 0.5 x 0.9 m box: 8.2e-4 s to 1.02e-3 s by face), which the
-// live watch reports. None without a fixed or driven body.
-void add_landings(const World3d& probe, std::vector<ContactPoint3d>& points) {
+// live watch reports. None without a fixed or driven body. Returns the number of landing bodies.
+std::uint32_t add_landings(const World3d& probe, std::vector<ContactPoint3d>& points) {
     // (points holds the probe's contacts: the bodies they touch do not land.)
     std::uint32_t ground = 0;
     while (ground < probe.bodies.size() && probe.kinds[ground] == BodyKind3d::dynamic) ++ground;
-    if (ground == probe.bodies.size()) return;
+    if (ground == probe.bodies.size()) return 0;
     std::vector<bool> touches(probe.bodies.size(), false);
     for (const ContactPoint3d& c : points) touches[c.key.body_a] = touches[c.key.body_b] = true;
+    std::uint32_t landing = 0;
     for (std::uint32_t i = 0; i < probe.bodies.size(); ++i) {
         if (probe.kinds[i] != BodyKind3d::dynamic || touches[i]) continue;
+        ++landing;
         const RigidBody3d& b = probe.bodies[i];
         std::size_t lowest = 0;
         for (std::size_t f = 1; f < b.shape.faces.size(); ++f)
@@ -110,6 +112,7 @@ void add_landings(const World3d& probe, std::vector<ContactPoint3d>& points) {
             points.push_back(c);
         }
     }
+    return landing;
 }
 
 }  // namespace
@@ -119,8 +122,8 @@ StartTimeStep3d start_time_step_3d(const World3d& w) {
     constexpr double none = std::numeric_limits<double>::infinity();
     if (!probe) return {.proven = {.dt_s = none}, .highest_mode = {.dt_s = none}};
     std::vector<ContactPoint3d> points = probe->contacts;
-    add_landings(*probe, points);
     StartTimeStep3d s;
+    s.landing_bodies = add_landings(*probe, points);
     s.proven = stable_time_step_3d(*probe, points);
     s.highest_mode = highest_mode_time_step_3d(*probe, points, s.proven);
     return s;
