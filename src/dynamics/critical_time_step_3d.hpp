@@ -39,6 +39,14 @@ CriticalTimeStep3d live_time_step_3d(const World3d& w);
 CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points,
                                              const CriticalTimeStep3d& bound);
 
+/// Each dynamic body's own 6 x 6 blocks of K~ and C~ (w.contacts, its partners held still) tested
+/// at dt_s: a principal block's top eigenvalue is never above the whole matrix's (Cauchy's
+/// interlacing), so a body whose block is unstable at dt_s makes dt_s unstable for certain,
+/// whatever the layout around it; the single-ratio live watch can miss such a body
+/// (world/run_checks_3d.hpp). Returns the limit of the most unstable body's block (below dt_s),
+/// or infinity when every block is stable at dt_s. About 100 operations a body past the blocks.
+CriticalTimeStep3d body_block_limit_3d(const World3d& w, double dt_s);
+
 /// The limits at the start (world/world_3d_start.hpp: the contacts at the start and the landings
 /// of the bodies that touch nothing).
 struct StartTimeStep3d {

@@ -28,6 +28,10 @@ void check_energy_balance_3d(const World3d& w, double max_error, double start_li
 /// far longer than 32 steps; one bound costs about half a step: 1.7 % of the brick wall example).
 inline constexpr std::int64_t live_limit_every_3d = 32;
 
+/// Every this many looks the bodies' own blocks are tested too (dynamics/critical_time_step_3d.hpp,
+/// body_block_limit_3d): a body above its own limit, which the single ratio can miss.
+inline constexpr std::int64_t own_blocks_every = 4;
+
 /// At every live_limit_every_3d-th step: the limit of w's contacts (their proven bound times the
 /// watch's ratio, estimated afresh as the header says) into w.stability, its least value and when
 /// dt first went above it.

@@ -16,6 +16,7 @@
 #include "geometry/polyhedron.hpp"
 #include "geometry/quaternion.hpp"
 #include "scenes/brick_wall_3d.hpp"
+#include "world/run_checks_3d.hpp"
 #include "world/step_3d.hpp"
 
 namespace blockdem {
@@ -171,6 +172,13 @@ void expect_matches_dense(const World3d& w, const char* what) {
     // settling (1e-3 a trial) and never below the bound.
     EXPECT_LE(proven.dt_s, exact * (1.0 + 1e-9)) << what;
     EXPECT_NEAR(mode.dt_s, exact, 1e-3 * exact) << what;
+    // Each body's own blocks are stable below the whole model's limit (interlacing), and at twice
+    // it at least one is not; its own limit is then at or above the model's.
+    EXPECT_FALSE(std::isfinite(body_block_limit_3d(w, 0.999 * exact).dt_s)) << what;
+    const CriticalTimeStep3d own = body_block_limit_3d(w, 2.0 * exact);
+    std::printf("  the most unstable body's own limit at 2 x the model's: %.6e s (body %u)\n", own.dt_s, own.body);
+    EXPECT_GE(own.dt_s, exact * (1.0 - 1e-3)) << what;
+    EXPECT_LT(own.dt_s, 2.0 * exact) << what;
 }
 
 TEST(HighestMode3d, TurnedDampedBlockOnASlabMatchesTheDenseLimit) {
@@ -185,6 +193,36 @@ TEST(HighestMode3d, TurnedDampedBlockOnASlabMatchesTheDenseLimit) {
     step_3d(w);
     ASSERT_EQ(w.contacts.size(), 4u);
     expect_matches_dense(w, "turned block");
+    // One dynamic body: its blocks are the whole matrix, so its own limit is the model's.
+    const double exact = dense_limit_s(assemble(w, w.contacts));
+    EXPECT_NEAR(body_block_limit_3d(w, 1.01 * exact).dt_s, exact, 1e-3 * exact);
+}
+
+TEST(HighestMode3d, TheLiveWatchSeesABodyAboveItsOwnLimitThatTheRatioHides) {
+    // The turned block at 1.2 times its limit, with the watch holding a ratio of 10 from another
+    // layout (a wall's bricks): the scaled limit, 10 x the proven bound, is above dt and asks for
+    // no new estimate; the block's own 6 x 6 test finds it above its limit, and names it.
+    World3d w;
+    w.contact = {.kn_N_m = 1e7, .ks_N_m = 4e6, .mu = 0.6, .h_n = 0.2, .h_s = 0.8};
+    add_body(w, box("slab", {2.0, 2.0, 0.2}, {0.0, 0.0, -0.1}, 800.0), BodyKind3d::fixed);
+    add_body(w, box("block", {0.3, 0.5, 0.9}, {0.0, 0.0, 0.45 - 1e-5}, 120.0, from_rotation_vector({0.0, 0.0, 0.6})),
+             BodyKind3d::dynamic);
+    w.dt_s = 1e-5;
+    step_3d(w);
+    const double exact = dense_limit_s(assemble(w, w.contacts));
+    w.dt_s = 1.2 * exact;
+    w.stability.limit_ratio = 10.0;
+    w.stability.ratio_bound_s = 1e-9;
+    ASSERT_GT(10.0 * live_time_step_3d(w).dt_s, w.dt_s);
+    w.steps = own_blocks_every * live_limit_every_3d - live_limit_every_3d;  // a look without the blocks
+    watch_live_time_step_3d(w);
+    EXPECT_LT(w.stability.first_exceeded_s, 0.0);
+    w.steps = own_blocks_every * live_limit_every_3d;  // a look with them
+    watch_live_time_step_3d(w);
+    EXPECT_GE(w.stability.first_exceeded_s, 0.0);
+    EXPECT_EQ(w.stability.exceeded_body, "block");
+    EXPECT_NEAR(w.stability.least_limit_s, exact, 1e-3 * exact);
+    EXPECT_EQ(w.stability.estimates, 0);
 }
 
 TEST(HighestMode3d, SmallShakenWallMatchesTheDenseLimit) {
