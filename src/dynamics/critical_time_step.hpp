@@ -54,6 +54,12 @@ CriticalTimeStep stable_time_step(const Bodies& bodies, const std::vector<Stiffn
 /// applies them; rows is scratch (no allocation once sized).
 CriticalTimeStep live_time_step(const World& w, StabilityRows& rows);
 
+/// Each dynamic body's own 3 x 3 blocks of K~ and C~ (the live contact table, its partners held
+/// still) tested at dt_s (dynamics/highest_mode.hpp, BodyBlocks: a body whose blocks are unstable
+/// at dt_s makes it unstable for certain): the limit of the most unstable body's blocks (below
+/// dt_s), or infinity when every body's are stable at dt_s.
+CriticalTimeStep body_block_limit(const World& w, double dt_s);
+
 /// The contact points at the start: every pair of the (built) candidate list that touches, and
 /// a flat landing on a fixed body for a dynamic body that touches nothing.
 std::vector<StiffnessPoint> start_stiffness_points(const World& w);

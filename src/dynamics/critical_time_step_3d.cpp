@@ -180,9 +180,7 @@ void apply_pencil_3d(const World3d& w, const std::vector<ContactPoint3d>& points
 }  // namespace
 
 CriticalTimeStep3d body_block_limit_3d(const World3d& w, double dt_s) {
-    // Each body's 6 x 6 blocks of K~ and C~ (21 entries each, upper triangle row by row).
-    using Block = std::array<double, 21>;
-    std::vector<Block> blocks_k(w.bodies.size(), Block{}), blocks_c(w.bodies.size(), Block{});
+    std::vector<BodyBlocks<6>> blocks(w.bodies.size());
     const std::vector<PointLaw> laws = point_laws(w, w.contacts);
     const std::vector<BodyRoots> roots = body_roots(w);
     for (std::size_t i = 0; i < w.contacts.size(); ++i) {
@@ -198,58 +196,13 @@ CriticalTimeStep3d body_block_limit_3d(const World3d& w, double dt_s) {
                 const Vec3 n = directions[d], q = root.over_sqrt_inertia * cross(lever, n);
                 const double g[6] = {root.over_sqrt_mass * n.x, root.over_sqrt_mass * n.y, root.over_sqrt_mass * n.z,
                                      q.x, q.y, q.z};
-                const double k = d == 0 ? laws[i].kn_N_m : laws[i].ks_N_m, damping = d == 0 ? laws[i].cn_N_s_m : laws[i].cs_N_s_m;
-                int e = 0;
-                for (int r = 0; r < 6; ++r)
-                    for (int col = r; col < 6; ++col, ++e) {
-                        blocks_k[body][e] += k * g[r] * g[col];
-                        blocks_c[body][e] += damping * g[r] * g[col];
-                    }
+                blocks[body].add(g, d == 0 ? laws[i].kn_N_m : laws[i].ks_N_m, d == 0 ? laws[i].cn_N_s_m : laws[i].cs_N_s_m);
             }
         }
     }
-    // At dt, B = (dt^2/4) K~ + (dt/2) C~ of a block is below I iff I - B has a Cholesky factor; the
-    // body whose factor fails with the most negative pivot gets its own limit estimated.
-    std::uint32_t worst = 0;
-    double worst_pivot = 0.0;
-    for (std::uint32_t b = 0; b < w.bodies.size(); ++b) {
-        double m[6][6];
-        int e = 0;
-        for (int r = 0; r < 6; ++r)
-            for (int col = r; col < 6; ++col, ++e)
-                m[r][col] = m[col][r] = (r == col ? 1.0 : 0.0) - (0.25 * dt_s * dt_s * blocks_k[b][e] + 0.5 * dt_s * blocks_c[b][e]);
-        for (int p = 0; p < 6; ++p) {
-            double pivot = m[p][p];
-            for (int q = 0; q < p; ++q) pivot -= m[p][q] * m[p][q];
-            if (pivot <= 0.0) {
-                if (pivot < worst_pivot) worst_pivot = pivot, worst = b;
-                break;
-            }
-            const double root = std::sqrt(pivot);
-            m[p][p] = root;
-            for (int r = p + 1; r < 6; ++r) {
-                double v = m[r][p];
-                for (int q = 0; q < p; ++q) v -= m[r][q] * m[p][q];
-                m[r][p] = v / root;
-            }
-        }
-    }
-    CriticalTimeStep3d least{.dt_s = std::numeric_limits<double>::infinity()};
-    if (worst_pivot == 0.0) return least;
-    const Block& k = blocks_k[worst];
-    const Block& c = blocks_c[worst];
-    const HighestMode mode = highest_mode(6, dt_s, [&](double wk, double wc, const std::vector<double>& x, std::vector<double>& y) {
-        std::fill(y.begin(), y.end(), 0.0);
-        int e = 0;
-        for (int r = 0; r < 6; ++r)
-            for (int col = r; col < 6; ++col, ++e) {
-                const double v = wk * k[e] + wc * c[e];
-                y[r] += v * x[col];
-                if (col != r) y[col] += v * x[r];
-            }
-    });
-    if (mode.found) least = {std::min(mode.dt_s, dt_s), worst, mode.omega_rad_s, mode.h};
-    return least;
+    const auto [body, mode] = most_unstable_body(blocks, dt_s);
+    if (!mode.found) return {.dt_s = std::numeric_limits<double>::infinity()};
+    return {mode.dt_s, static_cast<std::uint32_t>(body), mode.omega_rad_s, mode.h};
 }
 
 CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points,

@@ -12,9 +12,11 @@
 // in 3-D (docs/physics.md, docs/3d.md). A Rayleigh quotient
 // is never above the top eigenvalue, so an unconverged estimate errs towards a larger dt: the
 // result is an estimate, and the proven bound stays the guarantee.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace blockdem {
@@ -78,6 +80,80 @@ HighestMode highest_mode(std::size_t n, double trial_dt_s, Apply&& apply) {
     r.dt_s = dt;
     r.found = true;
     return r;
+}
+
+/// A body's own N x N blocks of K~ and C~ (N = 3 in 2-D, 6 in 3-D), the upper triangle row by
+/// row: the stiffness and damping it sees with its partners held still. A principal block's top
+/// eigenvalue is never above the whole matrix's (Cauchy's interlacing), so a body whose blocks are
+/// unstable at dt makes dt unstable for certain, whatever the layout around it.
+template <int N>
+struct BodyBlocks {
+    static constexpr int entries = N * (N + 1) / 2;
+    double k[entries] = {};  ///< [1/s^2]
+    double c[entries] = {};  ///< [1/s]
+
+    /// Adds k g g^T and c g g^T, g the body's N entries of one direction's g.
+    void add(const double* g, double stiffness, double damping) {
+        int e = 0;
+        for (int r = 0; r < N; ++r)
+            for (int col = r; col < N; ++col, ++e) {
+                k[e] += stiffness * g[r] * g[col];
+                c[e] += damping * g[r] * g[col];
+            }
+    }
+
+    /// The pivot at which the Cholesky factor of I - (dt^2/4) K - (dt/2) C fails (<= 0: the
+    /// blocks are unstable at dt), or 1 when the factor exists.
+    double failing_pivot(double dt_s) const {
+        double m[N][N];
+        int e = 0;
+        for (int r = 0; r < N; ++r)
+            for (int col = r; col < N; ++col, ++e)
+                m[r][col] = m[col][r] = (r == col ? 1.0 : 0.0) - (0.25 * dt_s * dt_s * k[e] + 0.5 * dt_s * c[e]);
+        for (int p = 0; p < N; ++p) {
+            double pivot = m[p][p];
+            for (int q = 0; q < p; ++q) pivot -= m[p][q] * m[p][q];
+            if (pivot <= 0.0) return pivot;
+            const double root = std::sqrt(pivot);
+            m[p][p] = root;
+            for (int r = p + 1; r < N; ++r) {
+                double v = m[r][p];
+                for (int q = 0; q < p; ++q) v -= m[r][q] * m[p][q];
+                m[r][p] = v / root;
+            }
+        }
+        return 1.0;
+    }
+
+    /// The blocks' own limit, from trial_dt_s.
+    HighestMode mode(double trial_dt_s) const {
+        return highest_mode(N, trial_dt_s, [&](double wk, double wc, const std::vector<double>& x, std::vector<double>& y) {
+            std::fill(y.begin(), y.end(), 0.0);
+            int e = 0;
+            for (int r = 0; r < N; ++r)
+                for (int col = r; col < N; ++col, ++e) {
+                    const double v = wk * k[e] + wc * c[e];
+                    y[r] += v * x[col];
+                    if (col != r) y[col] += v * x[r];
+                }
+        });
+    }
+};
+
+/// The body whose blocks are the most unstable at dt_s (the most negative failing pivot) and its
+/// own limit (below dt_s); found = false when every body's blocks are stable at dt_s.
+template <int N>
+std::pair<std::size_t, HighestMode> most_unstable_body(const std::vector<BodyBlocks<N>>& blocks, double dt_s) {
+    std::size_t worst = 0;
+    double worst_pivot = 0.0;
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const double pivot = blocks[b].failing_pivot(dt_s);
+        if (pivot < worst_pivot) worst_pivot = pivot, worst = b;
+    }
+    if (worst_pivot == 0.0) return {0, HighestMode{}};
+    HighestMode m = blocks[worst].mode(dt_s);
+    m.dt_s = std::min(m.dt_s, dt_s);
+    return {worst, m};
 }
 
 /// The body that moves most in a mode of dofs_per_body entries a body.

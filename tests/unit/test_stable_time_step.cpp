@@ -45,6 +45,22 @@ TEST(StableTimeStep, HighestModeOfABlockOnTwoCornersMatchesTheExactEigenvalue) {
     }
 }
 
+// One dynamic body: its own 3 x 3 blocks are the whole matrices, so the watch's per-body test
+// (body_block_limit, run every 128 steps) finds the exact limit once dt is above it, and nothing
+// below it.
+TEST(StableTimeStep, ABodysOwnBlocksGiveItsLimitOnceDtIsAbove) {
+    World w = resting_block(1e8, 5e7, 0.4, 1.6, 0.0, 0.0);
+    const double m = w.bodies.mass_kg[1];
+    const double exact = 2.0 / std::sqrt(exact_highest_omega_squared(1e8, 5e7, m, w.bodies.inertia_kg_m2[1], 0.2, 0.8));
+    // (Placed touching, the corners press into the base under gravity within some steps.)
+    for (int k = 0; k < 1000 && (w.contacts.empty() || w.contacts[0].count < 2); ++k) step(w);
+    ASSERT_EQ(w.contacts[0].count, 2u);
+    EXPECT_FALSE(std::isfinite(body_block_limit(w, 0.99 * exact).dt_s));
+    const CriticalTimeStep own = body_block_limit(w, 1.01 * exact);
+    EXPECT_NEAR(own.dt_s, exact, 1e-3 * exact);
+    EXPECT_EQ(own.body, "block");
+}
+
 TEST(StableTimeStep, DashpotsLowerTheLimitAsForOneDampedMode) {
     const World undamped = resting_block(1e8, 1e8, 0.4, 1.6, 0.0, 0.0);
     const World damped = resting_block(1e8, 1e8, 0.4, 1.6, 0.3, 1.0);
