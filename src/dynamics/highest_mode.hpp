@@ -85,7 +85,8 @@ HighestMode highest_mode(std::size_t n, double trial_dt_s, Apply&& apply) {
 /// A body's own N x N blocks of K~ and C~ (N = 3 in 2-D, 6 in 3-D), the upper triangle row by
 /// row: the stiffness and damping it sees with its partners held still. A principal block's top
 /// eigenvalue is never above the whole matrix's (Cauchy's interlacing), so a body whose blocks are
-/// unstable at dt makes dt unstable for certain, whatever the layout around it.
+/// unstable at dt makes dt unstable for certain in the watch's linear model (every point's springs
+/// as if sticking, a joint's stiffness on its two end points), whatever the layout around it.
 template <int N>
 struct BodyBlocks {
     static constexpr int entries = N * (N + 1) / 2;
@@ -140,20 +141,20 @@ struct BodyBlocks {
     }
 };
 
-/// The body whose blocks are the most unstable at dt_s (the most negative failing pivot) and its
-/// own limit (below dt_s); found = false when every body's blocks are stable at dt_s.
+/// Of the bodies whose blocks are unstable at dt_s (a failing Cholesky pivot), the one with the
+/// least own limit, and that limit: strictly below dt_s, since the failure is certain and the
+/// power iteration's estimate errs upwards. found = false when every body's blocks are stable.
 template <int N>
 std::pair<std::size_t, HighestMode> most_unstable_body(const std::vector<BodyBlocks<N>>& blocks, double dt_s) {
-    std::size_t worst = 0;
-    double worst_pivot = 0.0;
+    std::pair<std::size_t, HighestMode> least{0, HighestMode{}};
     for (std::size_t b = 0; b < blocks.size(); ++b) {
-        const double pivot = blocks[b].failing_pivot(dt_s);
-        if (pivot < worst_pivot) worst_pivot = pivot, worst = b;
+        if (!(blocks[b].failing_pivot(dt_s) <= 0.0)) continue;
+        HighestMode m = blocks[b].mode(dt_s);
+        if (!m.found) continue;
+        m.dt_s = std::min(m.dt_s, std::nextafter(dt_s, 0.0));
+        if (!least.second.found || m.dt_s < least.second.dt_s) least = {b, std::move(m)};
     }
-    if (worst_pivot == 0.0) return {0, HighestMode{}};
-    HighestMode m = blocks[worst].mode(dt_s);
-    m.dt_s = std::min(m.dt_s, dt_s);
-    return {worst, m};
+    return least;
 }
 
 /// The body that moves most in a mode of dofs_per_body entries a body.

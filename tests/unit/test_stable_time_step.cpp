@@ -54,6 +54,7 @@ TEST(StableTimeStep, ABodysOwnBlocksGiveItsLimitOnceDtIsAbove) {
     const double exact = 2.0 / std::sqrt(exact_highest_omega_squared(1e8, 5e7, m, w.bodies.inertia_kg_m2[1], 0.2, 0.8));
     // (Placed touching, the corners press into the base under gravity within some steps.)
     for (int k = 0; k < 1000 && (w.contacts.empty() || w.contacts[0].count < 2); ++k) step(w);
+    ASSERT_FALSE(w.contacts.empty());
     ASSERT_EQ(w.contacts[0].count, 2u);
     EXPECT_FALSE(std::isfinite(body_block_limit(w, 0.99 * exact).dt_s));
     const CriticalTimeStep own = body_block_limit(w, 1.01 * exact);
