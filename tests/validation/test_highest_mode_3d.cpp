@@ -161,6 +161,19 @@ RigidBody3d box(const char* name, Vec3 lengths_m, Vec3 center_m, double mass_kg,
     return make_rigid_body_3d(name, box_vertices(lengths_m, center_m, turn), mass_kg / (lengths_m.x * lengths_m.y * lengths_m.z));
 }
 
+// A tall block of three different sides turned 0.6 rad about z, so that its principal axes are not
+// the world's, on its four corners on a fixed slab, with both dashpots; its points after one step.
+World3d turned_block_on_a_slab() {
+    World3d w;
+    w.contact = {.kn_N_m = 1e7, .ks_N_m = 4e6, .mu = 0.6, .h_n = 0.2, .h_s = 0.8};
+    add_body(w, box("slab", {2.0, 2.0, 0.2}, {0.0, 0.0, -0.1}, 800.0), BodyKind3d::fixed);
+    add_body(w, box("block", {0.3, 0.5, 0.9}, {0.0, 0.0, 0.45 - 1e-5}, 120.0, from_rotation_vector({0.0, 0.0, 0.6})),
+             BodyKind3d::dynamic);
+    w.dt_s = 1e-5;
+    step_3d(w);
+    return w;
+}
+
 void expect_matches_dense(const World3d& w, const char* what) {
     ASSERT_FALSE(w.contacts.empty()) << what;
     const CriticalTimeStep3d proven = live_time_step_3d(w);
@@ -182,15 +195,7 @@ void expect_matches_dense(const World3d& w, const char* what) {
 }
 
 TEST(HighestMode3d, TurnedDampedBlockOnASlabMatchesTheDenseLimit) {
-    // A tall block of three different sides turned 0.6 rad about z, so that its principal axes are
-    // not the world's, on its four corners, with both dashpots.
-    World3d w;
-    w.contact = {.kn_N_m = 1e7, .ks_N_m = 4e6, .mu = 0.6, .h_n = 0.2, .h_s = 0.8};
-    add_body(w, box("slab", {2.0, 2.0, 0.2}, {0.0, 0.0, -0.1}, 800.0), BodyKind3d::fixed);
-    add_body(w, box("block", {0.3, 0.5, 0.9}, {0.0, 0.0, 0.45 - 1e-5}, 120.0, from_rotation_vector({0.0, 0.0, 0.6})),
-             BodyKind3d::dynamic);
-    w.dt_s = 1e-5;
-    step_3d(w);
+    World3d w = turned_block_on_a_slab();
     ASSERT_EQ(w.contacts.size(), 4u);
     expect_matches_dense(w, "turned block");
     // One dynamic body: its blocks are the whole matrix, so its own limit is the model's.
@@ -202,13 +207,7 @@ TEST(HighestMode3d, TheLiveWatchSeesABodyAboveItsOwnLimitThatTheRatioHides) {
     // The turned block at 1.2 times its limit, with the watch holding a ratio of 10 from another
     // layout (a wall's bricks): the scaled limit, 10 x the proven bound, is above dt and asks for
     // no new estimate; the block's own 6 x 6 test finds it above its limit, and names it.
-    World3d w;
-    w.contact = {.kn_N_m = 1e7, .ks_N_m = 4e6, .mu = 0.6, .h_n = 0.2, .h_s = 0.8};
-    add_body(w, box("slab", {2.0, 2.0, 0.2}, {0.0, 0.0, -0.1}, 800.0), BodyKind3d::fixed);
-    add_body(w, box("block", {0.3, 0.5, 0.9}, {0.0, 0.0, 0.45 - 1e-5}, 120.0, from_rotation_vector({0.0, 0.0, 0.6})),
-             BodyKind3d::dynamic);
-    w.dt_s = 1e-5;
-    step_3d(w);
+    World3d w = turned_block_on_a_slab();
     const double exact = dense_limit_s(assemble(w, w.contacts));
     w.dt_s = 1.2 * exact;
     w.stability.limit_ratio = 10.0;
