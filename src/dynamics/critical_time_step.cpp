@@ -130,43 +130,46 @@ CriticalTimeStep StabilityRows::limit(const Bodies& bodies) const {
     return best;
 }
 
-CriticalTimeStep live_time_step(const World& w, StabilityRows& rows) {
-    rows.reset(w.bodies.size());
+namespace {
+
+// Calls f(point) for each point of the live contact table, its springs and dashpots as the law
+// applies them.
+template <class F>
+void for_each_live_point(const World& w, F&& f) {
     // (Worlds with concave bodies count each body pair's points in the step: world/step.cpp.)
     const bool concave = w.body_pair_points.size() == w.contacts.size() && w.bodies.part_total() != w.bodies.size();
     for (std::size_t p = 0; p < w.contacts.size(); ++p) {
         const PairContact& pair = w.contacts[p];
         const std::uint32_t sharing = concave ? w.body_pair_points[p] : pair.count;
         for (std::uint32_t k = 0; k < pair.count; ++k)
-            rows.add(w.bodies, stiffness_point(w, pair.a, pair.b, pair.points[k].point_m, pair.normal, pair.count, sharing,
-                                               pair.stiffness_scale, pair.points[0].point_m, pair.points[1].point_m));
+            f(stiffness_point(w, pair.a, pair.b, pair.points[k].point_m, pair.normal, pair.count, sharing,
+                              pair.stiffness_scale, pair.points[0].point_m, pair.points[1].point_m));
     }
+}
+
+}  // namespace
+
+CriticalTimeStep live_time_step(const World& w, StabilityRows& rows) {
+    rows.reset(w.bodies.size());
+    for_each_live_point(w, [&](const StiffnessPoint& s) { rows.add(w.bodies, s); });
     return rows.limit(w.bodies);
 }
 
 CriticalTimeStep body_block_limit(const World& w, double dt_s) {
     const Bodies& bodies = w.bodies;
     std::vector<BodyBlocks<3>> blocks(bodies.size());
-    // (As live_time_step: worlds with concave bodies count each body pair's points in the step.)
-    const bool concave = w.body_pair_points.size() == w.contacts.size() && bodies.part_total() != bodies.size();
-    for (std::size_t p = 0; p < w.contacts.size(); ++p) {
-        const PairContact& pair = w.contacts[p];
-        const std::uint32_t sharing = concave ? w.body_pair_points[p] : pair.count;
-        for (std::uint32_t k = 0; k < pair.count; ++k) {
-            const StiffnessPoint s = stiffness_point(w, pair.a, pair.b, pair.points[k].point_m, pair.normal, pair.count, sharing,
-                                                     pair.stiffness_scale, pair.points[0].point_m, pair.points[1].point_m);
-            const Vec2 directions[2] = {s.normal, perp(s.normal)};
-            const double stiffness[2] = {s.kn_N_m, s.ks_N_m}, damping[2] = {s.cn_N_s_m, s.cs_N_s_m};
-            for (std::uint32_t body : {s.a, s.b}) {
-                if (!moves(bodies, body)) continue;
-                for (int d = 0; d < 2; ++d) {
-                    // (The sign of g on this end does not matter in g g^T.)
-                    const std::array<double, 3> g = body_part(bodies, body, s.point_m - bodies.position_m[body], directions[d], 1.0);
-                    blocks[body].add(g.data(), stiffness[d], damping[d]);
-                }
+    for_each_live_point(w, [&](const StiffnessPoint& s) {
+        const Vec2 directions[2] = {s.normal, perp(s.normal)};
+        const double stiffness[2] = {s.kn_N_m, s.ks_N_m}, damping[2] = {s.cn_N_s_m, s.cs_N_s_m};
+        for (std::uint32_t body : {s.a, s.b}) {
+            if (!moves(bodies, body)) continue;
+            for (int d = 0; d < 2; ++d) {
+                // (The sign of g on this end does not matter in g g^T.)
+                const std::array<double, 3> g = body_part(bodies, body, s.point_m - bodies.position_m[body], directions[d], 1.0);
+                blocks[body].add(g.data(), stiffness[d], damping[d]);
             }
         }
-    }
+    });
     const auto [body, mode] = most_unstable_body(blocks, dt_s);
     if (!mode.found) return {std::numeric_limits<double>::infinity(), std::string(), 0.0, 0.0};
     return {mode.dt_s, bodies.name[body], mode.omega_rad_s, mode.h};

@@ -88,16 +88,33 @@ out=$("$bin" run --restart "$state" "$wall" --out "$tmp/bad2" -q 2>&1); status=$
 expect_in "$out" "does not belong to scenario"
 # The deepest overlap's pair (summary.json checks.overlap) naming no body: refused. A state saved
 # before the deepest overlap was kept (no such attributes) restarts, with none seen before it.
+# The live limit's ratio out of range (NaN, below 1): refused; a state saved before the ratio was
+# kept restarts with the scenario's start ratio.
 cp "$state" "$tmp/bad_pair.h5"
 cp "$state" "$tmp/no_overlap.h5"
-/usr/bin/python3 - "$tmp/bad_pair.h5" "$tmp/no_overlap.h5" <<'PY' || fail "could not edit the state files (h5py)"
+cp "$state" "$tmp/bad_ratio.h5"
+cp "$state" "$tmp/no_ratio.h5"
+/usr/bin/python3 - "$tmp/bad_pair.h5" "$tmp/no_overlap.h5" "$tmp/bad_ratio.h5" "$tmp/no_ratio.h5" <<'PY' || fail "could not edit the state files (h5py)"
 import sys, h5py
 with h5py.File(sys.argv[1], "r+") as f:
     f["stability3d"].attrs["max_overlap_body_a"] = 999
 with h5py.File(sys.argv[2], "r+") as f:
     for name in ("max_overlap_ratio", "max_overlap_m", "max_overlap_time_s", "max_overlap_body_a", "max_overlap_body_b"):
         del f["stability3d"].attrs[name]
+with h5py.File(sys.argv[3], "r+") as f:
+    f["stability3d"].attrs["limit_ratio"] = 0.5
+with h5py.File(sys.argv[4], "r+") as f:
+    for name in ("start_bound_s", "limit_ratio", "ratio_bound_s", "estimates"):
+        del f["stability3d"].attrs[name]
 PY
+out=$("$bin" run --restart "$tmp/bad_ratio.h5" --out "$tmp/bad_ratio" -q 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "a live-limit ratio of 0.5: exit status $status, expected 2: $out"
+expect_in "$out" "bad_ratio.h5"
+expect_in "$out" "/stability3d/limit_ratio (0.5)"
+"$bin" run --restart "$tmp/no_ratio.h5" --out "$tmp/no_ratio" -q >"$tmp/log" 2>&1 \
+  || fail "a state without the live limit's ratio did not restart: $(cat "$tmp/log")"
+cmp -s "$tmp/no_ratio/summary.json" "$tmp/second/summary.json" \
+  || fail "the restart without the ratio differs from the one with it (the scenario's start ratio is the state's here)"
 out=$("$bin" run --restart "$tmp/bad_pair.h5" --out "$tmp/bad_pair" -q 2>&1); status=$?
 [[ $status -eq 2 ]] || fail "a deepest-overlap pair naming no body: exit status $status, expected 2: $out"
 expect_in "$out" "bad_pair.h5"

@@ -293,25 +293,12 @@ kind = "fixed"
 shape = "box"
 size = [2.0, 2.0, 0.2]
 position = [0.0, 0.0, -0.1]
-[[bodies]]
-name = "low"
-shape = "box"
-size = [0.3, 0.3, 0.3]
-position = [0.0, 0.0, 0.151]
-density = 2000.0
-[[bodies]]
-name = "middle"
-shape = "box"
-size = [0.3, 0.3, 0.3]
-position = [0.0, 0.0, 0.452]
-density = 2000.0
-[[bodies]]
-name = "top"
-shape = "box"
-size = [0.3, 0.3, 0.3]
-position = [0.0, 0.0, 0.753]
-density = 2000.0
 TOML
+for cube in "low 0.151" "middle 0.452" "top 0.753"; do  # (name, centre height [m]: 1 mm gaps)
+    read -r name height <<<"$cube"
+    printf '[[bodies]]\nname = "%s"\nshape = "box"\nsize = [0.3, 0.3, 0.3]\nposition = [0.0, 0.0, %s]\ndensity = 2000.0\n' \
+        "$name" "$height" >>"$tmp/stack.toml"
+done
 out=$("$bin" run "$tmp/stack.toml" --out "$tmp/stack" -q 2>&1); status=$?
 [[ $status -eq 0 ]] || fail "the dropped stack: exit status $status, expected 0 (a warning, not a stop): $out"
 expect_in "$out" "above the stable limit of the live contacts"
