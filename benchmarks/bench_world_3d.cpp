@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <ctime>
+#include <thread>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -53,5 +54,47 @@ BENCHMARK(BM_BrickWall3d)->Args({1000, 1})->Args({1000, 2})->Iterations(1000)->U
 BENCHMARK(BM_BrickWall3d)->Args({10000, 1})->Args({10000, 2})->Iterations(100)->Unit(benchmark::kMillisecond)->UseRealTime();
 // 1e5 bricks: a few steps only (the settling alone is 1e7 box-steps).
 BENCHMARK(BM_BrickWall3d)->Args({100000, 1})->Args({100000, 2})->Iterations(5)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What the machine gives two cores on this work, with nothing shared: two copies of the wall, each
+// stepped by its own thread (its step's regions on one thread), the same steps as BM_BrickWall3d.
+// Its box-steps/s over BM_BrickWall3d's one thread is the most two threads of one wall could reach
+// here (a virtual machine's two vCPUs slow each other: shared cache, memory, the host's other guests),
+// so the two threads' figure read against it is the step's own parallel loss. Counted when both
+// copies are done: a copy that finishes first leaves the other the machine, which a per-copy sum
+// would count as speed. Arguments: bricks, steps. At 1e4 only: two copies of a 1e5 wall hold 1.2 GB
+// and contend for memory as one wall on two threads does not (they ran below it here), so they
+// bound nothing there.
+void BM_BrickWall3dCopies(benchmark::State& state) {
+#ifdef _OPENMP
+    omp_set_num_threads(1);
+#endif
+    scenes::S3dWallDef def;
+    def.bricks = static_cast<int>(state.range(0));
+    const auto steps = state.range(1);
+    World3d first = scenes::settled_s3d_wall_3d(def);
+    World3d second = first;
+    // One step each before the clock: a copied world's scratch (vectors copied to their size, not
+    // their capacity) grows again in its first step, which the original has done.
+    step_3d(first);
+    step_3d(second);
+    const auto step_copy = [steps](World3d* w) {
+#ifdef _OPENMP
+        omp_set_num_threads(1);  // this thread's own setting: its step's regions run on it alone
+#endif
+        for (std::int64_t i = 0; i < steps; ++i) step_3d(*w);
+    };
+    for (auto _ : state) {
+        std::thread a(step_copy, &first), b(step_copy, &second);
+        a.join();
+        b.join();
+    }
+    const double n = static_cast<double>(first.bodies.size() - 1);
+    using benchmark::Counter;
+    state.counters["box-steps/s"] = Counter(2.0 * static_cast<double>(state.iterations() * steps) * n, Counter::kIsRate);
+#ifdef _OPENMP
+    omp_set_num_threads(omp_get_num_procs());
+#endif
+}
+BENCHMARK(BM_BrickWall3dCopies)->Args({10000, 100})->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
