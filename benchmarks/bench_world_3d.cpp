@@ -25,6 +25,12 @@ double process_cpu_s() {
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+double wall_s() {
+    timespec t{};
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 void BM_BrickWall3d(benchmark::State& state) {
 #ifdef _OPENMP
     omp_set_num_threads(static_cast<int>(state.range(1)));
@@ -95,6 +101,41 @@ void BM_BrickWall3dCopies(benchmark::State& state) {
     omp_set_num_threads(omp_get_num_procs());
 #endif
 }
+// One thread and two on one wall, in alternating blocks of 10 steps (ABBA: 1, 2, 2, 1, ...): the
+// host's speed here drifts by a third within seconds, so two separate runs' ratio (BM_BrickWall3d
+// at 1 and at 2) is as much the host's as the step's; blocks of about 0.1 s each cancel that drift.
+// Both thread counts give the same bits, so the wall moves on as one run would. Arguments: bricks,
+// blocks (of each thread count). Counters: each thread count's box-steps/s and their ratio.
+void BM_BrickWall3dAlternating(benchmark::State& state) {
+    scenes::S3dWallDef def;
+    def.bricks = static_cast<int>(state.range(0));
+    const auto blocks = state.range(1);
+    constexpr int steps_per_block = 10;
+    World3d w = scenes::settled_s3d_wall_3d(def);
+    double seconds[2] = {0.0, 0.0};
+    for (auto _ : state) {
+        for (std::int64_t b = 0; b < 2 * blocks; ++b) {
+            const int two = static_cast<int>((b ^ (b >> 1)) & 1);  // 0, 1, 1, 0, 0, 1, 1, 0, ...
+#ifdef _OPENMP
+            omp_set_num_threads(two + 1);
+#endif
+            const double start_s = wall_s();
+            for (int i = 0; i < steps_per_block; ++i) step_3d(w);
+            seconds[two] += wall_s() - start_s;
+        }
+    }
+    const double box_steps = static_cast<double>(state.iterations() * blocks * steps_per_block) *
+                             static_cast<double>(w.bodies.size() - 1);
+    state.counters["1t box-steps/s"] = box_steps / seconds[0];
+    state.counters["2t box-steps/s"] = box_steps / seconds[1];
+    state.counters["2t/1t"] = seconds[0] / seconds[1];
+#ifdef _OPENMP
+    omp_set_num_threads(omp_get_num_procs());
+#endif
+}
+BENCHMARK(BM_BrickWall3dAlternating)->Args({10000, 20})->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_BrickWall3dAlternating)->Args({100000, 2})->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 BENCHMARK(BM_BrickWall3dCopies)->Args({10000, 100})->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
