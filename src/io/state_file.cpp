@@ -2,12 +2,14 @@
 
 #include <hdf5.h>
 
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <system_error>
 
 #include <fmt/format.h>
 
+#include "dynamics/critical_time_step.hpp"
 #include "io/external_loads_state.hpp"
 #include "io/input_error.hpp"
 #include "io/output_file.hpp"
@@ -571,6 +573,9 @@ EnergyLedger read_energy(const StateGroup& g) {
 
 void write_stability(StateGroup g, const StabilityWatch& s) {
     g.set("start_bound_s", s.start_bound_s);
+    g.set("limit_ratio", s.limit_ratio);
+    g.set("ratio_bound_s", s.ratio_bound_s);
+    g.set("estimates", s.estimates);
     g.set("least_limit_s", s.least_limit_s);
     g.set("least_limit_body", s.least_limit_body);
     g.set("least_limit_time_s", s.least_limit_time_s);
@@ -587,6 +592,14 @@ void write_stability(StateGroup g, const StabilityWatch& s) {
 StabilityWatch read_stability(const StateGroup& g) {
     StabilityWatch s;
     s.start_bound_s = g.number("start_bound_s");
+    // (A file saved before the live limit's ratio was kept lacks it: read_world takes the start's.)
+    if (g.has("limit_ratio")) {
+        s.limit_ratio = g.number("limit_ratio");
+        s.ratio_bound_s = g.number("ratio_bound_s");
+        s.estimates = g.integer("estimates");
+    } else {
+        s.limit_ratio = -1.0;
+    }
     s.least_limit_s = g.number("least_limit_s");
     s.least_limit_body = g.text("least_limit_body");
     s.least_limit_time_s = g.number("least_limit_time_s");
@@ -706,6 +719,18 @@ WorldState read_world(const StateGroup& root) {
     if (root.has("sub_contacts")) s.sub_contacts = read_sub_contacts(root.open_group("sub_contacts"), s.contacts.size());
     s.energy = read_energy(root.open_group("energy"));
     s.stability = read_stability(root.open_group("stability"));
+    if (s.stability.limit_ratio == -1.0) {
+        s.stability.limit_ratio = start_limit_ratio(s.critical_dt_s, s.stability.start_bound_s);
+        s.stability.ratio_bound_s = s.stability.start_bound_s;
+    }
+    // (A ratio below 1 would put the live limit under the proven bound; 0 is "none yet".)
+    const StabilityWatch& watch = s.stability;
+    if (!(watch.limit_ratio == 0.0 || (std::isfinite(watch.limit_ratio) && watch.limit_ratio >= 1.0)) ||
+        !(watch.ratio_bound_s >= 0.0) || watch.estimates < 0)
+        throw InputError({root.file(), "", 0, 0},
+                         fmt::format("not a readable blockdem state file: /stability/limit_ratio ({:g}), ratio_bound_s ({:g}) "
+                                     "or estimates ({}) out of range (a ratio is 0 or at least 1)",
+                                     watch.limit_ratio, watch.ratio_bound_s, watch.estimates));
     if (root.has("settling")) s.settling = read_settling(root.open_group("settling"));
 
     const StateGroup d = root.open_group("domain");

@@ -173,6 +173,8 @@ void set_time_step(World& w, const SimulationSettings& settings) {
     w.critical_dt_s = limit.dt_s;
     w.proven_stable_dt_s = start.proven.dt_s;
     w.stability.start_bound_s = start.proven.dt_s;
+    w.stability.limit_ratio = start_limit_ratio(limit.dt_s, start.proven.dt_s);
+    w.stability.ratio_bound_s = start.proven.dt_s;
     w.stability.least_limit_s = limit.dt_s;
     w.stability.least_limit_body = limit.body;
     if (settings.dt_s) {

@@ -110,8 +110,13 @@ struct StepTimings {
 /// limit of the live contacts, and the deepest overlap.
 struct StabilityWatch {
     double start_bound_s = 0.0;          ///< [s] Gershgorin bound of the start contacts
-    /// [s] least stable limit seen: the start's highest-mode limit, scaled during the run by how
-    /// far the live contacts' Gershgorin bound fell below the start's (a stiffer configuration)
+    /// [-] the highest mode's limit over the Gershgorin bound, for the contacts it was last
+    /// estimated on (the start's, or live ones): the live limit is the live bound times it; 0: none yet
+    double limit_ratio = 0.0;
+    double ratio_bound_s = 0.0;          ///< [s] the Gershgorin bound of the contacts the ratio was estimated on
+    std::int64_t estimates = 0;          ///< highest-mode estimates made on live contacts
+    /// [s] least stable limit seen: the live contacts' Gershgorin bound times limit_ratio, or a
+    /// body's own blocks' limit where lower (world/step.cpp, watch_live_time_step)
     double least_limit_s = 0.0;
     std::string least_limit_body;        ///< the body that set it
     double least_limit_time_s = 0.0;     ///< [s] when

@@ -4,7 +4,8 @@
 # rocking block, a drum column under a record and a wall of bricks under a record (large enough
 # for the contact loops to run on threads), with 1 and 2 threads; an interrupted run resumes
 # from the state it wrote as it stopped; a scenario's [simulation] initial_state starts new runs
-# (and a sweep) from a settled state; bad state files are refused with exit 2, and a state that
+# (and a sweep) from a settled state; a block dropped onto another, whose live limit's ratio is
+# estimated again and saved; bad state files are refused with exit 2, and a state that
 # cannot be written stops the run with exit 4 and leaves no torn file.
 # Usage: test_restart.sh BLOCKDEM SOURCE_DIR
 set -u
@@ -134,6 +135,41 @@ check_restart() {  # LABEL HALF_TIME SCENARIO [--set ...]
 check_restart rocking 1.0 "$src/examples/paper/rocking.toml" --set simulation.duration=2 --set output.vtk=false
 check_restart drums 0.3 "$tmp/drums.toml"
 check_restart wall 0.01 "$tmp/wall.toml"
+# A block dropped onto another (at the derived dt): the live watch estimates its ratio again once
+# they are stacked (docs/physics.md, "The stable time step"); the state carries the ratio.
+cat > "$tmp/stack.toml" <<TOML
+[simulation]
+duration = 0.3
+output_interval = 0.01
+[contact]
+kn = 1.0e7
+ks = 1.0e7
+mu = 0.5
+e = 0.3
+h_s = 1.0
+[[bodies]]
+name = "table"
+kind = "fixed"
+shape = "rectangle"
+width = 3.0
+height = 0.2
+center = [0.0, -0.1]
+[[bodies]]
+name = "lower"
+shape = "rectangle"
+width = 0.4
+height = 0.4
+center = [0.0, 0.2]
+density = 2500.0
+[[bodies]]
+name = "upper"
+shape = "rectangle"
+width = 0.4
+height = 0.4
+center = [0.0, 0.61]
+density = 2500.0
+TOML
+check_restart stack 0.15 "$tmp/stack.toml"
 # The wall's contact loops did run on threads.
 pairs=$($py -c 'import h5py, sys; print(len(h5py.File(sys.argv[1], "r")["contacts/a"]))' "$(ls "$tmp"/wall-full/state/*.h5 | head -1)")
 [ "${pairs:-0}" -gt 2048 ] || fail "the wall has only ${pairs:-0} contact pairs (no threads)"
@@ -244,6 +280,27 @@ expect 2 "does not belong to scenario.*the state has 4 bodies, the scenario 2" \
 expect 2 "simulation.initial_state" "$bin" run "$tmp/from_state.toml" --set simulation.initial_state="$tmp/none.h5" --out "$tmp/x5" -q
 expect 2 "initial_state.*remove \[settling\]" "$bin" run "$tmp/small_wall.toml" --set simulation.initial_state="$good" --out "$tmp/x6" -q
 expect 2 "save-state.*outside the run" "$bin" run "$tmp/drums.toml" --save-state 5 --out "$tmp/x7" -q
+# The live limit's ratio: out of range, refused naming the attribute; absent (a file saved before
+# the watch kept it), the scenario's start ratio is taken and estimated again on the stacked
+# blocks, as the saved run did: the same summary, and no report of dt above the live limit.
+stack_state=$(ls "$tmp"/stack-full/state/*.h5 | head -1)
+cp "$stack_state" "$tmp/bad_ratio.h5"; cp "$stack_state" "$tmp/no_ratio.h5"
+$py - "$tmp/bad_ratio.h5" "$tmp/no_ratio.h5" <<'PY' || fail "editing the stack's state with h5py"
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    assert f["stability"].attrs["estimates"] >= 1, dict(f["stability"].attrs)
+    f["stability"].attrs["limit_ratio"] = 0.5
+with h5py.File(sys.argv[2], "r+") as f:
+    for name in ("limit_ratio", "ratio_bound_s", "estimates"):
+        del f["stability"].attrs[name]
+PY
+expect 2 "bad_ratio.h5.*/stability/limit_ratio (0.5)" "$bin" run --restart "$tmp/bad_ratio.h5" --out "$tmp/x8" -q
+"$bin" run --restart "$tmp/no_ratio.h5" --out "$tmp/no_ratio" -q > /dev/null 2> "$tmp/no_ratio.log" \
+  || fail "a state without the live limit's ratio did not restart: $(tail -2 "$tmp/no_ratio.log")"
+cmp -s "$tmp/no_ratio/summary.json" "$tmp/stack-full/summary.json" \
+  || fail "the restart without the ratio differs from the run that saved it"
+grep -q '"dt_above_live_limit": false' "$tmp/stack-full/summary.json" \
+  || fail "the stacked blocks at the derived dt report dt above the live limit"
 # A full disk: a 20 kB file-size limit lets the short history through but not the state.
 msg=$( (ulimit -f 20; "$bin" run "$tmp/drums.toml" --set simulation.output_interval=0.1 --save-state 0.3 --out "$tmp/full" -q) 2>&1); rc=$?
 [ $rc -eq 4 ] || fail "state on a full disk: exit $rc, expected 4 ($msg)"

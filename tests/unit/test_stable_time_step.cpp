@@ -7,6 +7,8 @@
 #include <string>
 
 #include "dynamics/critical_time_step.hpp"
+#include "dynamics/stability_rows.hpp"
+#include "support/dense_pencil.hpp"
 #include "support/world_helpers.hpp"
 #include "world/simulation_error.hpp"
 
@@ -60,6 +62,71 @@ TEST(StableTimeStep, ABodysOwnBlocksGiveItsLimitOnceDtIsAbove) {
     const CriticalTimeStep own = body_block_limit(w, 1.01 * exact);
     EXPECT_NEAR(own.dt_s, exact, 1e-3 * exact);
     EXPECT_EQ(own.body, "block");
+}
+
+// The limit of the points' highest mode found densely: K~ and C~ assembled entry by entry from
+// each point's relative-displacement map along its normal and its tangent (3 rows a body: x, y and
+// the rotation, mass-normalised; a body that does not move has none), their pencil's limit by
+// bisection over Jacobi eigenvalues (tests/support/dense_pencil.hpp).
+double dense_points_limit_s(const World& w, const std::vector<StiffnessPoint>& points) {
+    const std::size_t n = 3 * w.bodies.size();
+    testing::DensePencil m{testing::Dense(n, std::vector<double>(n, 0.0)), testing::Dense(n, std::vector<double>(n, 0.0))};
+    for (const StiffnessPoint& p : points) {
+        const Vec2 directions[2] = {p.normal, perp(p.normal)};
+        const double k[2] = {p.kn_N_m, p.ks_N_m}, c[2] = {p.cn_N_s_m, p.cs_N_s_m};
+        for (int d = 0; d < 2; ++d) {
+            std::vector<double> g(n, 0.0);
+            for (const auto& [body, sign] : {std::pair{p.a, -1.0}, std::pair{p.b, 1.0}}) {
+                if (w.bodies.kind[body] != BodyKind::dynamic) continue;
+                const Vec2 lever = p.point_m - w.bodies.position_m[body];
+                g[3 * body] = sign * directions[d].x / std::sqrt(w.bodies.mass_kg[body]);
+                g[3 * body + 1] = sign * directions[d].y / std::sqrt(w.bodies.mass_kg[body]);
+                g[3 * body + 2] = sign * cross(lever, directions[d]) / std::sqrt(w.bodies.inertia_kg_m2[body]);
+            }
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = 0; j < n; ++j) {
+                    m.k[i][j] += k[d] * g[i] * g[j];
+                    m.c[i][j] += c[d] * g[i] * g[j];
+                }
+        }
+    }
+    return testing::dense_limit_s(m);
+}
+
+// Two 0.4 m blocks of 400 kg, one resting on a fixed base, the other dropped onto it from 1 cm,
+// both dashpots. The start's contacts are each block's on the base (the upper one lands there, as
+// far as the start can tell), whose highest mode is 1.29 times their Gershgorin bound; stacked, it
+// is 2.1 times the stack's. The live watch estimates its ratio again when the scaled limit falls
+// below dt on a new layout, so a dt between the start ratio's limit and the stack's own is not
+// reported, and the limit it records is the stack's highest mode, found densely.
+TEST(StableTimeStep, TheLiveWatchEstimatesItsRatioAgainWhenABlockLandsOnAnother) {
+    const auto stack = [](double dt_s) {
+        BodyDef base = testing::rectangle_body("base", BodyKind::fixed, 3.0, 0.2, {0.0, -0.1});
+        BodyDef lower = testing::rectangle_body("lower", BodyKind::dynamic, 0.4, 0.4, {0.0, 0.2}, 0.0, 400.0);
+        BodyDef upper = testing::rectangle_body("upper", BodyKind::dynamic, 0.4, 0.4, {0.0, 0.61}, 0.0, 400.0);
+        return build_world(testing::model_with({base, lower, upper}, testing::contact(1e7, 0.5, 0.3, 1.0), dt_s, 9.81));
+    };
+    // The stacked layout's limit, densely, from a run at a small dt.
+    World probe = stack(1e-4);
+    while (probe.time_s < 0.3) step(probe);
+    const double stacked_s = dense_points_limit_s(probe, start_stiffness_points(probe));
+    const double start_ratio = start_limit_ratio(probe.critical_dt_s, probe.stability.start_bound_s);
+    EXPECT_LT(start_ratio, 1.4);
+    // At 0.75 of it: below the start's limit (a block alone is less stiff), above the stack's bound
+    // times the start's ratio.
+    World w = stack(0.75 * stacked_s);
+    ASSERT_LT(w.dt_s, w.critical_dt_s);
+    while (w.time_s < 0.3) step(w);
+    StabilityRows rows;
+    ASSERT_GT(w.dt_s, start_ratio * live_time_step(w, rows).dt_s) << "the start's ratio alone would report this dt";
+    EXPECT_LT(w.stability.first_exceeded_s, 0.0) << "reported at t = " << w.stability.first_exceeded_s;
+    EXPECT_GE(w.stability.estimates, 1);
+    EXPECT_NEAR(w.stability.least_limit_s, stacked_s, 5e-3 * stacked_s);
+    EXPECT_NEAR(w.stability.limit_ratio, 2.1, 0.05);
+    // Above the stack's limit the watch reports it.
+    World fast = stack(1.1 * stacked_s);
+    while (fast.time_s < 0.3) step(fast);
+    EXPECT_GE(fast.stability.first_exceeded_s, 0.0);
 }
 
 TEST(StableTimeStep, DashpotsLowerTheLimitAsForOneDampedMode) {
