@@ -157,6 +157,34 @@ std::pair<std::size_t, HighestMode> most_unstable_body(const std::vector<BodyBlo
     return least;
 }
 
+/// The ratio of the highest mode's limit to the proven bound, as a live watch keeps it (the 2-D and
+/// 3-D watches: world/step.cpp, world/run_checks_3d.cpp): the live limit is the live bound times it.
+struct LiveLimitRatio {
+    double& ratio;            ///< [-] 0: none yet; else at least 1
+    double& bound_s;          ///< [s] the proven bound of the contacts it was estimated on
+    std::int64_t& estimates;  ///< estimates made on live contacts
+};
+
+/// The live limit [s] for the live contacts' proven bound bound_s: the bound times the ratio, which
+/// depends on the layout (a block on its base, a stack, a brick among neighbours) much more than on
+/// the stiffness. The ratio is estimated afresh on the live contacts (estimate_s: their highest
+/// mode's limit) when none is known (no contact at the start) and when the scaled limit falls below
+/// dt on a bound 5 % or more below the ratio's own: a body landing on another, a pile forming, is
+/// a new layout. Each estimate lowers the ratio's bound by 5 % or more, so there are few; none
+/// once dt has been reported above the limit (reported).
+template <class Estimate>
+double live_limit_s(LiveLimitRatio r, bool reported, double dt_s, double bound_s, Estimate&& estimate_s) {
+    constexpr double re_estimate_fall = 0.95;
+    const bool needs_estimate =
+        r.ratio == 0.0 || (!reported && dt_s > r.ratio * bound_s && bound_s < re_estimate_fall * r.bound_s);
+    if (needs_estimate) {
+        r.ratio = std::max(1.0, estimate_s() / bound_s);
+        r.bound_s = bound_s;
+        ++r.estimates;
+    }
+    return r.ratio * bound_s;
+}
+
 /// The body that moves most in a mode of dofs_per_body entries a body.
 inline std::size_t body_moving_most(const std::vector<double>& mode, std::size_t dofs_per_body) {
     std::size_t body = 0;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "dynamics/critical_time_step_3d.hpp"
+#include "dynamics/highest_mode.hpp"
 #include "world/model.hpp"
 #include "world/simulation_error.hpp"
 
@@ -37,24 +38,11 @@ void watch_live_time_step_3d(World3d& w) {
     const CriticalTimeStep3d bound = live_time_step_3d(w);
     if (!std::isfinite(bound.dt_s)) return;  // (no dynamic body carries a point)
     StabilityWatch3d& watch = w.stability;
-    // The limit is the proven bound times the ratio of the highest mode's limit to it, a ratio that
-    // depends on the layout (1.7 to 2.1 for a block on its base, 3.7 to 4 for a brick with six
-    // neighbours) much more than on the stiffness. It is estimated afresh on the live contacts
-    // when none is known (no contact at the start) and when a scaled limit below dt rests on a
-    // bound that has fallen by re_estimate_fall since the ratio's own: a body landing on another,
-    // a pile forming, is a new layout. Each estimate costs some 250 passes over the contacts.
-    constexpr double re_estimate_fall = 0.95;
-    const bool needs_estimate =
-        watch.limit_ratio == 0.0 ||
-        (watch.first_exceeded_s < 0.0 && w.dt_s > watch.limit_ratio * bound.dt_s &&
-         bound.dt_s < re_estimate_fall * watch.ratio_bound_s);
-    if (needs_estimate) {
-        const CriticalTimeStep3d mode = highest_mode_time_step_3d(w, w.contacts, bound);
-        watch.limit_ratio = mode.dt_s / bound.dt_s;
-        watch.ratio_bound_s = bound.dt_s;
-        ++watch.estimates;
-    }
-    double limit_s = watch.limit_ratio * bound.dt_s;
+    // The proven bound times the ratio of the highest mode's limit to it (1.7 to 2.1 for a block on
+    // its base, 3.7 to 4 for a brick with six neighbours), estimated again on a new layout
+    // (dynamics/highest_mode.hpp, live_limit_s; an estimate costs some 250 passes over the contacts).
+    double limit_s = live_limit_s({watch.limit_ratio, watch.ratio_bound_s, watch.estimates}, watch.first_exceeded_s >= 0.0,
+                                  w.dt_s, bound.dt_s, [&] { return highest_mode_time_step_3d(w, w.contacts, bound).dt_s; });
     std::uint32_t body = bound.body;
     // One ratio for the whole model can miss a body whose own layout has a smaller one; a body
     // whose own blocks are unstable at dt is above the limit for certain (Cauchy's interlacing).

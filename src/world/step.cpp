@@ -11,6 +11,7 @@
 #include "geometry/rounded_contact.hpp"
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
+#include "dynamics/highest_mode.hpp"
 #include "world/parallel.hpp"
 #include "world/simulation_error.hpp"
 
@@ -174,25 +175,11 @@ void watch_live_time_step(World& w) {
     const CriticalTimeStep bound = live_time_step(w, w.stability_rows);
     if (!std::isfinite(bound.dt_s)) return;  // (no dynamic body carries a point)
     StabilityWatch& watch = w.stability;
-    // The limit is the Gershgorin bound times the ratio of the highest mode's limit to it, a ratio
-    // that depends on the layout (1.3 for a block on its base, 2.1 for two blocks stacked, 2 to 3
-    // for a brick in a wall) much more than on the stiffness. It is estimated afresh on the live
-    // contacts when none is known (no contact at the start) and when a scaled limit below dt rests
-    // on a bound that has fallen by re_estimate_fall since the ratio's own: a block landing on
-    // another, a pile forming, is a new layout (as in 3-D, world/run_checks_3d.cpp). Each
-    // estimate lowers the ratio's bound by 5 % or more, so there are few.
-    constexpr double re_estimate_fall = 0.95;
-    const bool needs_estimate =
-        watch.limit_ratio == 0.0 ||
-        (watch.first_exceeded_s < 0.0 && w.dt_s > watch.limit_ratio * bound.dt_s &&
-         bound.dt_s < re_estimate_fall * watch.ratio_bound_s);
-    if (needs_estimate) {
-        const CriticalTimeStep mode = live_highest_mode_time_step(w, bound);
-        watch.limit_ratio = std::max(1.0, mode.dt_s / bound.dt_s);
-        watch.ratio_bound_s = bound.dt_s;
-        ++watch.estimates;
-    }
-    double limit_s = watch.limit_ratio * bound.dt_s;
+    // The Gershgorin bound times the ratio of the highest mode's limit to it (1.27 for a block on
+    // its base, 2.07 for two blocks stacked, 2 to 3 for a brick in a wall), estimated again on a
+    // new layout (dynamics/highest_mode.hpp, live_limit_s).
+    double limit_s = live_limit_s({watch.limit_ratio, watch.ratio_bound_s, watch.estimates}, watch.first_exceeded_s >= 0.0,
+                                  w.dt_s, bound.dt_s, [&] { return live_highest_mode_time_step(w, bound).dt_s; });
     std::string body = bound.body;
     // One ratio for the whole model can miss a body whose own layout has a smaller one; a body
     // whose own blocks are unstable at dt is above the limit for certain (as in 3-D,
