@@ -161,11 +161,6 @@ CriticalTimeStep live_highest_mode_time_step(const World& w, const CriticalTimeS
     return highest_mode_time_step(w.bodies, points, bound);
 }
 
-double start_limit_ratio(double highest_mode_s, double bound_s) {
-    const bool known = std::isfinite(highest_mode_s) && std::isfinite(bound_s) && bound_s > 0.0;
-    return known ? std::max(1.0, highest_mode_s / bound_s) : 0.0;
-}
-
 CriticalTimeStep body_block_limit(const World& w, double dt_s) {
     const Bodies& bodies = w.bodies;
     std::vector<BodyBlocks<3>> blocks(bodies.size());

@@ -76,10 +76,6 @@ CriticalTimeStep highest_mode_time_step(const Bodies& bodies, const std::vector<
 /// highest_mode_time_step over the live contact table's points, as the law applies them.
 CriticalTimeStep live_highest_mode_time_step(const World& w, const CriticalTimeStep& bound);
 
-/// The ratio of a highest-mode limit to the Gershgorin bound of the same points, the live watch's
-/// scale (world/step.cpp): 0 (none) where either is not finite or positive.
-double start_limit_ratio(double highest_mode_s, double bound_s);
-
 /// The limits of the start configuration.
 struct StartTimeStep {
     CriticalTimeStep proven;        ///< Gershgorin bound: every dt below it is stable

@@ -157,6 +157,14 @@ std::pair<std::size_t, HighestMode> most_unstable_body(const std::vector<BodyBlo
     return least;
 }
 
+/// The ratio of a highest-mode limit to the proven bound of the same points [-], the live watches'
+/// scale at the start: 0 (none) where the bound is not finite and above 0 or the limit is not
+/// finite (nothing touches, no dynamic body); at least 1 (the estimate never falls below the bound).
+inline double start_limit_ratio(double highest_mode_s, double bound_s) {
+    const bool known = std::isfinite(highest_mode_s) && std::isfinite(bound_s) && bound_s > 0.0;
+    return known ? std::max(1.0, highest_mode_s / bound_s) : 0.0;
+}
+
 /// The ratio of the highest mode's limit to the proven bound, as a live watch keeps it (the 2-D and
 /// 3-D watches: world/step.cpp, world/run_checks_3d.cpp): the live limit is the live bound times it.
 struct LiveLimitRatio {
@@ -168,10 +176,13 @@ struct LiveLimitRatio {
 /// The live limit [s] for the live contacts' proven bound bound_s: the bound times the ratio, which
 /// depends on the layout (a block on its base, a stack, a brick among neighbours) much more than on
 /// the stiffness. The ratio is estimated afresh on the live contacts (estimate_s: their highest
-/// mode's limit) when none is known (no contact at the start) and when the scaled limit falls below
-/// dt on a bound 5 % or more below the ratio's own: a body landing on another, a pile forming, is
-/// a new layout. Each estimate lowers the ratio's bound by 5 % or more, so there are few; none
-/// once dt has been reported above the limit (reported).
+/// mode's limit) when none is known (3-D: nothing touched at the start) and when the scaled limit
+/// falls below dt on a bound 5 % or more below the ratio's own: a body landing on another, a pile
+/// forming, is a new layout. Each estimate lowers the ratio's bound by 5 % or more, so there are
+/// few; none once dt has been reported above the limit (reported). A ratio from a stiffly coupled
+/// layout is kept when the layout goes back to a less coupled one whose bound has not fallen (a
+/// stack bouncing apart): the limit is then too high, and the per-body blocks and the energy
+/// balance are the checks (docs/physics.md, "The stable time step").
 template <class Estimate>
 double live_limit_s(LiveLimitRatio r, bool reported, double dt_s, double bound_s, Estimate&& estimate_s) {
     constexpr double re_estimate_fall = 0.95;

@@ -9,7 +9,7 @@
 
 #include <fmt/format.h>
 
-#include "dynamics/critical_time_step.hpp"
+#include "dynamics/highest_mode.hpp"
 #include "io/external_loads_state.hpp"
 #include "io/input_error.hpp"
 #include "io/output_file.hpp"
@@ -327,6 +327,20 @@ void write_settling(StateGroup& g, const SettlingRecord& r) {
     g.set("largest_turn_body", r.largest_turn_body);
 }
 
+void check_live_limit_ratio(const std::string& file, const std::string& group, double ratio, double ratio_bound_s,
+                            std::int64_t estimates) {
+    const auto refuse = [&](const std::string& what) {
+        throw InputError({file, "", 0, 0}, fmt::format("not a readable blockdem state file: {}/{}", group, what));
+    };
+    constexpr double max_ratio = 100.0;
+    const bool none = ratio == 0.0;
+    if (!(none || (ratio >= 1.0 && ratio <= max_ratio)))
+        refuse(fmt::format("limit_ratio ({:g}) is neither 0 nor between 1 and {:g}", ratio, max_ratio));
+    if (!std::isfinite(ratio_bound_s) || !(none ? ratio_bound_s >= 0.0 : ratio_bound_s > 0.0))
+        refuse(fmt::format("ratio_bound_s ({:g}) is not a finite bound{}", ratio_bound_s, none ? "" : " above 0"));
+    if (estimates < 0) refuse(fmt::format("estimates ({}) is negative", estimates));
+}
+
 SettlingRecord read_settling(const StateGroup& g) {
     SettlingRecord r;
     r.time_s = g.number("time_s");
@@ -589,16 +603,16 @@ void write_stability(StateGroup g, const StabilityWatch& s) {
     g.set("max_overlap_kn_N_m", s.max_overlap_kn_N_m);
 }
 
-StabilityWatch read_stability(const StateGroup& g) {
+// has_ratio: the file holds the live limit's ratio (a file saved before the watch kept it does
+// not; read_world then takes the file's own start ratio).
+StabilityWatch read_stability(const StateGroup& g, bool& has_ratio) {
     StabilityWatch s;
     s.start_bound_s = g.number("start_bound_s");
-    // (A file saved before the live limit's ratio was kept lacks it: read_world takes the start's.)
-    if (g.has("limit_ratio")) {
+    has_ratio = g.has("limit_ratio");
+    if (has_ratio) {
         s.limit_ratio = g.number("limit_ratio");
         s.ratio_bound_s = g.number("ratio_bound_s");
         s.estimates = g.integer("estimates");
-    } else {
-        s.limit_ratio = -1.0;
     }
     s.least_limit_s = g.number("least_limit_s");
     s.least_limit_body = g.text("least_limit_body");
@@ -612,6 +626,20 @@ StabilityWatch read_stability(const StateGroup& g) {
     s.max_overlap_m = g.number("max_overlap_m");
     s.max_overlap_kn_N_m = g.number("max_overlap_kn_N_m");
     return s;
+}
+
+// The live limit's ratio as read, or from a file without it (saved before the 2-D watch kept it),
+// the file's own start ratio.
+void read_live_limit_ratio(const std::string& file, StabilityWatch& s, bool has_ratio, double critical_dt_s) {
+    if (!has_ratio) {
+        if (!(s.start_bound_s > 0.0))  // (infinite: nothing touched at the start)
+            throw InputError({file, "", 0, 0}, fmt::format("not a readable blockdem state file: /stability/start_bound_s "
+                                                           "({:g}) is not positive", s.start_bound_s));
+        s.limit_ratio = start_limit_ratio(critical_dt_s, s.start_bound_s);
+        s.ratio_bound_s = s.limit_ratio > 0.0 ? s.start_bound_s : 0.0;
+        s.estimates = 0;
+    }
+    check_live_limit_ratio(file, "/stability", s.limit_ratio, s.ratio_bound_s, s.estimates);
 }
 
 void write_world(StateGroup& root, const WorldState& s) {
@@ -718,19 +746,9 @@ WorldState read_world(const StateGroup& root) {
     s.contacts = read_contacts(root.open_group("contacts"), s.name.size());
     if (root.has("sub_contacts")) s.sub_contacts = read_sub_contacts(root.open_group("sub_contacts"), s.contacts.size());
     s.energy = read_energy(root.open_group("energy"));
-    s.stability = read_stability(root.open_group("stability"));
-    if (s.stability.limit_ratio == -1.0) {
-        s.stability.limit_ratio = start_limit_ratio(s.critical_dt_s, s.stability.start_bound_s);
-        s.stability.ratio_bound_s = s.stability.start_bound_s;
-    }
-    // (A ratio below 1 would put the live limit under the proven bound; 0 is "none yet".)
-    const StabilityWatch& watch = s.stability;
-    if (!(watch.limit_ratio == 0.0 || (std::isfinite(watch.limit_ratio) && watch.limit_ratio >= 1.0)) ||
-        !(watch.ratio_bound_s >= 0.0) || watch.estimates < 0)
-        throw InputError({root.file(), "", 0, 0},
-                         fmt::format("not a readable blockdem state file: /stability/limit_ratio ({:g}), ratio_bound_s ({:g}) "
-                                     "or estimates ({}) out of range (a ratio is 0 or at least 1)",
-                                     watch.limit_ratio, watch.ratio_bound_s, watch.estimates));
+    bool has_ratio = false;
+    s.stability = read_stability(root.open_group("stability"), has_ratio);
+    read_live_limit_ratio(root.file(), s.stability, has_ratio, s.critical_dt_s);
     if (root.has("settling")) s.settling = read_settling(root.open_group("settling"));
 
     const StateGroup d = root.open_group("domain");

@@ -108,6 +108,13 @@ void write_ledger(StateGroup group, const EnergyLedger& ledger);
 void write_settling(StateGroup& group, const SettlingRecord& record);
 SettlingRecord read_settling(const StateGroup& group);
 EnergyLedger read_ledger(const StateGroup& group);
+/// The live limit's ratio, its bound and the estimate count of a stability watch's group (group:
+/// "/stability" or "/stability3d"), refused out of range with an InputError naming file and the
+/// attribute: the ratio is 0 ("none yet", with a bound of 0 or more) or between 1 (below, the live
+/// limit would fall under the proven bound) and 100 (the highest measured is 4; far above, the
+/// watch would never report), with a finite bound above 0; estimates are not negative.
+void check_live_limit_ratio(const std::string& file, const std::string& group, double ratio, double ratio_bound_s,
+                            std::int64_t estimates);
 
 /// An open state file. Throws InputError naming the file and the item for a missing, corrupt or
 /// foreign file.

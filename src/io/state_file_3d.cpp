@@ -269,13 +269,8 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
     w.stability = read_stability_3d(root.open_group("stability3d"), w.stability);
     if (w.stability.max_overlap_body_a >= w.bodies.size() || w.stability.max_overlap_body_b >= w.bodies.size())
         throw InputError(where, "not a readable blockdem state file: /stability3d/max_overlap_body_a or _b names no body");
-    // (A ratio below 1 would put the live limit under the proven bound; 0 is "none yet".)
-    const StabilityWatch3d& s = w.stability;
-    if (!(s.limit_ratio == 0.0 || (std::isfinite(s.limit_ratio) && s.limit_ratio >= 1.0)) || !(s.ratio_bound_s >= 0.0) ||
-        s.estimates < 0)
-        throw InputError(where, fmt::format("not a readable blockdem state file: /stability3d/limit_ratio ({:g}), ratio_bound_s "
-                                            "({:g}) or estimates ({}) out of range (a ratio is 0 or at least 1)",
-                                            s.limit_ratio, s.ratio_bound_s, s.estimates));
+    check_live_limit_ratio(where.file, "/stability3d", w.stability.limit_ratio, w.stability.ratio_bound_s,
+                           w.stability.estimates);
     if (root.has("domain3d")) read_domain(root.open_group("domain3d"), w);  // (files of earlier versions lack it)
     // A caller's loads as saved; none without the group (a run without loads, or an earlier file),
     // also when w had some (a world going back to a checkpoint).

@@ -9,6 +9,7 @@
 #include "contact/narrow_phase.hpp"
 #include "dynamics/central_difference.hpp"
 #include "dynamics/critical_time_step.hpp"
+#include "dynamics/highest_mode.hpp"
 #include "geometry/outline.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/rounded_contact.hpp"
@@ -174,7 +175,7 @@ void set_time_step(World& w, const SimulationSettings& settings) {
     w.proven_stable_dt_s = start.proven.dt_s;
     w.stability.start_bound_s = start.proven.dt_s;
     w.stability.limit_ratio = start_limit_ratio(limit.dt_s, start.proven.dt_s);
-    w.stability.ratio_bound_s = start.proven.dt_s;
+    w.stability.ratio_bound_s = w.stability.limit_ratio > 0.0 ? start.proven.dt_s : 0.0;
     w.stability.least_limit_s = limit.dt_s;
     w.stability.least_limit_body = limit.body;
     if (settings.dt_s) {

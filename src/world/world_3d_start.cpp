@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "dynamics/highest_mode.hpp"
 #include "world/step_3d.hpp"
 #include "world/world.hpp"
 
@@ -136,9 +137,8 @@ std::vector<ContactPoint3d> start_contacts_3d(const World3d& w) {
 
 void start_live_watch_3d(StabilityWatch3d& watch, const StartTimeStep3d& start) {
     watch.start_bound_s = start.proven.dt_s;
-    if (!std::isfinite(start.proven.dt_s)) return;
-    watch.limit_ratio = start.highest_mode.dt_s / start.proven.dt_s;
-    watch.ratio_bound_s = start.proven.dt_s;
+    watch.limit_ratio = start_limit_ratio(start.highest_mode.dt_s, start.proven.dt_s);
+    watch.ratio_bound_s = watch.limit_ratio > 0.0 ? start.proven.dt_s : 0.0;
 }
 
 StartTimeStep3d set_time_step_3d(World3d& w, std::optional<double> dt_s, double dt_safety, double output_interval_s) {

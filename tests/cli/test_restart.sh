@@ -284,17 +284,32 @@ expect 2 "save-state.*outside the run" "$bin" run "$tmp/drums.toml" --save-state
 # the watch kept it), the scenario's start ratio is taken and estimated again on the stacked
 # blocks, as the saved run did: the same summary, and no report of dt above the live limit.
 stack_state=$(ls "$tmp"/stack-full/state/*.h5 | head -1)
-cp "$stack_state" "$tmp/bad_ratio.h5"; cp "$stack_state" "$tmp/no_ratio.h5"
-$py - "$tmp/bad_ratio.h5" "$tmp/no_ratio.h5" <<'PY' || fail "editing the stack's state with h5py"
+for name in bad_ratio huge_ratio bad_bound no_ratio old_bad_start; do cp "$stack_state" "$tmp/$name.h5"; done
+$py - "$tmp" <<'PY' || fail "editing the stack's state with h5py"
 import sys, h5py
-with h5py.File(sys.argv[1], "r+") as f:
-    assert f["stability"].attrs["estimates"] >= 1, dict(f["stability"].attrs)
-    f["stability"].attrs["limit_ratio"] = 0.5
-with h5py.File(sys.argv[2], "r+") as f:
-    for name in ("limit_ratio", "ratio_bound_s", "estimates"):
-        del f["stability"].attrs[name]
+edits = {
+    "bad_ratio": {"limit_ratio": 0.5},
+    "huge_ratio": {"limit_ratio": 1e300},
+    "bad_bound": {"ratio_bound_s": float("inf")},
+    "no_ratio": {"limit_ratio": None, "ratio_bound_s": None, "estimates": None},
+    "old_bad_start": {"limit_ratio": None, "ratio_bound_s": None, "estimates": None, "start_bound_s": float("nan")},
+}
+for name, changes in edits.items():
+    with h5py.File(f"{sys.argv[1]}/{name}.h5", "r+") as f:
+        a = f["stability"].attrs
+        assert a["estimates"] >= 1, dict(a)
+        for key, value in changes.items():
+            if value is None:
+                del a[key]
+            else:
+                a[key] = value
 PY
-expect 2 "bad_ratio.h5.*/stability/limit_ratio (0.5)" "$bin" run --restart "$tmp/bad_ratio.h5" --out "$tmp/x8" -q
+expect 2 "bad_ratio.h5.*/stability/limit_ratio (0.5) is neither 0 nor between 1 and 100" \
+  "$bin" run --restart "$tmp/bad_ratio.h5" --out "$tmp/x8" -q
+expect 2 "huge_ratio.h5.*/stability/limit_ratio (1e+300)" "$bin" run --restart "$tmp/huge_ratio.h5" --out "$tmp/x9" -q
+expect 2 "bad_bound.h5.*/stability/ratio_bound_s (inf)" "$bin" run --restart "$tmp/bad_bound.h5" --out "$tmp/x10" -q
+expect 2 "old_bad_start.h5.*/stability/start_bound_s (nan) is not positive" \
+  "$bin" run --restart "$tmp/old_bad_start.h5" --out "$tmp/x11" -q
 "$bin" run --restart "$tmp/no_ratio.h5" --out "$tmp/no_ratio" -q > /dev/null 2> "$tmp/no_ratio.log" \
   || fail "a state without the live limit's ratio did not restart: $(tail -2 "$tmp/no_ratio.log")"
 cmp -s "$tmp/no_ratio/summary.json" "$tmp/stack-full/summary.json" \

@@ -57,6 +57,7 @@ struct DensePencil {
 
 // The dt at which the largest eigenvalue of (dt^2/4) K~ + (dt/2) C~ is 1, by bisection.
 inline double dense_limit_s(const DensePencil& m) {
+    if (m.k.empty()) return INFINITY;
     auto top = [&](double dt) {
         Dense b = m.k;
         for (std::size_t i = 0; i < b.size(); ++i)
