@@ -114,7 +114,19 @@ TEST(StableTimeStep, TheLiveWatchEstimatesItsRatioAgainWhenABlockLandsOnAnother)
     // The stacked layout's limit, densely, from a run at a small dt.
     World probe = stack(1e-4);
     while (probe.time_s < 0.3) step(probe);
-    const double stacked_s = dense_points_limit_s(probe, start_stiffness_points(probe));
+    const std::vector<StiffnessPoint> points = start_stiffness_points(probe);
+    // Its points' dashpots are the law's, by the rule written out here: C = 2 h sqrt(k M / n), M the
+    // pair's reduced mass (a block's own on the base), n its points (two corners each).
+    ASSERT_EQ(points.size(), 4u);
+    for (const StiffnessPoint& p : points) {
+        const Bodies& b = probe.bodies;
+        const bool both = b.kind[p.a] == BodyKind::dynamic && b.kind[p.b] == BodyKind::dynamic;
+        const double mass_kg = both ? b.mass_kg[p.a] * b.mass_kg[p.b] / (b.mass_kg[p.a] + b.mass_kg[p.b])
+                                    : (b.kind[p.a] == BodyKind::dynamic ? b.mass_kg[p.a] : b.mass_kg[p.b]);
+        EXPECT_NEAR(p.cn_N_s_m, 2.0 * 0.3 * std::sqrt(1e7 * mass_kg / 2.0), 1e-9 * p.cn_N_s_m);
+        EXPECT_NEAR(p.cs_N_s_m, 2.0 * 1.0 * std::sqrt(1e7 * mass_kg / 2.0), 1e-9 * p.cs_N_s_m);
+    }
+    const double stacked_s = dense_points_limit_s(probe, points);
     const double start_ratio = start_limit_ratio(probe.critical_dt_s, probe.stability.start_bound_s);
     EXPECT_LT(start_ratio, 1.4);
     // At 0.75 of it: below the start's limit (a block alone is less stiff), above the stack's bound
