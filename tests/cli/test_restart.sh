@@ -170,6 +170,27 @@ center = [0.0, 0.61]
 density = 2500.0
 TOML
 check_restart stack 0.15 "$tmp/stack.toml"
+# 1,100 such stacks 0.1 m apart (more than 2,048 contact pairs: the step runs on threads): the
+# estimate made once they are stacked is the same at 1 and 2 threads and across the restart.
+$py - "$tmp/stacks.toml" <<'PY'
+import sys
+rows = ["[simulation]", "duration = 0.2", "output_interval = 0.01",
+        "[contact]", "kn = 1.0e7", "ks = 1.0e7", "mu = 0.5", "e = 0.3", "h_s = 1.0",
+        "[[bodies]]", 'name = "table"', 'kind = "fixed"', 'shape = "rectangle"', "width = 552.0", "height = 0.2",
+        "center = [275.0, -0.1]"]
+for i in range(1100):
+    for level, y in (("lower", 0.2), ("upper", 0.61)):
+        rows += ["[[bodies]]", f'name = "{level}{i}"', 'shape = "rectangle"', "width = 0.4", "height = 0.4",
+                 f"center = [{0.5 * i:.1f}, {y}]", "density = 2500.0", "record = false"]
+open(sys.argv[1], "w").write("\n".join(rows) + "\n")
+PY
+check_restart stacks 0.1 "$tmp/stacks.toml" --set output.vtk=false
+$py - "$tmp/stacks-full/state" <<'PY' || fail "the stacks made no estimate, or too few pairs for threads"
+import glob, sys, h5py
+f = h5py.File(sorted(glob.glob(sys.argv[1] + "/*.h5"))[0], "r")
+assert f["stability"].attrs["estimates"] >= 1, dict(f["stability"].attrs)
+assert len(f["contacts/a"]) > 2048, len(f["contacts/a"])
+PY
 # The wall's contact loops did run on threads.
 pairs=$($py -c 'import h5py, sys; print(len(h5py.File(sys.argv[1], "r")["contacts/a"]))' "$(ls "$tmp"/wall-full/state/*.h5 | head -1)")
 [ "${pairs:-0}" -gt 2048 ] || fail "the wall has only ${pairs:-0} contact pairs (no threads)"
