@@ -14,6 +14,14 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 expect_in() { grep -qF -- "$2" <<<"$1" || fail "expected '$2' in: $1"; }
+# A restart refused with exit 2: refused WHAT RESTART_ARGUMENTS... -- EXPECTED_TEXT...
+refused() {
+  local what=$1 args=() out status; shift
+  while [[ $1 != -- ]]; do args+=("$1"); shift; done; shift
+  out=$("$bin" run --restart "${args[@]}" -q 2>&1); status=$?
+  [[ $status -eq 2 ]] || fail "$what: exit status $status, expected 2: $out"
+  for text in "$@"; do expect_in "$out" "$text"; done
+}
 export OMP_WAIT_POLICY=passive
 
 same_results() {  # LABEL DIR1 DIR2
@@ -80,12 +88,8 @@ same_results "wall interrupted and resumed in place to $end s" "$tmp/int_whole" 
 
 # 4. Refusals, exit 2 with the file named.
 state="$tmp/first/state/t_0.100000s.h5"
-out=$("$bin" run --restart "$state" "$src/examples/paper/sliding.toml" --out "$tmp/bad1" -q 2>&1); status=$?
-[[ $status -eq 2 ]] || fail "3-D state, 2-D scenario: exit status $status, expected 2: $out"
-expect_in "$out" "t_0.100000s.h5"
-out=$("$bin" run --restart "$state" "$wall" --out "$tmp/bad2" -q 2>&1); status=$?
-[[ $status -eq 2 ]] || fail "state of another scenario: exit status $status, expected 2: $out"
-expect_in "$out" "does not belong to scenario"
+refused "3-D state, 2-D scenario" "$state" "$src/examples/paper/sliding.toml" --out "$tmp/bad1" -- "t_0.100000s.h5"
+refused "state of another scenario" "$state" "$wall" --out "$tmp/bad2" -- "does not belong to scenario"
 # The deepest overlap's pair (summary.json checks.overlap) naming no body: refused. A state saved
 # before the deepest overlap was kept (no such attributes) restarts, with none seen before it.
 # The live limit's ratio out of range (NaN, below 1): refused; a state saved before the ratio was
@@ -107,18 +111,13 @@ with h5py.File(sys.argv[4], "r+") as f:
     for name in ("start_bound_s", "limit_ratio", "ratio_bound_s", "estimates"):
         del f["stability3d"].attrs[name]
 PY
-out=$("$bin" run --restart "$tmp/bad_ratio.h5" --out "$tmp/bad_ratio" -q 2>&1); status=$?
-[[ $status -eq 2 ]] || fail "a live-limit ratio of 0.5: exit status $status, expected 2: $out"
-expect_in "$out" "bad_ratio.h5"
-expect_in "$out" "/stability3d/limit_ratio (0.5)"
+refused "a live-limit ratio of 0.5" "$tmp/bad_ratio.h5" --out "$tmp/bad_ratio" -- "bad_ratio.h5" "/stability3d/limit_ratio (0.5)"
 "$bin" run --restart "$tmp/no_ratio.h5" --out "$tmp/no_ratio" -q >"$tmp/log" 2>&1 \
   || fail "a state without the live limit's ratio did not restart: $(cat "$tmp/log")"
 cmp -s "$tmp/no_ratio/summary.json" "$tmp/second/summary.json" \
   || fail "the restart without the ratio differs from the one with it (the scenario's start ratio is the state's here)"
-out=$("$bin" run --restart "$tmp/bad_pair.h5" --out "$tmp/bad_pair" -q 2>&1); status=$?
-[[ $status -eq 2 ]] || fail "a deepest-overlap pair naming no body: exit status $status, expected 2: $out"
-expect_in "$out" "bad_pair.h5"
-expect_in "$out" "max_overlap_body_a or _b names no body"
+refused "a deepest-overlap pair naming no body" "$tmp/bad_pair.h5" --out "$tmp/bad_pair" -- \
+  "bad_pair.h5" "max_overlap_body_a or _b names no body"
 "$bin" run --restart "$tmp/no_overlap.h5" --out "$tmp/no_overlap" -q >"$tmp/log" 2>&1 \
   || fail "a state without the deepest overlap did not restart: $(cat "$tmp/log")"
 /usr/bin/python3 - "$tmp/no_overlap" <<'PY' || fail "the restart without the deepest overlap does not report one of its own"
@@ -129,9 +128,7 @@ PY
 
 "$bin" run "$src/examples/paper/sliding.toml" --out "$tmp/flat" --set simulation.duration=0.2 --save-state 0.1 -q >"$tmp/log" 2>&1 \
   || fail "the 2-D run failed: $(cat "$tmp/log")"
-out=$("$bin" run --restart "$tmp/flat/state/t_0.100000s.h5" "$drums" --out "$tmp/bad3" -q 2>&1); status=$?
-[[ $status -eq 2 ]] || fail "2-D state, 3-D scenario: exit status $status, expected 2: $out"
-expect_in "$out" "a 2-D state: scenario"
+refused "2-D state, 3-D scenario" "$tmp/flat/state/t_0.100000s.h5" "$drums" --out "$tmp/bad3" -- "a 2-D state: scenario"
 
 if [[ $failures -gt 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "test_restart_3d: all passed"
