@@ -495,6 +495,16 @@ void resize_within(std::vector<T>& v, std::size_t n) {
     v.resize(n);
 }
 
+// resize_within for a vector whose elements are all to be written again (the table of the step
+// before last, its pairs and runs, swapped out for this step's fill): past its capacity they are
+// dropped before the new buffer is taken, not copied into it. Copied, the 15 MB table of the 1e4
+// wall was read and written on one thread while the other waited (docs/performance.md).
+template <class T>
+void room_within(std::vector<T>& v, std::size_t n) {
+    if (v.capacity() < n) v.clear();
+    resize_within(v, n);
+}
+
 // Steps 3 to 5a: this step's points, sorted by key, with last step's history, and the law at
 // them, a fixed chunk of the candidates at a time (in parallel): the chunk finds its pairs' points
 // and, as soon as its place in the table is known (every chunk before it has found its points),
@@ -530,9 +540,9 @@ LawTotals3d find_contacts(World3d& w, ChunkLaw chunk_law) {
     // step); what the table grows by is constructed, so a large margin would cost writes.
     const std::size_t room_points = s.previous.size() + s.previous.size() / 256;
     const std::size_t room_pairs = s.contact_pairs.size() + s.contact_pairs.size() / 256;
-    resize_within(w.contacts, room_points);
-    resize_within(s.contact_pairs, room_pairs);
-    resize_within(s.run_starts, room_pairs);
+    room_within(w.contacts, room_points);
+    room_within(s.contact_pairs, room_pairs);
+    room_within(s.run_starts, room_pairs);
     s.chunk_law_totals.assign(chunks, {});
     for (std::size_t k = 0; k < chunks; ++k) s.candidate_chunks[k].found = s.candidate_chunks[k].filled = false;
     const auto fill_and_law = [&](std::size_t k) {
