@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "dynamics/block_pencil.hpp"
 #include "dynamics/highest_mode.hpp"
 #include "geometry/polygon_contact.hpp"
 #include "laws/linear_spring_dashpot.hpp"
@@ -232,41 +233,38 @@ std::vector<StiffnessPoint> start_stiffness_points(const World& w) {
 
 namespace {
 
-// y = (weight_k K~ + weight_c C~) x, K~ and C~ the mass-normalised stiffness and damping
-// matrices of the points (3 entries a body: x, y, rotation).
-void apply_pencil(const Bodies& b, const std::vector<StiffnessPoint>& points, double weight_k, double weight_c,
-                  const std::vector<double>& x, std::vector<double>& y) {
-    std::fill(y.begin(), y.end(), 0.0);
-    for (const StiffnessPoint& p : points) {
+// The points as dynamics/block_pencil.hpp reads them: each point's normal and tangent, g's parts
+// on its bodies (body_part: zero on a body that does not move), with its springs and dashpots.
+struct PencilSource2d {
+    const Bodies& b;
+    const std::vector<StiffnessPoint>& points_;
+
+    std::size_t points() const { return points_.size(); }
+
+    PencilEnds ends(std::size_t i) const {
+        const StiffnessPoint& p = points_[i];
+        return {p.a, p.b, moves(b, p.a), moves(b, p.b)};
+    }
+
+    template <class F>
+    void directions(std::size_t i, F&& f) const {
+        const StiffnessPoint& p = points_[i];
         const Vec2 ra = moves(b, p.a) ? p.point_m - b.position_m[p.a] : Vec2{};
         const Vec2 rb = moves(b, p.b) ? p.point_m - b.position_m[p.b] : Vec2{};
-        const Vec2 directions[2] = {p.normal, perp(p.normal)};
-        const double weights[2] = {weight_k * p.kn_N_m + weight_c * p.cn_N_s_m, weight_k * p.ks_N_m + weight_c * p.cs_N_s_m};
-        for (int d = 0; d < 2; ++d) {
-            const std::array<double, 3> ga = body_part(b, p.a, ra, directions[d], -1.0);
-            const std::array<double, 3> gb = body_part(b, p.b, rb, directions[d], 1.0);
-            double s = 0.0;
-            for (int j = 0; j < 3; ++j) {
-                if (moves(b, p.a)) s += ga[j] * x[3 * p.a + j];
-                if (moves(b, p.b)) s += gb[j] * x[3 * p.b + j];
-            }
-            s *= weights[d];
-            for (int j = 0; j < 3; ++j) {
-                if (moves(b, p.a)) y[3 * p.a + j] += s * ga[j];
-                if (moves(b, p.b)) y[3 * p.b + j] += s * gb[j];
-            }
-        }
+        const Vec2 normal = p.normal, tangent = perp(p.normal);
+        const std::array<double, 3> ga_n = body_part(b, p.a, ra, normal, -1.0), gb_n = body_part(b, p.b, rb, normal, 1.0);
+        f(ga_n.data(), gb_n.data(), p.kn_N_m, p.cn_N_s_m);
+        const std::array<double, 3> ga_t = body_part(b, p.a, ra, tangent, -1.0), gb_t = body_part(b, p.b, rb, tangent, 1.0);
+        f(ga_t.data(), gb_t.data(), p.ks_N_m, p.cs_N_s_m);
     }
-}
+};
 
 }  // namespace
 
 CriticalTimeStep highest_mode_time_step(const Bodies& b, const std::vector<StiffnessPoint>& points,
                                         const CriticalTimeStep& bound) {
     if (!std::isfinite(bound.dt_s)) return bound;
-    const HighestMode mode = highest_mode(3 * b.size(), bound.dt_s, [&](double wk, double wc, const auto& x, auto& y) {
-        apply_pencil(b, points, wk, wc, x, y);
-    });
+    const HighestMode mode = pencil_highest_mode<3>(PencilSource2d{b, points}, b.size(), bound.dt_s);
     if (!mode.found) return bound;
     return {std::max(mode.dt_s, bound.dt_s), b.name[body_moving_most(mode.mode, 3)], mode.omega_rad_s, mode.h};
 }

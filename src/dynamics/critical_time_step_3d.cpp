@@ -3,8 +3,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
+#include "dynamics/block_pencil.hpp"
 #include "dynamics/highest_mode.hpp"
 #include "geometry/quaternion.hpp"
 #include "laws/linear_spring_dashpot.hpp"
@@ -140,42 +142,44 @@ std::vector<BodyRoots> body_roots(const World3d& w) {
     return roots;
 }
 
-// y = (weight_k K~ + weight_c C~) x over 6 entries a body (x, y, z, rotation about x, y, z).
-void apply_pencil_3d(const World3d& w, const std::vector<ContactPoint3d>& points, const std::vector<PointLaw>& laws,
-                     const std::vector<BodyRoots>& roots, double weight_k, double weight_c, const std::vector<double>& x,
-                     std::vector<double>& y) {
-    std::fill(y.begin(), y.end(), 0.0);
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const ContactPoint3d& c = points[i];
+// The points as dynamics/block_pencil.hpp reads them: each point's normal and two tangents, g's
+// parts on its bodies, -(d, r_a x d) on a and +(d, r_b x d) on b mass-normalised (zero on a body
+// that does not move: its roots are zero), with the point's springs and dashpots along them.
+struct PencilSource3d {
+    const World3d& w;
+    const std::vector<ContactPoint3d>& points_;
+    const std::vector<PointLaw>& laws;
+    const std::vector<BodyRoots>& roots;
+
+    std::size_t points() const { return points_.size(); }
+
+    PencilEnds ends(std::size_t i) const {
+        const ContactKey3d& k = points_[i].key;
+        return {k.body_a, k.body_b, w.kinds[k.body_a] == BodyKind3d::dynamic, w.kinds[k.body_b] == BodyKind3d::dynamic};
+    }
+
+    template <class F>
+    void directions(std::size_t i, F&& f) const {
+        const ContactPoint3d& c = points_[i];
         const std::uint32_t ends[2] = {c.key.body_a, c.key.body_b};
         const std::array<Vec3, 2> t = tangents(c.normal);
         const Vec3 directions[3] = {c.normal, t[0], t[1]};
         const PointLaw& law = laws[i];
-        const double weights[3] = {weight_k * law.kn_N_m + weight_c * law.cn_N_s_m,
-                                   weight_k * law.ks_N_m + weight_c * law.cs_N_s_m,
-                                   weight_k * law.ks_N_m + weight_c * law.cs_N_s_m};
+        const Vec3 levers[2] = {c.point_m - w.bodies[ends[0]].position_m, c.point_m - w.bodies[ends[1]].position_m};
         for (int d = 0; d < 3; ++d) {
-            // g's part on each end: -(d, r x d) on a, +(d, r x d) on b, mass-normalised.
-            Vec3 translation[2], rotation[2];
-            double s = 0.0;
+            double g[2][6];
             for (int e = 0; e < 2; ++e) {
                 const BodyRoots& root = roots[ends[e]];
                 const double sign = e == 0 ? -1.0 : 1.0;
-                translation[e] = (sign * root.over_sqrt_mass) * directions[d];
-                rotation[e] = sign * (root.over_sqrt_inertia * cross(c.point_m - w.bodies[ends[e]].position_m, directions[d]));
-                const double* xb = &x[6 * ends[e]];
-                s += translation[e].x * xb[0] + translation[e].y * xb[1] + translation[e].z * xb[2] +
-                     rotation[e].x * xb[3] + rotation[e].y * xb[4] + rotation[e].z * xb[5];
+                const Vec3 translation = (sign * root.over_sqrt_mass) * directions[d];
+                const Vec3 rotation = sign * (root.over_sqrt_inertia * cross(levers[e], directions[d]));
+                g[e][0] = translation.x, g[e][1] = translation.y, g[e][2] = translation.z;
+                g[e][3] = rotation.x, g[e][4] = rotation.y, g[e][5] = rotation.z;
             }
-            s *= weights[d];
-            for (int e = 0; e < 2; ++e) {
-                double* yb = &y[6 * ends[e]];
-                yb[0] += s * translation[e].x, yb[1] += s * translation[e].y, yb[2] += s * translation[e].z;
-                yb[3] += s * rotation[e].x, yb[4] += s * rotation[e].y, yb[5] += s * rotation[e].z;
-            }
+            f(g[0], g[1], d == 0 ? law.kn_N_m : law.ks_N_m, d == 0 ? law.cn_N_s_m : law.cs_N_s_m);
         }
     }
-}
+};
 
 }  // namespace
 
@@ -210,9 +214,7 @@ CriticalTimeStep3d highest_mode_time_step_3d(const World3d& w, const std::vector
     if (!std::isfinite(bound.dt_s)) return bound;
     const std::vector<PointLaw> laws = point_laws(w, points);
     const std::vector<BodyRoots> roots = body_roots(w);
-    const HighestMode mode = highest_mode(6 * w.bodies.size(), bound.dt_s, [&](double wk, double wc, const auto& x, auto& y) {
-        apply_pencil_3d(w, points, laws, roots, wk, wc, x, y);
-    });
+    const HighestMode mode = pencil_highest_mode<6>(PencilSource3d{w, points, laws, roots}, w.bodies.size(), bound.dt_s);
     if (!mode.found || mode.dt_s <= bound.dt_s) return bound;
     return {mode.dt_s, static_cast<std::uint32_t>(body_moving_most(mode.mode, 6)), mode.omega_rad_s, mode.h};
 }

@@ -41,9 +41,11 @@ inline double dot_product(const std::vector<double>& a, const std::vector<double
 }  // namespace detail
 
 /// apply(weight_k, weight_c, x, y) sets y = (weight_k K~ + weight_c C~) x over n degrees of
-/// freedom; trial_dt_s is the first trial (the proven bound).
-template <class Apply>
-HighestMode highest_mode(std::size_t n, double trial_dt_s, Apply&& apply) {
+/// freedom; quotients(x) returns x^T K~ x and x^T C~ x (a std::pair); trial_dt_s is the first
+/// trial (the proven bound). apply is called at one pair of weights power_iterations times in a
+/// row, so that it may prepare for each new pair (dynamics/block_pencil.hpp).
+template <class Apply, class Quotients>
+HighestMode highest_mode(std::size_t n, double trial_dt_s, Apply&& apply, Quotients&& quotients) {
     HighestMode r;
     // A start vector with a share of every mode: a fixed pseudo-random pattern (the all-ones
     // vector would miss the alternating modes of a regular lattice, the highest ones).
@@ -63,23 +65,31 @@ HighestMode highest_mode(std::size_t n, double trial_dt_s, Apply&& apply) {
             if (!(norm > 0.0)) return r;
             for (std::size_t i = 0; i < n; ++i) x[i] = y[i] / norm;
         }
-        apply(1.0, 0.0, x, y);
-        const double qk = detail::dot_product(x, y);
-        apply(0.0, 1.0, x, y);
-        const double qc = detail::dot_product(x, y);
+        const auto [qk, qc] = quotients(x);
         if (!(qk > 0.0)) return r;
         const double next = (std::sqrt(qc * qc + 4.0 * qk) - qc) / qk;
         const bool settled = std::abs(next - dt) < 1e-3 * dt;
         dt = next;
         if (settled) break;
     }
-    apply(1.0, 0.0, x, y);
-    r.omega_rad_s = std::sqrt(detail::dot_product(x, y));
-    apply(0.0, 1.0, x, y);
-    r.h = detail::dot_product(x, y) / (2.0 * r.omega_rad_s);
+    const auto [qk, qc] = quotients(x);
+    r.omega_rad_s = std::sqrt(qk);
+    r.h = qc / (2.0 * r.omega_rad_s);
     r.dt_s = dt;
     r.found = true;
     return r;
+}
+
+/// The same with the quotients made by apply.
+template <class Apply>
+HighestMode highest_mode(std::size_t n, double trial_dt_s, Apply&& apply) {
+    std::vector<double> y(n);
+    return highest_mode(n, trial_dt_s, apply, [&](const std::vector<double>& x) {
+        apply(1.0, 0.0, x, y);
+        const double qk = detail::dot_product(x, y);
+        apply(0.0, 1.0, x, y);
+        return std::pair<double, double>{qk, detail::dot_product(x, y)};
+    });
 }
 
 /// A body's own N x N blocks of K~ and C~ (N = 3 in 2-D, 6 in 3-D), the upper triangle row by
