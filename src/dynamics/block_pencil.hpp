@@ -12,13 +12,7 @@
 // (world/parallel.hpp, rule 2); the Rayleigh quotients are summed over points in fixed chunks
 // (rule 3).
 //
-// A Source gives the points, in any order (a run is consecutive points of the same two bodies):
-//   std::size_t points() const;
-//   PencilEnds ends(std::size_t i) const;
-//   template <class F> void directions(std::size_t i, F&& f) const;
-//     calls f(const double* g_a, const double* g_b, double k, double c) for each direction of
-//     point i: g's N entries on a and on b (zeros on an end that does not move) and the spring
-//     k and dashpot c along it.
+// The points come from a Source as dynamics/point_runs.hpp describes it.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -27,14 +21,10 @@
 #include <vector>
 
 #include "dynamics/highest_mode.hpp"
+#include "dynamics/point_runs.hpp"
 #include "world/parallel.hpp"
 
 namespace blockdem {
-
-struct PencilEnds {
-    std::uint32_t a = 0, b = 0;  ///< bodies (an end that does not move may be any index)
-    bool a_moves = false, b_moves = false;
-};
 
 /// The two Rayleigh quotients x^T K~ x and x^T C~ x.
 struct PencilQuotients {
@@ -52,46 +42,29 @@ class BlockPencil {
 public:
     using Block = std::array<double, N * N>;  ///< row-major
 
-    /// The runs and each moving body's list of them, for bodies < body_count.
     template <class Source>
-    BlockPencil(const Source& source, std::size_t body_count) : bodies_(body_count) {
-        for (std::size_t i = 0; i < source.points(); ++i) {
-            const PencilEnds e = source.ends(i);
-            if (!e.a_moves && !e.b_moves) continue;
-            const auto at = static_cast<std::uint32_t>(i);
-            if (!runs_.empty() && runs_.back().end == at && same_bodies(runs_.back().ends, e)) {
-                ++runs_.back().end;
-                continue;
-            }
-            const bool couples = e.a_moves && e.b_moves;
-            runs_.push_back({e, at, at + 1, couples ? couplings_++ : none});
-        }
-        index_runs_by_body();
-        diagonal_.resize(bodies_);
-        coupling_.resize(couplings_);
-    }
+    BlockPencil(const Source& source, std::size_t body_count)
+        : runs_(source, body_count), diagonal_(body_count), coupling_(runs_.couplings()) {}
 
     /// The blocks of B at these weights (w_k [s^2], w_c [s]): each body's diagonal block, and the
     /// coupling of each run where the body is a, from the same directions; in parallel over
     /// bodies, each writing its own blocks (rule 1).
     template <class Source>
     void assemble(const Source& source, double weight_k, double weight_c) {
-        parallel_for(static_cast<std::ptrdiff_t>(bodies_), [&](std::ptrdiff_t body) {
+        parallel_for(static_cast<std::ptrdiff_t>(runs_.bodies()), [&](std::ptrdiff_t body) {
             Block& d = diagonal_[body];
             d.fill(0.0);
-            for (std::uint32_t e = start_[body]; e < start_[body + 1]; ++e) {
-                const Run& run = runs_[entries_[e] >> 1];
-                const bool is_b = (entries_[e] & 1u) != 0;
-                Block* couple = !is_b && run.coupling != none ? &coupling_[run.coupling] : nullptr;
+            runs_.for_each_run(body, [&](const PointRuns::Entry& e) {
+                Block* couple = !e.is_b && e.run.coupling != PointRuns::none ? &coupling_[e.run.coupling] : nullptr;
                 if (couple) couple->fill(0.0);
-                for (std::uint32_t p = run.first; p < run.end; ++p)
+                for (std::uint32_t p = e.run.first; p < e.run.end; ++p)
                     source.directions(p, [&](const double* ga, const double* gb, double k, double c) {
                         const double w = weight_k * k + weight_c * c;
-                        const double* g = is_b ? gb : ga;
+                        const double* g = e.is_b ? gb : ga;
                         add_outer(d, w, g, g);
                         if (couple) add_outer(*couple, w, ga, gb);
                     });
-            }
+            });
         });
         weight_k_ = weight_k;
         weight_c_ = weight_c;
@@ -102,7 +75,7 @@ public:
 
     /// y = B x, N entries a body (a body that does not move gets zeros).
     void apply(const std::vector<double>& x, std::vector<double>& y) const {
-        parallel_for_runs(static_cast<std::ptrdiff_t>(bodies_), [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
+        parallel_for_runs(static_cast<std::ptrdiff_t>(runs_.bodies()), [&](std::ptrdiff_t begin, std::ptrdiff_t end) {
             for (std::ptrdiff_t body = begin; body < end; ++body) gather(body, x, &y[N * body]);
         });
     }
@@ -111,7 +84,7 @@ public:
     template <class Source>
     PencilQuotients quotients(const Source& source, const std::vector<double>& x) const {
         return deterministic_sum(static_cast<std::ptrdiff_t>(source.points()), [&](std::ptrdiff_t i) {
-            const PencilEnds e = source.ends(static_cast<std::size_t>(i));
+            const PointEnds e = source.ends(static_cast<std::size_t>(i));
             PencilQuotients q;
             source.directions(static_cast<std::size_t>(i), [&](const double* ga, const double* gb, double k, double c) {
                 double s = 0.0;
@@ -125,15 +98,6 @@ public:
     }
 
 private:
-    static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-    struct Run {
-        PencilEnds ends;
-        std::uint32_t first = 0, end = 0;  ///< its points first .. end - 1
-        std::uint32_t coupling = none;     ///< its block, where both bodies move
-    };
-
-    static bool same_bodies(const PencilEnds& x, const PencilEnds& y) { return x.a == y.a && x.b == y.b; }
-
     static double dot(const double* g, const double* x) {
         double s = 0.0;
         for (int j = 0; j < N; ++j) s += g[j] * x[j];
@@ -147,51 +111,30 @@ private:
         }
     }
 
-    // Each moving body's runs in run order, as entries 2 run + (1 where it is the run's b).
-    void index_runs_by_body() {
-        start_.assign(bodies_ + 1, 0);
-        const auto each_moving_end = [&](auto&& f) {
-            for (std::uint32_t r = 0; r < runs_.size(); ++r) {
-                if (runs_[r].ends.a_moves) f(runs_[r].ends.a, 2 * r);
-                if (runs_[r].ends.b_moves) f(runs_[r].ends.b, 2 * r + 1);
-            }
-        };
-        each_moving_end([&](std::uint32_t body, std::uint32_t) { ++start_[body + 1]; });
-        for (std::size_t i = 0; i < bodies_; ++i) start_[i + 1] += start_[i];
-        entries_.resize(start_[bodies_]);
-        std::vector<std::uint32_t> next(start_.begin(), start_.end() - 1);
-        each_moving_end([&](std::uint32_t body, std::uint32_t entry) { entries_[next[body]++] = entry; });
-    }
-
     void gather(std::ptrdiff_t body, const std::vector<double>& x, double* y) const {
         const Block& d = diagonal_[body];
         const double* xi = &x[N * body];
         for (int r = 0; r < N; ++r) y[r] = dot(&d[N * r], xi);
-        for (std::uint32_t e = start_[body]; e < start_[body + 1]; ++e) {
-            const Run& run = runs_[entries_[e] >> 1];
-            if (run.coupling == none) continue;
-            const Block& c = coupling_[run.coupling];
-            if ((entries_[e] & 1u) == 0) {
-                const double* xb = &x[N * run.ends.b];
+        runs_.for_each_run(body, [&](const PointRuns::Entry& e) {
+            if (e.run.coupling == PointRuns::none) return;
+            const Block& c = coupling_[e.run.coupling];
+            if (!e.is_b) {
+                const double* xb = &x[N * e.run.ends.b];
                 for (int r = 0; r < N; ++r) y[r] += dot(&c[N * r], xb);
             } else {
-                const double* xa = &x[N * run.ends.a];
+                const double* xa = &x[N * e.run.ends.a];
                 for (int col = 0; col < N; ++col) {
                     double s = 0.0;
                     for (int r = 0; r < N; ++r) s += c[N * r + col] * xa[r];
                     y[col] += s;
                 }
             }
-        }
+        });
     }
 
-    std::size_t bodies_ = 0;
-    std::uint32_t couplings_ = 0;
-    std::vector<Run> runs_;
-    std::vector<std::uint32_t> start_;    // body i's entries: entries_[start_[i] .. start_[i + 1])
-    std::vector<std::uint32_t> entries_;  // 2 run + (1 where the body is the run's b)
+    PointRuns runs_;
     std::vector<Block> diagonal_;
-    std::vector<Block> coupling_;         // rows: a's entries; columns: b's
+    std::vector<Block> coupling_;  // one a run whose two bodies move: rows a's entries, columns b's
     double weight_k_ = std::numeric_limits<double>::quiet_NaN();
     double weight_c_ = std::numeric_limits<double>::quiet_NaN();
 };

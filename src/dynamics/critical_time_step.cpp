@@ -241,7 +241,7 @@ struct PencilSource2d {
 
     std::size_t points() const { return points_.size(); }
 
-    PencilEnds ends(std::size_t i) const {
+    PointEnds ends(std::size_t i) const {
         const StiffnessPoint& p = points_[i];
         return {p.a, p.b, moves(b, p.a), moves(b, p.b)};
     }

@@ -39,7 +39,7 @@ void use_pencil_threads(int threads) {
 
 // A point with two directions, each with g's parts on its two ends and a spring and a dashpot.
 struct SyntheticPoint {
-    PencilEnds ends;
+    PointEnds ends;
     double g[2][2][pencil_dofs];  // [direction][end][entry]
     double k[2], c[2];
 };
@@ -47,7 +47,7 @@ struct SyntheticPoint {
 struct SyntheticSource {
     std::vector<SyntheticPoint> list;
     std::size_t points() const { return list.size(); }
-    PencilEnds ends(std::size_t i) const { return list[i].ends; }
+    PointEnds ends(std::size_t i) const { return list[i].ends; }
     template <class F>
     void directions(std::size_t i, F&& f) const {
         const SyntheticPoint& p = list[i];
