@@ -11,6 +11,7 @@
 #include "geometry/joint_set_3d.hpp"
 #include "geometry/polyhedron.hpp"
 #include "geometry/polyhedron_cut.hpp"
+#include "io/assembly_keys.hpp"
 #include "io/scenario_keys.hpp"
 #include "io/vec3_keys.hpp"
 #include "scenes/random_packing_3d.hpp"
@@ -116,6 +117,8 @@ GeneratedAssembly3d read_rock_mass_3d(TableReader& t, const std::string& name) {
             st.fail("spacing", fmt::format("the joint sets so far would cut the region into up to {:g} blocks (above "
                                            "{:g}): a spacing too small?",
                                            cells, max_blocks));
+        check_block_budget(st, "spacing", cells, "the joint sets so far, each cutting the region at its spacing",
+                           bytes_per_block_3d);
         const std::vector<Plane3d> joints = joint_planes(set, region.vertices_m);
         planes.insert(planes.end(), joints.begin(), joints.end());
         smallest_spacing_m = std::min(smallest_spacing_m, set.spacing_m);
@@ -172,6 +175,7 @@ GeneratedAssembly3d read_rock_mass_3d(TableReader& t, const std::string& name) {
 GeneratedAssembly3d read_random_packing_3d(TableReader& t, const std::string& name) {
     scenes::RandomPacking3dDef def;
     def.count = static_cast<std::size_t>(t.whole_number("count", 1, 1'000'000));
+    check_block_budget(t, "count", static_cast<double>(def.count), fmt::format("count = {}", def.count), bytes_per_block_3d);
     const std::string shape = t.choice("shape", {"box", "hull"}, "box");
     def.shape = shape == "box" ? scenes::PackedShape::box : scenes::PackedShape::hull;
     def.min_size_m = t.positive("min_size");

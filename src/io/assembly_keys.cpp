@@ -13,28 +13,10 @@
 namespace blockdem {
 namespace {
 
-// Memory a generated block costs in a run: 1.73 GB peak for the 1e6-brick wall (docs/performance.md)
-// is 1.7 kB a brick; 2 kB leaves room for the contacts of a denser packing.
-constexpr double bytes_per_block = 2000.0;
 // Bodies are numbered with 32-bit ids; far below that, 1e8 blocks is past any run this code can do.
 constexpr double max_assembly_blocks = 1e8;
 // Seeds are 64-bit, but TOML numbers are read exactly only up to 2^53.
 constexpr std::int64_t max_seed = std::int64_t{1} << 53;
-
-// Refuses, at `key`, an assembly whose estimated blocks would not fit in the machine's memory,
-// before it is generated: "how" says where the estimate comes from.
-void check_block_budget(TableReader& t, const std::string& key, double blocks, const std::string& how) {
-    const double bytes = blocks * bytes_per_block;
-    const double memory = static_cast<double>(physical_memory_bytes());
-    const double memory_blocks = memory > 0.0 ? memory / bytes_per_block : max_assembly_blocks;
-    const double limit = std::min(max_assembly_blocks, memory_blocks);
-    if (blocks <= limit) return;
-    t.fail(key, fmt::format("the assembly would have about {:.3g} blocks ({}), needing about {} at {} a block; the limit is {:.3g} "
-                            "blocks ({})",
-                            blocks, how, format_bytes(bytes), format_bytes(bytes_per_block), limit,
-                            limit == max_assembly_blocks ? "the most a run may have"
-                                                         : fmt::format("this machine's {} of memory", format_bytes(memory))));
-}
 
 scenes::BlockStyle read_style(TableReader& t) {
     scenes::BlockStyle s;
@@ -55,7 +37,7 @@ std::vector<scenes::Polygon> read_column(TableReader& t) {
             if (!(s.x > 0.0 && s.y > 0.0)) t.fail("sizes", "every [width, height] must be > 0");
     } else {
         const auto count = t.whole_number("count", 1, static_cast<std::int64_t>(max_assembly_blocks));
-        check_block_budget(t, "count", static_cast<double>(count), fmt::format("count = {}", count));
+        check_block_budget(t, "count", static_cast<double>(count), fmt::format("count = {}", count), bytes_per_block_2d);
         sizes.assign(static_cast<std::size_t>(count), Vec2{t.positive("width"), t.positive("height")});
     }
     return scenes::block_column(sizes, base);
@@ -82,7 +64,7 @@ std::vector<scenes::Polygon> read_wall(TableReader& t) {
     const double per_course = blocks / w.courses;
     check_block_budget(t, per_course >= w.courses ? "length" : "courses", blocks,
                        fmt::format("{} courses x {:.3g} a course, from length / brick_length = {:g} m / {:g} m", w.courses,
-                                   per_course, w.length_m, w.brick_length_m));
+                                   per_course, w.length_m, w.brick_length_m), bytes_per_block_2d);
     return scenes::masonry_wall(w);
 }
 
@@ -120,7 +102,7 @@ scenes::GeneratedBlocks read_rock_mass(TableReader& t) {
             t.fail("joint_sets", fmt::format("joint set {}: spacing_spread must be in [0, 1), got {}", i + 1, spec.joint_sets[i].spacing_spread));
     check_block_budget(t, "joint_sets", scenes::estimated_block_count(spec),
                        fmt::format("{} joint set{} across the region at their spacings", spec.joint_sets.size(),
-                                   spec.joint_sets.size() == 1 ? "" : "s"));
+                                   spec.joint_sets.size() == 1 ? "" : "s"), bytes_per_block_2d);
     return scenes::jointed_rock_mass(spec);
 }
 
@@ -132,7 +114,7 @@ scenes::GeneratedBlocks read_voronoi(TableReader& t) {
     spec.seed = static_cast<std::uint64_t>(t.whole_number_or("seed", 1, 0, max_seed));
     spec.shrink = t.number_or("shrink", 0.0);
     check_block_budget(t, "cell_size", scenes::estimated_block_count(spec),
-                       fmt::format("the region's extent in cells of {:g} m", spec.cell_size_m));
+                       fmt::format("the region's extent in cells of {:g} m", spec.cell_size_m), bytes_per_block_2d);
     return scenes::voronoi_packing(spec);
 }
 
@@ -203,6 +185,21 @@ std::vector<BodyDef> read_assembly(TableReader t, std::uint32_t group) {
 }
 
 }  // namespace
+
+void check_block_budget(TableReader& t, const std::string& key, double blocks, const std::string& how,
+                        double bytes_per_block) {
+    const double bytes = blocks * bytes_per_block;
+    const double memory = static_cast<double>(physical_memory_bytes());
+    const double memory_blocks = memory > 0.0 ? memory / bytes_per_block : max_assembly_blocks;
+    const double limit = std::min(max_assembly_blocks, memory_blocks);
+    if (blocks <= limit) return;
+    t.fail(key, fmt::format("the assembly would have about {:.3g} blocks ({}), needing about {} at {} a block; the limit is {:.3g} "
+                            "blocks ({})",
+                            blocks, how, format_bytes(bytes), format_bytes(bytes_per_block), limit,
+                            limit == max_assembly_blocks ? "the most a run may have"
+                                                         : fmt::format("this machine's {} of memory", format_bytes(memory))));
+}
+
 
 SettlingSettings read_settling(TableReader t) {
     SettlingSettings s;

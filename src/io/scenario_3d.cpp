@@ -179,6 +179,7 @@ BodyDef3d read_body_3d(TableReader t) {
 // to NAME_n.
 std::vector<BodyDef3d> read_drum_column(TableReader& t, const std::string& name) {
     const auto drums = t.whole_number("drums", 1, 10000);
+    check_block_budget(t, "drums", static_cast<double>(drums), fmt::format("drums = {}", drums), bytes_per_block_3d);
     const auto sides = t.whole_number_or("sides", 32, 3, max_sides);
     const double radius = t.positive("radius");
     const double height = t.positive("height");
@@ -209,8 +210,9 @@ std::vector<BodyDef3d> read_brick_wall(TableReader& t, const std::string& name) 
     const auto wythes = t.whole_number_or("wythes", 1, 1, 1000);
     const Vec3 brick = vec3(t, "brick", " ([length, thickness, height] of a brick in m)");
     if (!(brick.x > 0.0 && brick.y > 0.0 && brick.z > 0.0)) t.fail("brick", "edge lengths must be > 0");
-    if (courses * per_course * wythes > 10'000'000)
-        t.fail("courses", "courses x bricks_per_course x wythes is above 1e7 bricks");
+    check_block_budget(t, "courses", static_cast<double>(courses * per_course * wythes),
+                       fmt::format("courses x bricks_per_course x wythes = {} x {} x {}", courses, per_course, wythes),
+                       bytes_per_block_3d);
     const Vec3 origin = vec3(t, "origin", " ([x, y, z] of the wall's lowest first corner in m)");
     const BodyKind3d kind = read_kind(t);
     const double density = read_density(t, name, kind);

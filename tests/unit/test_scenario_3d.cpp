@@ -173,6 +173,24 @@ density = 2000.0
     EXPECT_EQ(s.world.bodies.back().name, "w_1_1_1");
 }
 
+TEST(Scenario3d, AssemblyTooLargeForTheMachineIsRefusedBeforeGenerating) {
+    // 1e5 courses of 12 bricks in 2 wythes were generated and ran the machine out of memory.
+    const std::string wall = error_of(R"([[assemblies]]
+name = "w"
+type = "brick_wall"
+courses = 100000
+bricks_per_course = 100000
+wythes = 2
+brick = [0.4, 0.2, 0.1]
+origin = [0.0, 0.0, 0.0]
+density = 2000.0
+)");
+    EXPECT_NE(wall.find("key 'assemblies.w.courses': the assembly would have about 2e+10 blocks (courses x bricks_per_course x "
+                        "wythes = 100000 x 100000 x 2), needing about 500.0 TB at 25.0 kB a block; the limit is"),
+              std::string::npos)
+        << wall;
+}
+
 TEST(Scenario3d, ContactKeysAreReadAsIn2d) {
     const LoadedScenario3d s = load(R"([[bodies]]
 name = "block"
