@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "io/output_file.hpp"
 #include "scenes/assemblies.hpp"
 #include "world/step.hpp"
@@ -205,17 +206,17 @@ void add_bench_command(CLI::App& app) {
         ->capture_default_str();
     cmd->add_option("--sizes", o->sizes, "numbers of blocks, e.g. 100,1000,10000")
         ->delimiter(',')
-        ->check(CLI::Range(1, 100000000))
+        ->check(whole_number_in(1, 100000000))
         ->capture_default_str();
     cmd->add_option("--threads", o->threads, "OpenMP thread counts, e.g. 1,2 (1 first gives the speedup)")
         ->delimiter(',')
-        ->check(CLI::Range(1, 4096))
+        ->check(whole_number_in(1, max_threads))
         ->capture_default_str();
     cmd->add_option("--work", o->work, "block-steps per timed run (steps = work / blocks, 3 to 5000)")->capture_default_str();
     cmd->add_option("--warmup", o->warmup, "untimed steps before timing (same for every size: same state)")
         ->capture_default_str();
     cmd->add_option("--rounding", o->rounding_m, "corner radius [m] of every block ([contact] rounding); 0: sharp")
-        ->check(CLI::NonNegativeNumber)
+        ->check(finite_non_negative())
         ->capture_default_str();
     cmd->add_option("--repeats", o->repeats, "timed runs per case; the fastest is reported")->capture_default_str();
     cmd->add_option("--idle-wait", o->idle_wait_s, "wait up to this many seconds for idle CPUs before each run")

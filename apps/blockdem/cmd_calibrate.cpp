@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "io/input_error.hpp"
 #include "laws/restitution.hpp"
 #include "study/rocking_calibration.hpp"
@@ -260,7 +261,7 @@ void add_calibrate_command(CLI::App& app) {
     cmd->add_option("--impacts", options->impacts, "impacts measured per DEM run")->capture_default_str();
     cmd->add_option("--tolerance", options->tolerance, "on r: |achieved - target| at most this")->capture_default_str();
     cmd->add_option("--dt", options->dt_s, "[s] time step of the DEM runs (default: dt_safety x the stable limit, as a run)");
-    cmd->add_option("--toml", options->toml_file, "also write the scenario keys to this file");
+    cmd->add_option("--toml", options->toml_file, "also write the scenario keys to this file")->check(output_file());
     cmd->callback([options] { run_calibrate(*options); });
 }
 

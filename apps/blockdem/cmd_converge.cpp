@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "io/input_error.hpp"
 #include "io/scenario.hpp"
 #include "io/scenario_3d.hpp"
@@ -172,19 +173,20 @@ void add_converge_command(CLI::App& app) {
     auto show = std::make_shared<std::size_t>(10);
     cmd->add_option("scenario", *scenario, "scenario file (TOML)")->required();
     cmd->add_option("--out,-o", *out, "study folder: converge.json, converge.csv and one folder per run (dt/ is the base run)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(output_folder());
     cmd->add_option("--set", *sets, "override a scenario key in every run: --set simulation.duration=5 (repeatable)");
     cmd->add_flag("--stiffness", options->stiffness, "also run at 0.5 x and 2 x the contact stiffness (kn and ks, at dt/2)");
     cmd->add_option("--ensemble", options->ensemble, "also run N copies at dt with gravity perturbed by up to --perturbation")
-        ->check(CLI::NonNegativeNumber);
+        ->check(whole_number_in(0, max_ensemble, "each copy is a whole run"));
     cmd->add_option("--perturbation", options->perturbation, "largest relative perturbation of the ensemble")->capture_default_str();
-    cmd->add_option("--rtol", tol->rtol, "relative change allowed from dt/2 to dt/4")->capture_default_str()->check(CLI::PositiveNumber);
+    cmd->add_option("--rtol", tol->rtol, "relative change allowed from dt/2 to dt/4")->capture_default_str()->check(finite_positive());
     cmd->add_option("--floor-rotation", tol->floor_rotation_rad, "[rad] floor of the rotation in a relative change")
-        ->capture_default_str()->check(CLI::PositiveNumber);
+        ->capture_default_str()->check(finite_positive());
     cmd->add_option("--floor-slip", tol->floor_slip_m, "[m] floor of the slip in a relative change")
-        ->capture_default_str()->check(CLI::PositiveNumber);
+        ->capture_default_str()->check(finite_positive());
     cmd->add_option("--floor-time", tol->floor_time_s, "[s] floor of the overturning time in a relative change")
-        ->capture_default_str()->check(CLI::PositiveNumber);
+        ->capture_default_str()->check(finite_positive());
     cmd->add_option("--show", *show, "print at most this many bodies (the least converged first)")->capture_default_str();
     cmd->add_flag("--report", *report, "also write DIR/dt/report.html, with the verdict");
     cmd->add_flag("--quiet,-q", *quiet, "no progress lines");

@@ -16,6 +16,7 @@
 
 #include "analysis/limit_analysis.hpp"
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "io/output_file.hpp"
 #include "io/scenario.hpp"
 
@@ -134,7 +135,8 @@ void add_limit_command(CLI::App& app) {
     cmd->add_option("scenario", *scenario, "scenario file (TOML)")->required();
     cmd->add_option("--direction", *direction, "direction of the live load lambda m g: +x or -x")
         ->check(CLI::IsMember({"+x", "-x"}));
-    cmd->add_option("--json", *json_file, "also write the result (forces, thrust points, mechanism) to this JSON file");
+    cmd->add_option("--json", *json_file, "also write the result (forces, thrust points, mechanism) to this JSON file")
+        ->check(output_file());
     cmd->add_option("--set", *sets, "override a scenario key: --set contact.mu=0.5 (repeatable)");
     cmd->add_flag("--non-associative", *non_associative,
                   "joints slip without dilating (iterated LPs; default: the associative static theorem)");

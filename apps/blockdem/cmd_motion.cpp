@@ -12,6 +12,7 @@
 #include <fmt/ostream.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "io/input_error.hpp"
 #include "motion/intensity_measures.hpp"
 #include "motion/record_processing.hpp"
@@ -189,10 +190,12 @@ void add_motion_command(CLI::App& app) {
         ->required()->check(CLI::ExistingFile);
     cmd->add_option("--format", options->format, "auto, peer-at2, knet, cosmos-v2, jma-csv, plain")->capture_default_str();
     cmd->add_option("--units", options->units, "override the file's units: m/s^2, gal, g (g = 9.80665 m/s^2)");
-    cmd->add_option("--dt", options->dt_s, "[s] sample interval of a values-only text file")->check(CLI::PositiveNumber);
+    cmd->add_option("--dt", options->dt_s, "[s] sample interval of a values-only text file")->check(finite_positive());
     cmd->add_option("--component", options->component, "column or channel to read (e.g. NS, EW, UD)");
-    cmd->add_option("--out", options->out, "folder for spectrum.csv, record.csv and motion.png")->capture_default_str();
-    cmd->add_option("--damping", options->damping, "damping ratio of the spectrum")->capture_default_str()->check(CLI::Range(0.0, 0.99));
+    cmd->add_option("--out", options->out, "folder for spectrum.csv, record.csv and motion.png")
+        ->capture_default_str()
+        ->check(output_folder());
+    cmd->add_option("--damping", options->damping, "damping ratio of the spectrum")->capture_default_str()->check(finite_in(0.0, 0.99));
     cmd->add_option("--periods", options->periods_s,
                     fmt::format("[s] periods of the spectrum (default 100 from 0.01 to 10 s; each 0 (the PGA) or {:g} to {:g} s)",
                                 min_spectrum_period_s, max_spectrum_period_s));

@@ -12,6 +12,7 @@
 #include <fmt/ranges.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "apps/blockdem/stop_signal.hpp"
 #include "run/run_scenario.hpp"
 #include "world/settling.hpp"
@@ -136,19 +137,20 @@ void add_run_command(CLI::App& app) {
     cmd->add_option("scenario", *scenario, "scenario file (TOML); with --restart, default: the run folder's scenario.toml");
     auto* out_option = cmd->add_option("--out,-o", *out, "output folder (with --restart, default: the state's run folder, "
                                                          "continued in place)")
-                           ->capture_default_str();
+                           ->capture_default_str()
+                           ->check(output_folder());
     cmd->add_option("--set", *sets, "override a scenario key: --set contact.h_s=0.5 (repeatable)");
     cmd->add_flag("--quiet,-q", *quiet, "no progress lines");
     cmd->add_flag("--force", *force, "replace the run already in --out (removes only blockdem's own files there)");
     cmd->add_option("--threads,-j", *threads, "threads of the time step (default: OMP_NUM_THREADS, else all cores); "
                                               "results do not depend on it")
-        ->check(CLI::PositiveNumber);
+        ->check(whole_number_in(1, max_threads));
     cmd->add_option("--save-state", *save_times, "write the whole state at these times [s] to DIR/state/t_<time>s.h5 "
                                                  "(comma-separated), to restart from or start other runs from")
         ->delimiter(',')
-        ->check(CLI::NonNegativeNumber);
+        ->check(finite_non_negative());
     cmd->add_option("--save-state-every", *save_every, "write the whole state every DT seconds of simulated time")
-        ->check(CLI::PositiveNumber);
+        ->check(finite_positive());
     cmd->add_option("--restart", *restart, "continue the run a state file was saved in, from the state's time: the "
                                            "files end as those of a run that never stopped");
     cmd->callback([=] {

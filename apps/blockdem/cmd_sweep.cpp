@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "apps/blockdem/stop_signal.hpp"
 #include "sweep/mpi_cases.hpp"
 #include "sweep/sweep.hpp"
@@ -81,6 +82,7 @@ sweep::SweepPlan make_plan(const SweepArguments& a) {
     } else if (!a.scale.empty() || !a.target_pga.empty() || !a.record_keys.empty()) {
         throw CLI::ValidationError("--scale, --target-pga and --record-key need --records");
     }
+    plan.check_keys_distinct();
     return plan;
 }
 
@@ -137,8 +139,9 @@ void add_sweep_command(CLI::App& app) {
     cmd->add_option("--target-pga", a->target_pga, "target PGA levels for every record: v1,v2,... or start:stop:step");
     cmd->add_option("--target-pga-unit", a->target_pga_unit, "unit of --target-pga, required with it: m/s^2, gal or g")->check(CLI::IsMember({"m/s^2", "gal", "g"}));
     cmd->add_option("--record-key", a->record_keys, "a record key for every record, e.g. duration=20 (repeatable)");
-    cmd->add_option("--out,-o", a->out, "output folder (a rerun with the same folder resumes)")->required();
-    cmd->add_option("--threads,-j", a->threads, "threads per process (default: all cores; 1 per rank under mpirun)");
+    cmd->add_option("--out,-o", a->out, "output folder (a rerun with the same folder resumes)")->required()->check(output_folder());
+    cmd->add_option("--threads,-j", a->threads, "threads per process (default: all cores; 1 per rank under mpirun)")
+        ->check(whole_number_in(1, max_threads));
     cmd->add_flag("--histories", a->histories, "also write cases/<id>/history.csv for every case");
     cmd->add_option("--solver", a->solver, "dem, or housner: the independent equation-of-motion solver for one rectangular block")
         ->check(CLI::IsMember({"dem", "housner"}))->capture_default_str();

@@ -43,13 +43,18 @@ void start_case_from_state(World& w, const std::filesystem::path& file, const st
 
 // The scenario of one case: the unvaried TOML, the assignments, then the record (which replaces
 // the whole horizontal motion, since a sine's keys mean nothing to a record).
-World build_case_world(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c) {
+toml::table case_root(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c) {
     toml::table root = scenario.root;
     apply_overrides(root, as_set_arguments(c.assignments));
     if (c.record) {
         if (auto* motion = root["table_motion"].as_table()) motion->erase("horizontal");
         apply_overrides(root, as_set_arguments(record_assignments(plan.suite, c)));
     }
+    return root;
+}
+
+World build_case_world(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c) {
+    const toml::table root = case_root(scenario, plan, c);
     const Model model = read_model(root, scenario.file.string(), scenario.file.parent_path());
     World w;
     try {
@@ -231,6 +236,29 @@ SweepScenario load_sweep_scenario(const std::filesystem::path& file) {
 
 SweepScenario load_sweep_scenario(toml::table root, const std::filesystem::path& file) {
     return sweep_scenario_from(load_scenario(std::move(root), file, {}), file);
+}
+
+void check_axes_readable(const SweepScenario& scenario, const SweepPlan& plan) {
+    const SweepCase first = make_case(plan, 0);
+    std::size_t column = 0;  // the axis's first assignment in a case's list
+    for (const SweepAxis& axis : plan.axes) {
+        std::string first_error;
+        bool any_read = false;
+        for (std::size_t p = 0; p < axis.points.size() && !any_read; ++p) {
+            SweepCase c = first;
+            for (std::size_t j = 0; j < axis.keys.size(); ++j) c.assignments[column + j].value = axis.points[p][j];
+            try {
+                (void)read_model(case_root(scenario, plan, c), scenario.file.string(), scenario.file.parent_path());
+                any_read = true;
+            } catch (const std::exception& e) {
+                if (first_error.empty()) first_error = e.what();
+            }
+        }
+        if (!any_read)
+            throw InputError({scenario.file.string(), axis.keys.front(), 0, 0},
+                             fmt::format("no value of the varied key can be read into the scenario, e.g. {}", first_error));
+        column += axis.keys.size();
+    }
 }
 
 CaseResult run_case(const SweepScenario& scenario, const SweepPlan& plan, const SweepCase& c,

@@ -56,6 +56,7 @@ Setup common_setup(const SweepRequest& request) {
     Setup s;
     s.scenario = load_sweep_scenario(request.scenario);
     s.total = request.plan.case_count();
+    check_axes_readable(s.scenario, request.plan);
     s.options = request.options;
     if (request.histories) s.options.histories_dir = request.out_dir / "cases";
     const std::vector<std::string> columns = result_columns(request.plan, s.scenario.body_names);

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -207,6 +208,16 @@ std::int64_t SweepPlan::case_count() const {
     if (!suite.records.empty()) n *= static_cast<std::int64_t>(suite.records.size() * suite.levels.size());
     if (n > max_cases) throw std::invalid_argument(fmt::format("{} cases is more than the limit of {}", n, max_cases));
     return n;
+}
+
+void SweepPlan::check_keys_distinct() const {
+    std::set<std::string> seen;
+    for (const auto& axis : axes)
+        for (const auto& key : axis.keys)
+            if (!seen.insert(key).second)
+                throw std::invalid_argument(fmt::format("the key '{}' is varied twice (by --vary or a --cases column): "
+                                                        "give all its values in one place",
+                                                        key));
 }
 
 std::vector<std::string> SweepPlan::value_columns() const {

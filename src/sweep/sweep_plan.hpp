@@ -51,6 +51,9 @@ struct SweepPlan {
     RecordSuite suite;
 
     std::int64_t case_count() const;
+    /// Throws std::invalid_argument naming a key varied twice (by two --vary, or a --vary and a
+    /// column of --cases): the results would hold two columns of it, the last one winning.
+    void check_keys_distinct() const;
     /// Column names of the varied values, in order: every axis key, then "record" and
     /// "scale" or "target_pga_<unit>" when there is a suite.
     std::vector<std::string> value_columns() const;

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The subcommands' options refuse what would waste or lose the work, before it starts, with exit
+# status 2 and the option named: numbers that are not finite or out of range (CLI11's own checks
+# let nan and inf through and printed a 300-digit bound), an ensemble of 1e8 runs (ran out of
+# memory), an output folder that is empty ("--out ''" wrote nowhere and said it had) or a file,
+# an output file in a folder that does not exist (refused after the fit had run), a sweep key
+# varied twice (two columns, the last winning) or none of whose values can be read.
+# Usage: test_option_checks.sh BLOCKDEM SOURCE_DIR
+set -euo pipefail
+blockdem=$1
+source_dir=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+expect_refused() {  # <words> <blockdem arguments...>: exit status 2, the words on stderr
+  local words=$1
+  shift
+  set +e
+  timeout 60 "$blockdem" "$@" > "$work/out.txt" 2> "$work/err.txt"
+  local status=$?
+  set -e
+  [ $status -eq 2 ] || { cat "$work/out.txt" "$work/err.txt"; fail "exit status $status (expected 2) for: $*"; }
+  grep -qF -- "$words" "$work/err.txt" || { cat "$work/err.txt"; fail "message for: $* (expected: $words)"; }
+}
+
+scenario=$work/rock.toml
+sed 's/^duration = .*/duration = 0.05/' "$source_dir/examples/paper/rocking.toml" > "$scenario"
+touch "$work/a_file"
+
+expect_refused "--rtol: 'nan' is not a finite number above 0" converge "$scenario" --out "$work/cv" --rtol nan
+expect_refused "--rtol: '0' is not a finite number above 0" converge "$scenario" --out "$work/cv" --rtol 0
+expect_refused "--floor-rotation: 'inf' is not a finite number above 0" converge "$scenario" --out "$work/cv" --floor-rotation inf
+expect_refused "--ensemble: '100000000' is not a whole number from 0 to 1000" converge "$scenario" --out "$work/cv" --ensemble 100000000
+expect_refused "--threads: '-3' is not a whole number from 1 to 4096" run "$scenario" --out "$work/r" --threads -3
+expect_refused "--save-state-every: 'nan' is not a finite number above 0" run "$scenario" --out "$work/r" --save-state-every nan
+expect_refused "--out: an output folder must be named" run "$scenario" --out ""
+expect_refused "--out: '$work/a_file' is a file, not a folder" run "$scenario" --out "$work/a_file"
+expect_refused "--out: an output folder must be named" converge "$scenario" --out ""
+expect_refused "--out: '$work/a_file' is a file, not a folder" motion "$source_dir/tests/data/records/legacy_pea.AT2" --out "$work/a_file"
+expect_refused "--damping: 'nan' is not a finite number from 0 to 0.99" motion "$source_dir/tests/data/records/legacy_pea.AT2" --damping nan
+expect_refused "its folder '$work/no_such_folder' does not exist" calibrate --toml "$work/no_such_folder/keys.toml"
+expect_refused "--threads: '-3' is not a whole number from 1 to 4096" sweep "$scenario" --out "$work/sw" --vary contact.mu=0.5 --threads -3
+[ ! -e "$work/r" ] && [ ! -e "$work/cv" ] || fail "a refused command left an output folder"
+
+expect_refused "the key 'contact.mu' is varied twice" sweep "$scenario" --out "$work/sw" --vary contact.mu=0.5 --vary contact.mu=0.6
+expect_refused "key 'nosuch.key': no value of the varied key can be read into the scenario" \
+  sweep "$scenario" --out "$work/sw" --vary nosuch.key=1,2
+expect_refused "key 'contact.mu': no value of the varied key can be read into the scenario" \
+  sweep "$scenario" --out "$work/sw" --vary contact.mu=abc
+[ ! -e "$work/sw" ] || fail "a refused sweep left its folder"
+# A value that fails alone is recorded with its case, as before.
+"$blockdem" sweep "$scenario" --out "$work/sw" --vary contact.mu=abc,0.5 -q > "$work/sweep.log"
+grep -q "2 cases, 2 done (1 failed or bad input)" "$work/sweep.log" || { cat "$work/sweep.log"; fail "sweep with one bad value"; }
+echo "option checks: all refused with their option named"
