@@ -50,11 +50,13 @@ constexpr VectorField vector_fields[] = {
 struct FlagField {
     const char* name;
     bool BodyResponse::*field;
+    bool absent_means_true = false;  ///< a flag that states from before it lack: taken as true
 };
 constexpr FlagField flag_fields[] = {
     {"beyond_alpha", &BodyResponse::beyond_alpha},
     {"touches_a_supporter", &BodyResponse::touches_a_supporter},
     {"at_rest", &BodyResponse::at_rest},
+    {"touched_a_body", &BodyResponse::touched_a_body, true},
 };
 
 }  // namespace
@@ -102,7 +104,7 @@ void MonitorStatePart::restore_state(const StateGroup& g) {
         for (std::size_t i = 0; i < r.size(); ++i) r[i].*f.field = values[i];
     }
     for (const FlagField& f : flag_fields) {
-        const std::vector<std::uint8_t> values = g.flags(f.name, n);
+        const std::vector<std::uint8_t> values = f.absent_means_true && !g.has(f.name) ? std::vector<std::uint8_t>(n, 1) : g.flags(f.name, n);
         for (std::size_t i = 0; i < r.size(); ++i) r[i].*f.field = values[i] != 0;
     }
     const std::vector<std::uint32_t> start = g.indices("supporters_start", n + 1);

@@ -307,12 +307,14 @@ constexpr Number3dField number_3d_fields[] = {
 struct Flag3dField {
     const char* name;
     bool BodyResponse3d::*field;
+    bool absent_means_true = false;  ///< a flag that states from before it lack: taken as true
 };
 constexpr Flag3dField flag_3d_fields[] = {
     {"beyond_limit", &BodyResponse3d::beyond_limit},
     {"touches_a_supporter", &BodyResponse3d::touches_a_supporter},
     {"at_rest", &BodyResponse3d::at_rest},
     {"slid_on_support", &BodyResponse3d::slid_on_support},
+    {"touched_a_body", &BodyResponse3d::touched_a_body, true},
 };
 
 }  // namespace
@@ -354,7 +356,8 @@ void Monitor3dStatePart::restore_state(const StateGroup& g) {
         for (std::size_t i = 0; i < n; ++i) r[i].*f.field = values[i];
     }
     for (const Flag3dField& f : flag_3d_fields) {
-        const std::vector<std::uint8_t> values = g.flags(f.name, count);
+        const std::vector<std::uint8_t> values =
+            f.absent_means_true && !g.has(f.name) ? std::vector<std::uint8_t>(count, 1) : g.flags(f.name, count);
         for (std::size_t i = 0; i < n; ++i) r[i].*f.field = values[i] != 0;
     }
     const std::vector<std::uint32_t> first = g.indices("supporters_start", count + 1);

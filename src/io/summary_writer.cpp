@@ -151,6 +151,7 @@ nlohmann::json make_summary(const World& w, const ResponseMonitor& monitor, cons
     s["bodies"] = bodies;
     s["checks"] = run_checks(w);
     s["warnings"] = run_warnings(w);
+    for (const std::string& warning : untouched_body_warnings(records, w.bodies.name, w.time_s)) s["warnings"].push_back(warning);
     s["collapse"] = collapse_json(summarize_collapse_by_group(w.bodies.assembly, records, outcomes, monitor.thresholds()),
                                    w.bodies.name);
     s["domain"] = domain_summary(w);

@@ -134,10 +134,11 @@ nlohmann::json summary_of(const LoadedScenario3d& s, const std::string& scenario
           {"balance_error_relative", e.balance_error()}}},
         // The 2-D run's "checks" object and warnings (io/run_checks.hpp), for the 3-D watches.
         {"checks", run_checks_3d(w, s.critical_dt_s, s.max_overlap_ratio, s.max_energy_error)}};
-    for (const std::string& warning : run_warnings_3d(w)) summary["warnings"].push_back(warning);
-    summary["settling"] = settling_summary(s.settled);
     std::vector<std::string> names;
     for (const RigidBody3d& b : w.bodies) names.push_back(b.name);
+    for (const std::string& warning : run_warnings_3d(w)) summary["warnings"].push_back(warning);
+    for (const std::string& warning : untouched_body_warnings(records, names, w.time_s)) summary["warnings"].push_back(warning);
+    summary["settling"] = settling_summary(s.settled);
     summary["collapse"] = collapse_json(summarize_collapse_by_group(w.assembly, records, outcomes, monitor.thresholds()), names);
     summary["outcome_thresholds"] = thresholds_3d(monitor.thresholds());
     if (!s.assembly_notes.empty()) summary["assemblies"] = s.assembly_notes;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 namespace blockdem {
 
 const char* to_string(Outcome outcome) {
@@ -69,6 +71,18 @@ ClassifiedOutcome own_outcome(const BodyRecord& r, const OutcomeThresholds& t) {
 bool gone(Outcome o) { return o == Outcome::fell || o == Outcome::left_model; }
 
 }  // namespace
+
+std::vector<std::string> untouched_body_warnings(const std::vector<BodyRecord>& records, const std::vector<std::string>& names,
+                                                 double duration_s) {
+    std::vector<std::string> warnings;
+    for (std::size_t i = 0; i < records.size(); ++i)
+        if (records[i].dynamic && !records[i].touched_a_body && !records[i].left_model)
+            warnings.push_back(fmt::format(
+                "body '{}' touched no other body in the run's {:g} s: it was in free flight from the start, so its outcome "
+                "says nothing of its stability; check its position (blockdem check lists the bodies touching nothing at the start)",
+                names[i], duration_s));
+    return warnings;
+}
 
 std::vector<ClassifiedOutcome> classify_outcomes(const std::vector<BodyRecord>& records, const OutcomeThresholds& thresholds) {
     std::vector<ClassifiedOutcome> out(records.size());

@@ -68,6 +68,7 @@ struct BodyRecord {
     double final_displacement_m = 0.0;       ///< [m] |centroid displacement| relative to the table at the end
     Vec2 final_position_m;                   ///< [m] centroid at the end
     bool at_rest = true;                     ///< slower than rest_speed at the end
+    bool touched_a_body = true;              ///< met another body (any contact) at some step of the run
     bool left_model = false;
     double left_model_time_s = -1.0;         ///< [s]
     Vec2 left_model_position_m;              ///< [m] centroid when it left
@@ -82,6 +83,12 @@ struct ClassifiedOutcome {
     Vec2 rest_position_m;                    ///< [m] fell: where it ended; left_model: where it left
     bool at_rest = true;                     ///< fell: false when still moving at the end ("falling")
 };
+
+/// A warning for each dynamic body that touched no other body during the whole run (names[i]:
+/// body i's name): it was in free flight from the start, so its outcome, stable with nothing to
+/// stand on, says nothing of its stability. Both dimensions.
+std::vector<std::string> untouched_body_warnings(const std::vector<BodyRecord>& records, const std::vector<std::string>& names,
+                                                 double duration_s);
 
 /// One outcome per record (index = body id). Records of bodies that are not dynamic get stable.
 std::vector<ClassifiedOutcome> classify_outcomes(const std::vector<BodyRecord>& records, const OutcomeThresholds& thresholds);

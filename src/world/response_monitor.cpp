@@ -140,6 +140,7 @@ void ResponseMonitor::note_contacts(const World& w) {
     const Vec2 up{std::sin(level), std::cos(level)};
     for (const PairContact& pair : w.contacts) {
         if (pair.count == 0) continue;
+        responses_[pair.a].touched_a_body = responses_[pair.b].touched_a_body = true;
         if (gathering) {
             // The normal points from a to b: upwards means a is below b and holds it up. The
             // first supporter found is the body whose interface judges sliding and rocking.
@@ -267,6 +268,7 @@ std::vector<BodyRecord> ResponseMonitor::records(const World& w) const {
         o.final_displacement_m = length(r.relative_displacement_m);
         o.final_position_m = b.position_m[i];
         o.at_rest = r.at_rest;
+        o.touched_a_body = r.touched_a_body;
     }
     for (const BodyLeftModel& left : w.domain.left) {
         BodyRecord& o = out[left.body];

@@ -69,6 +69,7 @@ struct BodyResponse {
     double support_lost_time_s = -1.0;   ///< [s] last time it let go of its last supporter (-1: holds one)
     double drop_time_s = -1.0;           ///< [s] first time its centroid was fall_drop_ratio x height below its start
     bool at_rest = true;                 ///< now
+    bool touched_a_body = false;         ///< met another body (any contact) at some step
 
     bool overturned() const { return beyond_alpha; }
     /// Rocked: it rotated on the body below it by the rocking threshold.

@@ -151,6 +151,7 @@ void ResponseMonitor3d::note_contacts(const World3d& w) {
     const bool gathering = w.time_s <= thresholds_.support_window_s;
     for (const ContactPoint3d& p : w.contacts) {
         const std::uint32_t a = p.key.body_a, b = p.key.body_b;
+        bodies_[a].touched_a_body = bodies_[b].touched_a_body = true;
         // The normal points from a to b: upwards means a is below b and holds it up.
         const bool b_on_a = p.normal.z > supporting_normal_z, a_on_b = p.normal.z < -supporting_normal_z;
         if (gathering) {
@@ -257,6 +258,7 @@ std::vector<BodyRecord> ResponseMonitor3d::records(const World3d& w) const {
         const Vec3 at = position_now_m(w, i);
         o.final_position_m = {at.x, at.y};
         o.at_rest = r.at_rest;
+        o.touched_a_body = r.touched_a_body;
     }
     for (const BodyLeftModel3d& left : w.domain.left) {
         BodyRecord& o = out[left.body];

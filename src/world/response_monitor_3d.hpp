@@ -53,6 +53,7 @@ struct BodyResponse3d {
     double support_lost_time_s = -1.0;   ///< [s] when it last let go of its last supporter (-1: holds one)
     double drop_time_s = -1.0;           ///< [s] first time its drop passed fall_drop_ratio x height
     bool at_rest = true;                 ///< slower than rest_speed now
+    bool touched_a_body = false;         ///< met another body (any contact) at some step
 };
 
 /// The turn of body i since t = 0 (world frame: q(t) q(0)*).

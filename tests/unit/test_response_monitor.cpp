@@ -34,6 +34,30 @@ Outcome run(double tilt_rad, const ComponentMotion& table, double duration) {
     return {monitor.responses()[1], w.bodies.rotation_rad[1]};
 }
 
+TEST(ResponseMonitor, ABlockTouchingNothingIsNamedInAWarning) {
+    // The block 1 m above the table for 0.2 s falls 0.2 m and meets nothing; on the table it
+    // touches at once. Only the first gets the warning (the summary's; io/summary_writer.cpp).
+    for (const double lift_m : {1.0, 0.0}) {
+        Model m = testing::model_with({testing::rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0, -0.1}),
+                                       testing::rectangle_body("block", BodyKind::dynamic, 2 * b, 2 * h, {0.0, h + lift_m}, 0.0, 1536.0)},
+                                      testing::contact(1e9, 0.8, 0.3, 1.0), 2e-5, 9.81, 0.2);
+        World w = build_world(m);
+        ResponseMonitor monitor(w);
+        while (w.time_s < 0.2) {
+            step_begin(w);
+            monitor.observe(w);
+            step_end(w);
+        }
+        const std::vector<std::string> warnings = untouched_body_warnings(monitor.records(w), w.bodies.name, w.time_s);
+        if (lift_m > 0.0) {
+            ASSERT_EQ(warnings.size(), 1u);
+            EXPECT_NE(warnings[0].find("body 'block' touched no other body in the run's"), std::string::npos) << warnings[0];
+        } else {
+            EXPECT_TRUE(warnings.empty()) << warnings[0];
+        }
+    }
+}
+
 TEST(ResponseMonitor, LevelBlockCriticalAngles) {
     Model m = testing::model_with({testing::rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0, -0.1}),
                                    testing::rectangle_body("block", BodyKind::dynamic, 2 * b, 2 * h, {0.0, h}, 0.0, 1536.0)},
