@@ -479,6 +479,17 @@ double read_period(TableReader& t) {
     return period ? *period : 1.0 / *frequency;
 }
 
+// Every motion starts at rest (motion/table_motion.hpp): a start before t = 0 would have the
+// table already moving, with a velocity and a displacement, when the run begins.
+double read_start(TableReader& t) {
+    const double start_s = t.number_or("start", 0.0);
+    if (!(start_s >= 0.0))
+        t.fail("start", fmt::format("must be >= 0 [s], got {}: a motion starts at rest, and one that started before t = 0 "
+                                    "would have the table already moving when the run begins",
+                                    start_s));
+    return start_s;
+}
+
 }  // namespace
 
 // (Shared with the 3-D reader: io/scenario_keys.hpp.)
@@ -495,7 +506,7 @@ ComponentMotion read_component(TableReader t, const std::filesystem::path& scena
         m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
         m.period_s = read_period(t);
         m.phase_rad = read_angle(t, "phase").value_or(0.0);
-        m.start_s = t.number_or("start", 0.0);
+        m.start_s = read_start(t);
         m.cycles = t.number_or("cycles", 0.0);
         if (m.cycles < 0.0) t.fail("cycles", "must be >= 0 (0: no end)");
         motion = m;
@@ -504,7 +515,7 @@ ComponentMotion read_component(TableReader t, const std::filesystem::path& scena
         m.shape = type == "one_sine" ? PulseMotion::Shape::one_sine : PulseMotion::Shape::one_cosine;
         m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
         m.period_s = read_period(t);
-        m.start_s = t.number_or("start", 0.0);
+        m.start_s = read_start(t);
         motion = m;
     } else if (type == "ricker") {
         RickerMotion m;

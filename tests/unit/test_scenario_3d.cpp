@@ -242,6 +242,18 @@ components = ["NS", "EW", "UD"]
               std::string::npos);
 }
 
+const std::string motion_block = "[[bodies]]\nname = \"block\"\nshape = \"box\"\nsize = [0.2, 0.2, 0.2]\n"
+                                 "position = [0.0, 0.0, 0.1]\ndensity = 100.0\n";
+
+// As in 2-D (test_scenario_errors.cpp): the table would be moving when the run begins.
+TEST(Scenario3d, MotionStartBeforeZeroIsRefused) {
+    const std::string x = "[table_motion.x]\ntype = \"one_sine\"\namplitude = 1.0\nperiod = 1.0\n";
+    const std::string start = error_of(motion_block + x + "start = -5\n");
+    EXPECT_NE(start.find("key 'table_motion.x.start': must be >= 0 [s], got -5: a motion starts at rest"), std::string::npos)
+        << start;
+    EXPECT_EQ(error_of(motion_block + x + "start = 0.5\n"), "");
+}
+
 TEST(Scenario3d, DerivedTimeStepIsHalfTheStartBoundOnWholeOutputSteps) {
     const LoadedScenario3d s = load(R"([[bodies]]
 name = "block"

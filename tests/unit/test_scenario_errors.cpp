@@ -125,6 +125,18 @@ TEST(ScenarioErrors, TimeStepAboveStableLimitIsRefusedWithTheLimit) {
     expect_contains(m, "body 'block'");
 }
 
+// A motion starts at rest: one that started before t = 0 had the table moving at the start.
+TEST(ScenarioErrors, MotionStartBeforeZeroIsRefused) {
+    const std::string words = "key 'table_motion.horizontal.start': must be >= 0 [s], got -5: a motion starts at rest, "
+                              "and one that started before t = 0 would have the table already moving when the run begins";
+    const std::string m = error_of("start", replace_once(valid, "period = 1.0", "period = 1.0\nstart = -5"));
+    expect_contains(m, words);
+    expect_contains(m, ".toml:33:");
+    const std::string pulse = replace_once(valid, "type = \"sine\"", "type = \"one_cosine\"");
+    expect_contains(error_of("pulse_start", replace_once(pulse, "period = 1.0", "period = 1.0\nstart = -5")), words);
+    EXPECT_EQ(error_of("late_start", replace_once(valid, "period = 1.0", "period = 1.0\nstart = 0.5")), "");
+}
+
 TEST(ScenarioErrors, OverridesReachAnyKey) {
     const LoadedScenario s = load_scenario(write("override", valid), {"contact.h_s=0.5", "bodies.block.width=0.3",
                                                                       "table_motion.horizontal.type=one_sine"});
