@@ -13,6 +13,7 @@
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
 #include "io/geometry_keys.hpp"
+#include "io/motion_sampling.hpp"
 #include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
@@ -619,6 +620,10 @@ LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file
         s.world = build_world(s.model, stop_requested);
     } catch (const ModelError& e) {
         throw InputError({file.string(), "", 0, 0}, e.what());
+    }
+    if (auto motion = top.optional_table("table_motion")) {  // dt is known from here on
+        check_motion_sampling(*motion, "horizontal", s.model.table_motion.horizontal, s.world.dt_s);
+        check_motion_sampling(*motion, "vertical", s.model.table_motion.vertical, s.world.dt_s);
     }
     s.measurements = read_measurement_keys(top, s.world);  // they name bodies and depend on dt
     return s;

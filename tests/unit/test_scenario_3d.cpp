@@ -254,6 +254,13 @@ TEST(Scenario3d, MotionStartBeforeZeroIsRefused) {
     EXPECT_EQ(error_of(motion_block + x + "start = 0.5\n"), "");
 }
 
+// As in 2-D: a period under 4 time steps, here of the derived dt, known only after the motion.
+TEST(Scenario3d, MotionPeriodUnderFourTimeStepsIsRefused) {
+    const std::string period = error_of(motion_block + "[table_motion.z]\ntype = \"sine\"\namplitude = 1.0\nperiod = 1e-12\n");
+    EXPECT_NE(period.find("key 'table_motion.z.period': the period 1e-12 s spans"), std::string::npos) << period;
+    EXPECT_NE(period.find("it must span at least 4"), std::string::npos) << period;
+}
+
 TEST(Scenario3d, DerivedTimeStepIsHalfTheStartBoundOnWholeOutputSteps) {
     const LoadedScenario3d s = load(R"([[bodies]]
 name = "block"
