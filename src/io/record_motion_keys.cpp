@@ -141,7 +141,11 @@ AccelerationSeries read_record_motion(TableReader& keys, const std::filesystem::
                                            record.component.empty() ? "" : ", component " + record.component,
                                            baseline_method_name(steps.baseline.method));
     check_delay(keys, delay, record.dt_s);
-    return to_series(a, record.dt_s, delay, source);
+    try {
+        return to_series(a, record.dt_s, delay, source);
+    } catch (const std::invalid_argument& e) {  // a finite record that `scale` takes beyond the range of a number
+        keys.fail(steps.scale != 1.0 ? "scale" : "file", fmt::format("{}: {}", file.string(), e.what()));
+    }
 }
 
 AccelerationSeries read_synthetic_motion(TableReader& keys) {

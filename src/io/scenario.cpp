@@ -13,6 +13,7 @@
 #include "geometry/polygon.hpp"
 #include "io/assembly_keys.hpp"
 #include "io/geometry_keys.hpp"
+#include "io/motion_sampling.hpp"
 #include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
@@ -479,6 +480,17 @@ double read_period(TableReader& t) {
     return period ? *period : 1.0 / *frequency;
 }
 
+// Every motion starts at rest (motion/table_motion.hpp): a start before t = 0 would have the
+// table already moving, with a velocity and a displacement, when the run begins.
+double read_start(TableReader& t) {
+    const double start_s = t.number_or("start", 0.0);
+    if (!(start_s >= 0.0))
+        t.fail("start", fmt::format("must be >= 0 [s], got {}: a motion starts at rest, and one that started before t = 0 "
+                                    "would have the table already moving when the run begins",
+                                    start_s));
+    return start_s;
+}
+
 }  // namespace
 
 // (Shared with the 3-D reader: io/scenario_keys.hpp.)
@@ -495,7 +507,7 @@ ComponentMotion read_component(TableReader t, const std::filesystem::path& scena
         m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
         m.period_s = read_period(t);
         m.phase_rad = read_angle(t, "phase").value_or(0.0);
-        m.start_s = t.number_or("start", 0.0);
+        m.start_s = read_start(t);
         m.cycles = t.number_or("cycles", 0.0);
         if (m.cycles < 0.0) t.fail("cycles", "must be >= 0 (0: no end)");
         motion = m;
@@ -504,7 +516,7 @@ ComponentMotion read_component(TableReader t, const std::filesystem::path& scena
         m.shape = type == "one_sine" ? PulseMotion::Shape::one_sine : PulseMotion::Shape::one_cosine;
         m.amplitude_m_s2 = t.number("amplitude") * acceleration_unit_factor(t);
         m.period_s = read_period(t);
-        m.start_s = t.number_or("start", 0.0);
+        m.start_s = read_start(t);
         motion = m;
     } else if (type == "ricker") {
         RickerMotion m;
@@ -608,6 +620,10 @@ LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file
         s.world = build_world(s.model, stop_requested);
     } catch (const ModelError& e) {
         throw InputError({file.string(), "", 0, 0}, e.what());
+    }
+    if (auto motion = top.optional_table("table_motion")) {  // dt is known from here on
+        check_motion_sampling(*motion, "horizontal", s.model.table_motion.horizontal, s.world.dt_s);
+        check_motion_sampling(*motion, "vertical", s.model.table_motion.vertical, s.world.dt_s);
     }
     s.measurements = read_measurement_keys(top, s.world);  // they name bodies and depend on dt
     return s;

@@ -9,6 +9,7 @@
 #include "geometry/polygon.hpp"
 #include "io/assembly_3d_keys.hpp"
 #include "io/assembly_keys.hpp"
+#include "io/motion_sampling.hpp"
 #include "io/outcome_keys.hpp"
 #include "io/overrides.hpp"
 #include "io/record_motion_keys.hpp"
@@ -439,6 +440,11 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     } catch (const ModelError& e) {
         throw model_error(file, settings.dt_s && std::string(e.what()).starts_with("time step") ? "simulation.dt" : "",
                           e.what());
+    }
+    if (auto motion = top.optional_table("table_motion")) {  // dt is known from here on
+        check_motion_sampling(*motion, "x", s.world.table.x, s.world.dt_s);
+        check_motion_sampling(*motion, "y", s.world.table.y, s.world.dt_s);
+        check_motion_sampling(*motion, "z", s.world.table.z, s.world.dt_s);
     }
     try {
         init_model_domain_3d(s.world, domain);

@@ -1,8 +1,10 @@
 #include "io/time_series_csv.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -62,6 +64,52 @@ std::size_t column_index(const CsvColumn& column, const std::vector<std::string>
                                         header.empty() ? "none" : fmt::format("{}", fmt::join(header, ", "))));
 }
 
+// A header that names a time: "t", "time", "time_s", "t [s]", "Time(s)", "sec", "seconds", in
+// any case: the names the record reader's plain-text files use for time
+// (motion/records/plain_text_reader.cpp), and "t_s", "t (s)".
+bool is_time_name(const std::string& header) {
+    std::string name;
+    for (char c : header) name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (name == "t" || name.starts_with("time") || name.starts_with("sec")) return true;
+    return name.size() > 1 && name[0] == 't' && std::string_view("_[( ").find(name[1]) != std::string_view::npos;
+}
+
+// Reading the time column as acceleration (dt given and the default column 0 of a "t,a" file)
+// would drive the table with a ramp: refused.
+void check_not_time(const CsvSeriesSpec& spec, const std::vector<std::string>& header, std::size_t a_col,
+                    const InputLocation& where) {
+    if (a_col >= header.size() || !is_time_name(header[a_col])) return;
+    throw InputError(where, fmt::format("{} selects column {} ('{}'), which by its header holds time, as the acceleration: "
+                                        "pick the acceleration column with `column` (a header name or 0-based index){}",
+                                        spec.acceleration_column.key, a_col, header[a_col],
+                                        spec.dt_s ? " or drop `dt` to take the times from the file" : ""));
+}
+
+// Every row has the columns of the first (header or data): a longer or shorter one has a value
+// too many or missing, and the columns after it may be shifted.
+void check_row_width(std::size_t fields, std::size_t columns, bool has_header, const InputLocation& where) {
+    if (fields == columns) return;
+    throw InputError(where, fmt::format("this line has {} column{} but the {} has {}", fields, fields == 1 ? "" : "s",
+                                        has_header ? "header" : "first row", columns));
+}
+
+// The time of a row, which must increase and not be negative: a motion starts at rest at its
+// first sample, and one that started before t = 0 would have the table moving when the run
+// begins. (A record's time column is instead taken to start at 0: records count time from a
+// trigger; a CSV series is the motion's own schedule, and a first time above 0 delays it.)
+double row_time(const std::string& field, const std::vector<double>& time_s, const InputLocation& where) {
+    const auto t = to_number(field);
+    if (!t) throw InputError(where, fmt::format("'{}' is not a finite number", field));
+    if (*t < 0.0)
+        throw InputError(where, fmt::format("time {} s is before 0: a motion starts at rest at its first sample, and one "
+                                            "that started before t = 0 would have the table already moving when the run "
+                                            "begins; shift the times to start at 0 or later",
+                                            *t));
+    if (!time_s.empty() && !(*t > time_s.back()))
+        throw InputError(where, fmt::format("time {} s does not increase (previous {} s)", *t, time_s.back()));
+    return *t;
+}
+
 }  // namespace
 
 AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
@@ -77,7 +125,7 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
     std::vector<std::string> header;
     std::size_t t_col = 0;
     std::size_t a_col = 0;
-    bool columns_known = false;
+    std::size_t columns = 0;  // of the first row, header or data; 0 until it is read
     std::string line;
     int line_no = 0;
     while (std::getline(in, line)) {
@@ -85,29 +133,19 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
         const InputLocation where{spec.file.string(), "", line_no, 0};
         const auto fields = split_fields(line);
         if (fields.empty() || (!fields[0].empty() && fields[0][0] == '#')) continue;
-        if (!columns_known) {
+        if (columns == 0) {
             const bool is_header = !to_number(fields[0]);
             if (is_header) header = fields;
-            a_col = column_index(spec.acceleration_column, header, fields.size(), where);
-            if (!spec.dt_s) t_col = column_index(spec.time_column, header, fields.size(), where);
-            columns_known = true;
+            columns = fields.size();
+            a_col = column_index(spec.acceleration_column, header, columns, where);
+            check_not_time(spec, header, a_col, where);
+            if (!spec.dt_s) t_col = column_index(spec.time_column, header, columns, where);
             if (is_header) continue;
         }
-        const std::size_t needed = std::max(a_col, spec.dt_s ? 0 : t_col) + 1;
-        if (fields.size() < needed)
-            throw InputError(where, fmt::format("expected at least {} columns, found {}", needed, fields.size()));
+        check_row_width(fields.size(), columns, !header.empty(), where);
         const auto a = to_number(fields[a_col]);
         if (!a) throw InputError(where, fmt::format("'{}' is not a finite number", fields[a_col]));
-        double t = 0.0;
-        if (spec.dt_s) {
-            t = static_cast<double>(acc_m_s2.size()) * *spec.dt_s;
-        } else {
-            const auto tv = to_number(fields[t_col]);
-            if (!tv) throw InputError(where, fmt::format("'{}' is not a finite number", fields[t_col]));
-            t = *tv;
-            if (!time_s.empty() && !(t > time_s.back()))
-                throw InputError(where, fmt::format("time {} s does not increase (previous {} s)", t, time_s.back()));
-        }
+        const double t = spec.dt_s ? static_cast<double>(acc_m_s2.size()) * *spec.dt_s : row_time(fields[t_col], time_s, where);
         if (acc_m_s2.size() == max_record_samples)
             throw InputError(where, fmt::format("a motion may have at most {} samples", max_record_samples));
         time_s.push_back(t);

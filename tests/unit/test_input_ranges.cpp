@@ -107,6 +107,14 @@ TEST(InputRanges, RecordWindowAndPaddingAreCheckedBeforeAnyCast) {
                  "table_motion.horizontal.baseline_order", "must be a whole number from 2 to 6, got 1e+20");
 }
 
+// A record finite in its file that `scale` takes beyond the range of a number named neither the
+// file nor the key ("sample 1 is not finite").
+TEST(InputRanges, RecordScaledBeyondTheRangeOfANumberNamesTheKey) {
+    std::ofstream(folder() / "big_record.csv") << "time,acc[m/s^2]\n0.00,0.0\n0.01,1e300\n0.02,0.0\n";
+    expect_error("record_scale", "[table_motion.horizontal]\ntype = \"record\"\nfile = \"big_record.csv\"\nscale = 1e10\n",
+                 "table_motion.horizontal.scale", "big_record.csv: sample 1 is not finite");
+}
+
 TEST(InputRanges, SyntheticMotionRefusesCountsAndFrequenciesOutOfRange) {
     const std::string synthetic = "[table_motion.horizontal]\ntype = \"synthetic\"\ntarget_pga = 1.0\n";
     expect_error("synthetic_duration", synthetic + "duration = 1e300\n", "table_motion.horizontal.duration",

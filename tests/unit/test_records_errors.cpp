@@ -137,5 +137,23 @@ TEST(MalformedPlain, NoUnitsStated) {
 
 TEST(MalformedPlain, NoData) { expect_failure("empty.txt", "just words\n", 0, "no line of numbers"); }
 
+// A value finite in the file but not in m/s^2 (1e308 g) was reported as "sample 2 is not
+// finite" with neither the file nor the line: each format names them.
+TEST(RecordOverflow, ValueBeyondRangeInSiUnitsNamesFileAndLine) {
+    const std::string words = "is beyond the range of a number in m/s^2: the value or the units are wrong";
+    expect_failure("huge.csv", "time,acc[g]\n0.00,0.1\n0.01,0.2\n0.02,1e308\n0.03,0.3\n", 4, "sample 3 (1e+308 in the file's units");
+    expect_failure("huge_values.txt", "units of g\n0.1 0.2 0.3\n0.4 1e308\n", 3, words, {.dt_s = 0.01});
+    expect_failure("huge.AT2", at2_header + "NPTS=   6, DT= .0100 SEC\n .1E-01 .2E-01 .3E-01\n .4E-01 1E308 .6E-01\n", 6,
+                   "sample 5 (1e+308 in the file's units, 9.80665 m/s^2 each)");
+    expect_failure("huge.NS", knet("3920(gal)/1", "     1      2\n     3  1e308\n"), 19, words);  // 39.2 m/s^2 a count
+    expect_failure("huge_jma.csv",
+                   " SITE CODE= X\n SAMPLING RATE= 100Hz\n UNIT  = gal\n NS,EW,UD\n 1,2,3\n 1e308,2,3\n", 6, words,
+                   {.units = "g"});
+    std::ifstream in(testing::record_samples_dir() / "cosmos_sample.V2");
+    std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    content.replace(content.find("  -8.000000e-01"), 15, "   1.00000e+308");
+    expect_failure("huge.V2", content, 51, "sample 8 (1e+308", {.units = "g"});
+}
+
 }  // namespace
 }  // namespace blockdem

@@ -260,6 +260,25 @@ components = ["NS", "EW", "UD"]
               std::string::npos);
 }
 
+const std::string motion_block = "[[bodies]]\nname = \"block\"\nshape = \"box\"\nsize = [0.2, 0.2, 0.2]\n"
+                                 "position = [0.0, 0.0, 0.1]\ndensity = 100.0\n";
+
+// As in 2-D (test_scenario_errors.cpp): the table would be moving when the run begins.
+TEST(Scenario3d, MotionStartBeforeZeroIsRefused) {
+    const std::string x = "[table_motion.x]\ntype = \"one_sine\"\namplitude = 1.0\nperiod = 1.0\n";
+    const std::string start = error_of(motion_block + x + "start = -5\n");
+    EXPECT_NE(start.find("key 'table_motion.x.start': must be >= 0 [s], got -5: a motion starts at rest"), std::string::npos)
+        << start;
+    EXPECT_EQ(error_of(motion_block + x + "start = 0.5\n"), "");
+}
+
+// As in 2-D: a period under 4 time steps, here of the derived dt, known only after the motion.
+TEST(Scenario3d, MotionPeriodUnderFourTimeStepsIsRefused) {
+    const std::string period = error_of(motion_block + "[table_motion.z]\ntype = \"sine\"\namplitude = 1.0\nperiod = 1e-12\n");
+    EXPECT_NE(period.find("key 'table_motion.z.period': the period 1e-12 s spans"), std::string::npos) << period;
+    EXPECT_NE(period.find("it must span at least 4"), std::string::npos) << period;
+}
+
 TEST(Scenario3d, DerivedTimeStepIsHalfTheStartBoundOnWholeOutputSteps) {
     const LoadedScenario3d s = load(R"([[bodies]]
 name = "block"

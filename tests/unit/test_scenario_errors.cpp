@@ -125,6 +125,42 @@ TEST(ScenarioErrors, TimeStepAboveStableLimitIsRefusedWithTheLimit) {
     expect_contains(m, "body 'block'");
 }
 
+// A motion starts at rest: one that started before t = 0 had the table moving at the start.
+TEST(ScenarioErrors, MotionStartBeforeZeroIsRefused) {
+    const std::string words = "key 'table_motion.horizontal.start': must be >= 0 [s], got -5: a motion starts at rest, "
+                              "and one that started before t = 0 would have the table already moving when the run begins";
+    const std::string m = error_of("start", replace_once(valid, "period = 1.0", "period = 1.0\nstart = -5"));
+    expect_contains(m, words);
+    expect_contains(m, ".toml:33:");
+    const std::string pulse = replace_once(valid, "type = \"sine\"", "type = \"one_cosine\"");
+    expect_contains(error_of("pulse_start", replace_once(pulse, "period = 1.0", "period = 1.0\nstart = -5")), words);
+    EXPECT_EQ(error_of("late_start", replace_once(valid, "period = 1.0", "period = 1.0\nstart = 0.5")), "");
+}
+
+// The step samples the motion once per dt: a period under 4 steps is not the motion the scenario
+// gives. dt may be derived after the motion is read: the check waits for it.
+TEST(ScenarioErrors, MotionPeriodUnderFourTimeStepsIsRefused) {
+    const std::string m = error_of("period", replace_once(valid, "period = 1.0", "period = 1e-12"));
+    expect_contains(m, ".toml:32:");
+    expect_contains(m, "key 'table_motion.horizontal.period': the period 1e-12 s spans 1e-08 time steps of dt = 0.0001 s; it "
+                       "must span at least 4: the step samples the motion once per dt, and fewer than 4 samples a cycle "
+                       "miss its peaks (at 2, the Nyquist limit, the shaking is lost altogether); give a longer period or "
+                       "a smaller simulation.dt");
+    expect_contains(error_of("frequency", replace_once(valid, "period = 1.0", "frequency = 3000.0")),
+                    "key 'table_motion.horizontal.frequency': the frequency 3000 Hz (a period of 0.000333333 s) spans "
+                    "3.33 time steps of dt = 0.0001 s");
+    EXPECT_EQ(error_of("four_steps", replace_once(valid, "period = 1.0", "period = 4.0e-4")), "");
+    const std::string pulse = replace_once(valid, "type = \"sine\"", "type = \"one_sine\"");
+    expect_contains(error_of("pulse_period", replace_once(pulse, "period = 1.0", "period = 1e-6")),
+                    "key 'table_motion.horizontal.period': the period 1e-06 s spans 0.01 time steps");
+    const std::string ricker = replace_once(replace_once(valid, "type = \"sine\"", "type = \"ricker\""), "period = 1.0",
+                                            "frequency = 1e6");
+    expect_contains(error_of("ricker", ricker), "key 'table_motion.horizontal.frequency': the frequency 1e+06 Hz");
+    const std::string derived = replace_once(valid, "dt = 1.0e-4\n", "");
+    expect_contains(error_of("derived_dt", replace_once(derived, "period = 1.0", "period = 1e-12")),
+                    "key 'table_motion.horizontal.period': the period 1e-12 s spans");
+}
+
 TEST(ScenarioErrors, OverridesReachAnyKey) {
     const LoadedScenario s = load_scenario(write("override", valid), {"contact.h_s=0.5", "bodies.block.width=0.3",
                                                                       "table_motion.horizontal.type=one_sine"});

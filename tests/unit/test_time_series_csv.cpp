@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "io/input_error.hpp"
 #include "io/time_series_csv.hpp"
@@ -59,6 +60,77 @@ TEST(TimeSeriesCsv, ErrorsNameFileAndLine) {
     EXPECT_THROW(read_time_series_csv(spec), InputError);
     spec.file = "/nonexistent/motion.csv";
     EXPECT_THROW(read_time_series_csv(spec), InputError);
+}
+
+// The message of reading spec ("" when it reads).
+std::string csv_error(const CsvSeriesSpec& spec) {
+    try {
+        read_time_series_csv(spec);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+void expect_in(const std::string& message, const std::string& words) {
+    EXPECT_NE(message.find(words), std::string::npos) << message;
+}
+
+// Times before 0 had the table moving at the start of the run (a motion starts at rest).
+TEST(TimeSeriesCsv, NegativeTimesAreRefusedWithFileAndLine) {
+    CsvSeriesSpec spec;
+    spec.file = write("negative.csv", "t,a\n-1,0\n-0.99,1\n-0.98,0\n");
+    const std::string m = csv_error(spec);
+    expect_in(m, "blockdem-csv-negative.csv:2:");
+    expect_in(m, "time -1 s is before 0: a motion starts at rest at its first sample");
+    expect_in(m, "shift the times to start at 0 or later");
+    spec.file = write("late.csv", "t,a\n0.5,0\n0.51,1\n0.52,0\n");  // a later start is a delay
+    EXPECT_DOUBLE_EQ(read_time_series_csv(spec).time_s.front(), 0.5);
+}
+
+// A row longer or shorter than the header has a value too many or missing: refused, not read.
+TEST(TimeSeriesCsv, RowsOfAnotherWidthThanTheHeaderAreRefused) {
+    CsvSeriesSpec spec;
+    spec.file = write("wide.csv", "t,a\n0,0\n0.01,1,2\n0.02,1\n");
+    std::string m = csv_error(spec);
+    expect_in(m, "blockdem-csv-wide.csv:3:");
+    expect_in(m, "this line has 3 columns but the header has 2");
+    spec.file = write("narrow.csv", "t,a,b\n0,0,0\n0.01,1\n0.02,1,0\n");
+    expect_in(csv_error(spec), "blockdem-csv-narrow.csv:3: this line has 2 columns but the header has 3");
+    spec.file = write("ragged.csv", "0 0\n0.01 1\n0.02 1 7\n");  // no header: the first row sets the width
+    expect_in(csv_error(spec), "blockdem-csv-ragged.csv:3: this line has 3 columns but the first row has 2");
+}
+
+// dt given and the default column 0 read the time column as the acceleration (a ramp).
+TEST(TimeSeriesCsv, TimeColumnReadAsAccelerationIsRefused) {
+    CsvSeriesSpec spec;
+    spec.dt_s = 0.01;
+    spec.acceleration_column = {"", 0, "column"};
+    spec.file = write("dt_time.csv", "t,a\n0,0\n0.01,1\n0.02,0\n");
+    const std::string m = csv_error(spec);
+    expect_in(m, "blockdem-csv-dt_time.csv:1:");
+    expect_in(m, "column selects column 0 ('t'), which by its header holds time, as the acceleration: pick the "
+                 "acceleration column with `column` (a header name or 0-based index) or drop `dt` to take the times "
+                 "from the file");
+    for (const char* name : {"time", "Time (s)", "TIME_S", "t[s]", "t (s)", "t_s", "sec", "seconds"}) {
+        spec.file = write("dt_names.csv", std::string(name) + ",a\n0,0\n0.01,1\n");
+        expect_in(csv_error(spec), "which by its header holds time");
+    }
+    spec.acceleration_column = {"a", std::nullopt, "column"};  // the acceleration column named: read
+    spec.file = write("dt_named.csv", "t,a\n0,0\n0.01,1\n0.02,0\n");
+    EXPECT_DOUBLE_EQ(read_time_series_csv(spec).acceleration_m_s2[1], 1.0);
+    for (const char* name : {"a", "tilt", "acc_g", "temperature"}) {  // not time names
+        spec.acceleration_column = {"", 0, "column"};
+        spec.file = write("dt_other.csv", std::string(name) + "\n0\n1\n");
+        EXPECT_EQ(csv_error(spec), "") << name;
+    }
+    spec.dt_s.reset();  // without dt, a column naming time taken as the acceleration is refused too
+    spec.time_column = {"", 1, "time_column"};
+    spec.acceleration_column = {"", 0, "column"};
+    spec.file = write("swapped.csv", "time,a\n0,0\n0.01,1\n");
+    const std::string swapped = csv_error(spec);
+    expect_in(swapped, "column selects column 0 ('time')");
+    EXPECT_EQ(swapped.find("drop `dt`"), std::string::npos) << swapped;
 }
 
 }  // namespace

@@ -187,7 +187,9 @@ Block read_block(const RecordText& text, std::size_t first, const RecordReadOpti
     const std::string azimuth = ints.size() >= int_azimuth ? azimuth_text(ints[int_azimuth - 1]) : "";
     record.component = azimuth.empty() ? channel : fmt::format("{} ({})", channel, azimuth);
     record.acceleration_m_s2 = std::move(values.values);
-    convert_to_si(record, to_m_s2);
+    convert_to_si(text, record, to_m_s2, [&](std::size_t k) {
+        return fixed_value_line(text, line + 1, k, data.layout.per_line, data.layout.width);
+    });
     std::size_t next = values.next_line;
     if (next < text.lines.size() && contains_nocase(text.lines[next], "End-of-data")) ++next;
     return {std::move(record), next};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -87,7 +88,19 @@ void check_component(const RecordText& text, const RecordReadOptions& options, c
                                         excerpt(header_component)));
 }
 
-void convert_to_si(GroundMotionRecord& record, double to_m_s2) {
+void check_si_range(const RecordText& text, const std::vector<double>& in_file, double to_m_s2,
+                    const std::function<std::size_t(std::size_t)>& line_of) {
+    for (std::size_t k = 0; k < in_file.size(); ++k)
+        if (!std::isfinite(in_file[k] * to_m_s2))
+            fail_at(text, line_of(k),
+                    fmt::format("sample {} ({:g} in the file's units, {} m/s^2 each) is beyond the range of a number in "
+                                "m/s^2: the value or the units are wrong",
+                                k + 1, in_file[k], to_m_s2));
+}
+
+void convert_to_si(const RecordText& text, GroundMotionRecord& record, double to_m_s2,
+                   const std::function<std::size_t(std::size_t)>& line_of) {
+    check_si_range(text, record.acceleration_m_s2, to_m_s2, line_of);
     record.to_m_s2 = to_m_s2;
     for (double& a : record.acceleration_m_s2) a *= to_m_s2;
 }

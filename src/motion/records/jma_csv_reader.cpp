@@ -72,7 +72,7 @@ GroundMotionRecord read_jma_csv(const RecordText& text, const RecordReadOptions&
         record.acceleration_m_s2.push_back(rows.rows[k][column]);
     }
     if (record.npts() < 2) fail_at(text, rows.first_line, "a record needs at least 2 samples");
-    convert_to_si(record, to_m_s2);
+    convert_to_si(text, record, to_m_s2, [&](std::size_t k) { return rows.row_lines[k]; });
     return record;
 }
 

@@ -123,12 +123,16 @@ GroundMotionRecord read_knet(const RecordText& text, const RecordReadOptions& op
         fail_at(text, block.extra_line,
                 fmt::format("the file holds {} more than the {} values that Sampling Freq x Duration Time ({} Hz x {} s) announce",
                             block.extra_values, expected, rate_hz, duration_s));
+    // Checked before the mean is removed, so that a bad count is found on its own line.
+    const double to_m_s2 = resolve_units(text, options, "gal", scale_factor) * gal_per_count;
+    const auto line_of = [&](std::size_t k) { return free_value_line(text, header_lines, k); };
+    check_si_range(text, block.values, to_m_s2, line_of);
     const double mean = std::accumulate(block.values.begin(), block.values.end(), 0.0) / static_cast<double>(expected);
     record.acceleration_m_s2.reserve(expected);
     for (double c : block.values) record.acceleration_m_s2.push_back(c - mean);
     record.notes.push_back(fmt::format("mean count {:.2f} removed (K-NET convention); record starts 15 s before Record Time {}",
                                        mean, header_value(text, record_time)));
-    convert_to_si(record, resolve_units(text, options, "gal", scale_factor) * gal_per_count);
+    convert_to_si(text, record, to_m_s2, line_of);
     return record;
 }
 

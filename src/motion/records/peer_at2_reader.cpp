@@ -150,7 +150,7 @@ GroundMotionRecord read_peer_at2(const RecordText& text, const RecordReadOptions
                 fmt::format("the file holds {} more values than the NPTS = {} of line {}", block.extra_values, header->npts,
                             header->line + 1));
     record.acceleration_m_s2 = block.values;
-    convert_to_si(record, to_m_s2);
+    convert_to_si(text, record, to_m_s2, [&](std::size_t k) { return free_value_line(text, header->line + 1, k); });
     return record;
 }
 

@@ -177,13 +177,14 @@ GroundMotionRecord read_plain_text(const RecordText& text, const RecordReadOptio
         if (const auto colon = text.lines[i].find(':'); colon != std::string::npos && contains_nocase(text.lines[i].substr(0, colon), "station"))
             record.station = squeeze_blanks(text.lines[i].substr(colon + 1));
     const std::size_t columns = rows.rows.front().size();
-    if (columns >= 2 && same_width(rows) && rows.rows.size() >= 2)
+    const bool table = columns >= 2 && same_width(rows) && rows.rows.size() >= 2;  // else values only
+    if (table)
         read_table(text, options, rows, record);
     else
         read_values_only(text, options, rows, record);
     if (record.npts() < 2) fail_at(text, rows.first_line, "a record needs at least 2 samples");
     if (rows.trailer_line > 0) record.notes.push_back(fmt::format("data end at the trailer on line {}", rows.trailer_line + 1));
-    convert_to_si(record, to_m_s2);
+    convert_to_si(text, record, to_m_s2, [&](std::size_t k) { return table ? rows.row_lines[k] : row_value_line(rows, k); });
     return record;
 }
 

@@ -1,9 +1,11 @@
 #pragma once
 // The per-format readers behind read_ground_motion_record(), one file each, and what they share.
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "motion/records/acceleration_units.hpp"
 #include "motion/records/ground_motion_record.hpp"
@@ -49,7 +51,14 @@ void check_sample_interval(const RecordText& text, std::size_t line, double dt_s
 void check_component(const RecordText& text, const RecordReadOptions& options, const std::string& header_component,
                      std::size_t line);
 
-/// Scales counts or file units to m/s^2 in place.
-void convert_to_si(GroundMotionRecord& record, double to_m_s2);
+/// Refuses a value that to_m_s2 takes beyond the range of a double (1e308 g): an InputError at
+/// its line, which line_of(k) gives for value k (asked only then: the readers' layouts differ,
+/// and finding a line may walk the file).
+void check_si_range(const RecordText& text, const std::vector<double>& in_file, double to_m_s2,
+                    const std::function<std::size_t(std::size_t)>& line_of);
+
+/// Scales counts or file units to m/s^2 in place, after check_si_range.
+void convert_to_si(const RecordText& text, GroundMotionRecord& record, double to_m_s2,
+                   const std::function<std::size_t(std::size_t)>& line_of);
 
 }  // namespace blockdem::records

@@ -339,6 +339,30 @@ ValueBlock read_fixed_values(const RecordText& text, std::size_t first_line, std
     return block;
 }
 
+std::size_t free_value_line(const RecordText& text, std::size_t first_line, std::size_t index) {
+    std::size_t line = first_line;
+    for (; line + 1 < text.lines.size(); ++line) {
+        const std::size_t on_line = blank_tokens(text.lines[line]).size();
+        if (index < on_line) break;
+        index -= on_line;
+    }
+    return line;
+}
+
+std::size_t fixed_value_line(const RecordText& text, std::size_t first_line, std::size_t index, std::size_t per_line,
+                             std::size_t width) {
+    std::size_t line = first_line;
+    for (; line + 1 < text.lines.size(); ++line) {
+        const std::string_view row = text.lines[line];
+        std::size_t on_line = 0;  // as read_fixed_values reads them: up to a short end or an empty field
+        while (on_line < per_line && on_line * width < row.size() && !trim(row.substr(on_line * width, width)).empty())
+            ++on_line;
+        if (index < on_line) break;
+        index -= on_line;
+    }
+    return line;
+}
+
 namespace {
 
 // The numbers of a line when every field is one; nullopt otherwise (and for blank lines).
@@ -394,6 +418,14 @@ NumericRows read_numeric_rows(const RecordText& text, std::size_t from) {
         fail_at(text, line, "this line is not a row of numbers");
     }
     return out;
+}
+
+std::size_t row_value_line(const NumericRows& rows, std::size_t index) {
+    for (std::size_t k = 0; k < rows.rows.size(); ++k) {
+        if (index < rows.rows[k].size()) return rows.row_lines[k];
+        index -= rows.rows[k].size();
+    }
+    return rows.row_lines.empty() ? rows.first_line : rows.row_lines.back();
 }
 
 }  // namespace blockdem::records

@@ -136,6 +136,13 @@ ValueBlock read_free_values(const RecordText& text, std::size_t first_line, std:
 ValueBlock read_fixed_values(const RecordText& text, std::size_t first_line, std::size_t count, std::size_t per_line,
                              std::size_t width);
 
+/// The line of value `index` (0-based) of a block that read_free_values read from first_line,
+/// and of one that read_fixed_values read with per_line fields of width characters: for
+/// messages about a value found bad after reading.
+std::size_t free_value_line(const RecordText& text, std::size_t first_line, std::size_t index);
+std::size_t fixed_value_line(const RecordText& text, std::size_t first_line, std::size_t index, std::size_t per_line,
+                             std::size_t width);
+
 /// Rows of numbers (a table or a list of values), as found after a free-text header.
 struct NumericRows {
     std::size_t first_line = 0;                ///< line of the first row
@@ -149,5 +156,8 @@ struct NumericRows {
 /// the end of data only when nothing numeric follows it ("*** End Data ***"); otherwise it is an
 /// error naming its line. Throws when no numeric line exists.
 NumericRows read_numeric_rows(const RecordText& text, std::size_t from);
+
+/// The line of value `index` (0-based) of rows read one after another (a values-only file).
+std::size_t row_value_line(const NumericRows& rows, std::size_t index);
 
 }  // namespace blockdem::records
