@@ -11,14 +11,26 @@ class RunFolderError(Exception):
     """A folder that is not a complete blockdem run folder."""
 
 
-def _read_csv(path):
-    """Header names and a 2-D array (rows x columns) of a numeric CSV file."""
-    with open(path, encoding="utf-8") as f:
-        header = f.readline().strip().split(",")
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+def _read_csv(path, usecols=None):
+    """Header names and a 2-D array (rows x columns) of a numeric CSV file (of the columns usecols
+    only, when given); RunFolderError naming the file when it is not one."""
+    try:
+        with open(path, encoding="utf-8") as f:
+            header = f.readline().strip().split(",")
+        data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2, usecols=usecols)
+    except (ValueError, UnicodeDecodeError) as e:
+        raise RunFolderError(f"{path}: not a CSV file of numbers under a header line: {e}") from e
     if data.shape[0] == 0:
-        data = np.zeros((0, len(header)))
+        data = np.zeros((0, len(header) if usecols is None else len(usecols)))
     return header, data
+
+
+def _read_json(path):
+    """A JSON file's value; RunFolderError naming the file when it is not JSON."""
+    try:
+        return json.loads(Path(path).read_text(encoding="utf-8"))
+    except (ValueError, UnicodeDecodeError) as e:
+        raise RunFolderError(f"{path}: not a readable JSON file: {e}") from e
 
 
 def run_dimension(folder):
@@ -45,11 +57,11 @@ class RunFolder:
         header, data = _read_csv(self.path / "history.csv")
         self.columns = {name: data[:, k] for k, name in enumerate(header)}
         self.t_s = self.columns["t"]
-        self.summary = json.loads((self.path / "summary.json").read_text(encoding="utf-8"))
-        self.bodies = json.loads((self.path / "bodies.json").read_text(encoding="utf-8"))["bodies"]
+        self.summary = _read_json(self.path / "summary.json")
+        self.bodies = _read_json(self.path / "bodies.json")["bodies"]
         # Wall-clock time and restarts (run_info.json, absent in folders of older versions).
         info = self.path / "run_info.json"
-        self.run_info = json.loads(info.read_text(encoding="utf-8")) if info.is_file() else {}
+        self.run_info = _read_json(info) if info.is_file() else {}
         self.energy = None
         if (self.path / "energy.csv").is_file():
             header, data = _read_csv(self.path / "energy.csv")

@@ -1,13 +1,12 @@
 """A 3-D run folder (docs/3d.md, "Outputs") read into arrays: history.csv (per body the centroid,
 the turn since t = 0 as a quaternion and a rotation vector, the tilt, the velocity), energy.csv,
 summary.json, scenario.toml and the VTK frames' list."""
-import json
 import tomllib
 from pathlib import Path
 
 import numpy as np
 
-from .run_folder import RunFolderError, _read_csv
+from .run_folder import RunFolderError, _read_csv, _read_json
 from .vtp_reader import BodyFrame, VtpFormatError, read_body_frame, read_collection
 
 MAX_READ = 60  # bodies whose history.csv columns are read (the largest peak tilts), besides the table
@@ -48,7 +47,7 @@ class RunFolder3d:
         for name in ("history.csv", "summary.json"):
             if not (self.path / name).is_file():
                 raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
-        self.summary = json.loads((self.path / "summary.json").read_text(encoding="utf-8"))
+        self.summary = _read_json(self.path / "summary.json")
         self.bodies = self.summary.get("bodies", [])
         self.columns = self._read_history(self.path / "history.csv")
         self.t_s = self.columns["t_s"]
@@ -68,8 +67,11 @@ class RunFolder3d:
         """history.csv's columns, of every body on a run of up to MAX_READ bodies; above, of the
         table and of the MAX_READ largest peak tilts only (a 1e4-body run writes 15 columns a
         body: parsing them all would take most of the report's time and memory)."""
-        with open(path, encoding="utf-8") as f:
-            header = f.readline().strip().split(",")
+        try:
+            with open(path, encoding="utf-8") as f:
+                header = f.readline().strip().split(",")
+        except UnicodeDecodeError as e:
+            raise RunFolderError(f"{path}: not a CSV file of numbers under a header line: {e}") from e
         if not header or header[0] != "t_s":
             raise RunFolderError(f"{path}: the first column is not t_s")
         dynamic = sorted((b for b in self.bodies if b.get("kind") == "dynamic"), key=lambda b: -b.get("peak_tilt_rad", 0.0))
@@ -77,7 +79,7 @@ class RunFolder3d:
         if len(dynamic) > MAX_READ:
             names = {b["name"] for b in dynamic[:MAX_READ]} | {b["name"] for b in self.bodies if b.get("kind") == "driven"}
             wanted = [k for k, c in enumerate(header) if k == 0 or c.rsplit(".", 1)[0] in names]
-        data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2, usecols=wanted)
+        _, data = _read_csv(path, usecols=wanted)
         if data.shape[0] == 0:
             raise RunFolderError(f"{path}: no rows")
         names = header if wanted is None else [header[k] for k in wanted]
