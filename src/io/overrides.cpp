@@ -49,6 +49,12 @@ void apply_one(toml::table& root, const std::string& assignment) {
     if (eq == std::string::npos || eq == 0) throw InputError(where, "expected key=value");
     const std::string path = assignment.substr(0, eq);
     const std::vector<std::string> parts = split_path(path);
+    // The dimension is chosen from the file before its keys are read (the two dimensions read
+    // their bodies apart: polygons or polyhedra); --set dimension was ignored, or refused as if
+    // the file had said it.
+    if (parts.size() == 1 && parts[0] == "dimension")
+        throw InputError(where, "the dimension is the scenario file's own (its bodies are polygons in 2-D, polyhedra in "
+                                "3-D) and cannot be set: write the scenario for the other dimension");
     toml::table* table = &root;
     for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
         toml::node* next = table->get(parts[i]);

@@ -4,7 +4,8 @@
 # let nan and inf through and printed a 300-digit bound), an ensemble of 1e8 runs (ran out of
 # memory), an output folder that is empty ("--out ''" wrote nowhere and said it had) or a file,
 # an output file in a folder that does not exist (refused after the fit had run), a sweep key
-# varied twice (two columns, the last winning) or none of whose values can be read.
+# varied twice (two columns, the last winning) or none of whose values can be read; and
+# `--set dimension`, which was ignored (the dimension is chosen from the file before --set).
 # Usage: test_option_checks.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
 blockdem=$1
@@ -41,6 +42,9 @@ expect_refused "--out: '$work/a_file' is a file, not a folder" motion "$source_d
 expect_refused "--damping: 'nan' is not a finite number from 0 to 0.99" motion "$source_dir/tests/data/records/legacy_pea.AT2" --damping nan
 expect_refused "its folder '$work/no_such_folder' does not exist" calibrate --toml "$work/no_such_folder/keys.toml"
 expect_refused "--threads: '-3' is not a whole number from 1 to 4096" sweep "$scenario" --out "$work/sw" --vary contact.mu=0.5 --threads -3
+expect_refused "key '--set dimension=3': the dimension is the scenario file's own" run "$scenario" --out "$work/r" --set dimension=3
+expect_refused "key '--set dimension=4': the dimension is the scenario file's own" \
+  run "$source_dir/examples/3d/drum_column.toml" --out "$work/r" --set dimension=4
 [ ! -e "$work/r" ] && [ ! -e "$work/cv" ] || fail "a refused command left an output folder"
 
 expect_refused "the key 'contact.mu' is varied twice" sweep "$scenario" --out "$work/sw" --vary contact.mu=0.5 --vary contact.mu=0.6
