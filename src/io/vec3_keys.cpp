@@ -1,5 +1,7 @@
 #include "io/vec3_keys.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace blockdem {
@@ -27,6 +29,10 @@ std::vector<Vec3> vec3_list(TableReader& t, const std::string& key) {
         const auto number = [&](std::size_t k) { return row ? (*row)[k].value<double>() : std::nullopt; };
         if (!row || row->size() != 3 || !number(0) || !number(1) || !number(2))
             t.fail(key, fmt::format("point {} must be three numbers [x, y, z] in m", i));
+        // (nan or inf made the hull's tests fail, and the message said the points were flat.)
+        if (!std::isfinite(*number(0)) || !std::isfinite(*number(1)) || !std::isfinite(*number(2)))
+            t.fail(key, fmt::format("point {} holds a value that is not a finite number: [{}, {}, {}]", i, *number(0),
+                                    *number(1), *number(2)));
         points.push_back({*number(0), *number(1), *number(2)});
     }
     return points;

@@ -361,6 +361,11 @@ TEST(Scenario3d, BadInputNamesTheKeyAndTheBody) {
     const std::string e5 = error_of("[[bodies]]\nname = \"b\"\nshape = \"box\"\nsize = [1, 1]\nposition = [0, 0, 0.5]\n"
                                     "density = 1.0\n");
     EXPECT_NE(e5.find("bodies.b.size"), std::string::npos) << e5;
+    // A nan among the vertices was reported as vertices lying in one plane.
+    const std::string nan_vertex = error_of("[[bodies]]\nname = \"tet\"\nshape = \"polyhedron\"\ndensity = 1000.0\n"
+                                            "vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, nan]]\n");
+    EXPECT_NE(nan_vertex.find("key 'bodies.tet.vertices': point 3 holds a value that is not a finite number"), std::string::npos)
+        << nan_vertex;
     // A tetrahedron's faces listed, one of them inverted (seen from outside it runs clockwise).
     const std::string tetra = "[[bodies]]\nname = \"tet\"\nshape = \"polyhedron\"\n"
                               "vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\ndensity = 1.0\n";
