@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "apps/blockdem/commands.hpp"
+#include "apps/blockdem/option_checks.hpp"
 #include "io/dxf_writer.hpp"
 #include "io/run_frames.hpp"
 
@@ -38,9 +39,11 @@ void add_export_command(CLI::App& app) {
     cmd->add_option("run_dir", options->run_dir, "the run's output folder")->required()->check(CLI::ExistingDirectory);
     cmd->add_option("--dxf", options->dxf, "the DXF drawing to write (closed polylines on layers named after each "
                                            "body's assembly or kind, in m)")
-        ->required();
+        ->required()
+        ->check(output_file());
     cmd->add_option("--time", options->time_s, "the saved time nearest this [s] (a VTK frame or a state file); default: "
-                                               "the last");
+                                               "the last")
+        ->check(finite_non_negative());
     cmd->callback([options] { run_export(*options); });
 }
 

@@ -206,6 +206,12 @@ SettlingSettings read_settling(TableReader t) {
     s.kinetic_ratio = t.optional_positive("kinetic_ratio").value_or(s.kinetic_ratio);
     s.window_s = t.optional_positive("window").value_or(s.window_s);
     s.max_time_s = t.optional_positive("max_time").value_or(s.max_time_s);
+    // Settled means quiet over a whole window: one longer than the time allowed never settles,
+    // which the settling stage found only once it had run that long.
+    if (s.window_s > s.max_time_s)
+        t.fail(t.has("window") ? "window" : "max_time",
+               fmt::format("the window, {:g} s, is longer than max_time, {:g} s: the settling could never end settled", s.window_s,
+                           s.max_time_s));
     s.friction = t.choice("friction", {"held", "actual"}, "held") == "held" ? SettlingFriction::held : SettlingFriction::actual;
     t.reject_unknown_keys();
     return s;

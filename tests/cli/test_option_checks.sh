@@ -5,7 +5,8 @@
 # memory), an output folder that is empty ("--out ''" wrote nowhere and said it had) or a file,
 # an output file in a folder that does not exist (refused after the fit had run), a sweep key
 # varied twice (two columns, the last winning) or none of whose values can be read; and
-# `--set dimension`, which was ignored (the dimension is chosen from the file before --set).
+# `--set dimension`, which was ignored (the dimension is chosen from the file before --set);
+# export --time nan or -5 (took t = 0); a settling window longer than its max_time (failed late).
 # Usage: test_option_checks.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
 blockdem=$1
@@ -45,6 +46,11 @@ expect_refused "--threads: '-3' is not a whole number from 1 to 4096" sweep "$sc
 expect_refused "key '--set dimension=3': the dimension is the scenario file's own" run "$scenario" --out "$work/r" --set dimension=3
 expect_refused "key '--set dimension=4': the dimension is the scenario file's own" \
   run "$source_dir/examples/3d/drum_column.toml" --out "$work/r" --set dimension=4
+"$blockdem" run "$scenario" --out "$work/done" -q > /dev/null
+expect_refused "--time: 'nan' is not a finite number of at least 0" export "$work/done" --dxf "$work/x.dxf" --time nan
+expect_refused "--time: '-5' is not a finite number of at least 0" export "$work/done" --dxf "$work/x.dxf" --time -5
+cp "$scenario" "$work/settle.toml" && printf '\n[settling]\nwindow = 5\nmax_time = 1\n' >> "$work/settle.toml"
+expect_refused "key 'settling.window': the window, 5 s, is longer than max_time, 1 s" check "$work/settle.toml"
 [ ! -e "$work/r" ] && [ ! -e "$work/cv" ] || fail "a refused command left an output folder"
 
 expect_refused "the key 'contact.mu' is varied twice" sweep "$scenario" --out "$work/sw" --vary contact.mu=0.5 --vary contact.mu=0.6
