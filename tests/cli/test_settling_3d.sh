@@ -100,7 +100,7 @@ rc=$?
 [[ $rc -eq 2 ]] && grep -q "nowhere.h5" "$tmp/log" && grep -q "simulation.initial_state" "$tmp/log" \
     || fail "a missing initial state: exit $rc, $(cat "$tmp/log")"
 
-"$bin" run "$tmp/stack.toml" --out "$tmp/short" -q --set settling.max_time=0.002 >"$tmp/log" 2>&1
+"$bin" run "$tmp/stack.toml" --out "$tmp/short" -q --set settling.window=0.001 --set settling.max_time=0.002 >"$tmp/log" 2>&1
 rc=$?
 [[ $rc -eq 3 ]] && grep -q "did not settle within 0.002 s: body 'b" "$tmp/log" || fail "a settling cut short: exit $rc, $(cat "$tmp/log")"
 
