@@ -46,6 +46,20 @@ int main(int argc, char** argv) {
     // With a file-size limit (ulimit -f) the kernel would kill the process with SIGXFSZ and no
     // message; ignored, the write fails with EFBIG and the run says which file.
     std::signal(SIGXFSZ, SIG_IGN);
+    // An unknown first word: CLI11 said only "A subcommand is required".
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string names;
+        bool known = false;
+        for (const CLI::App* command : app.get_subcommands({})) {
+            known = known || command->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + command->get_name();
+        }
+        if (!known) {
+            std::cerr << "error: '" << argv[1] << "' is not a blockdem command; the commands are " << names
+                      << " (blockdem --help)\n";
+            return 2;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::Success& e) {

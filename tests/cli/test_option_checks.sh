@@ -30,6 +30,7 @@ scenario=$work/rock.toml
 sed 's/^duration = .*/duration = 0.05/' "$source_dir/examples/paper/rocking.toml" > "$scenario"
 touch "$work/a_file"
 
+expect_refused "'foo' is not a blockdem command; the commands are run, check," foo
 expect_refused "--rtol: 'nan' is not a finite number above 0" converge "$scenario" --out "$work/cv" --rtol nan
 expect_refused "--rtol: '0' is not a finite number above 0" converge "$scenario" --out "$work/cv" --rtol 0
 expect_refused "--floor-rotation: 'inf' is not a finite number above 0" converge "$scenario" --out "$work/cv" --floor-rotation inf
