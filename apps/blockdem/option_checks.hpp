@@ -63,8 +63,11 @@ inline constexpr long long max_ensemble = 1000;
 inline CLI::Validator whole_number_in(long long lo, long long hi, const std::string& why_most = "") {
     return CLI::Validator(
         [=](std::string& text) {
+            // Digits only (after a sign): "2.0" or "1e0" would pass as numbers, then fail CLI11's
+            // conversion to an integer with a vaguer message.
+            const bool digits = text.find_first_not_of("0123456789", text[0] == '-' || text[0] == '+' ? 1 : 0) == std::string::npos;
             const double v = detail::finite_number(text);
-            if (v >= static_cast<double>(lo) && v <= static_cast<double>(hi) && v == std::floor(v)) return std::string();
+            if (digits && v >= static_cast<double>(lo) && v <= static_cast<double>(hi)) return std::string();
             return fmt::format("'{}' is not a whole number from {} to {}{}", text, lo, hi,
                                why_most.empty() ? "" : " (" + why_most + ")");
         },

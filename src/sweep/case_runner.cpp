@@ -238,25 +238,44 @@ SweepScenario load_sweep_scenario(toml::table root, const std::filesystem::path&
     return sweep_scenario_from(load_scenario(std::move(root), file, {}), file);
 }
 
+namespace {
+
+// Whether an input error is about one of the axis's keys: the error names the key or a table on
+// its path (an unknown key is named at its first unknown part: 'nosuch' for nosuch.key).
+bool names_axis(const InputError& e, const SweepAxis& axis) {
+    const std::string& at = e.where().key;
+    if (at.empty()) return false;
+    for (const std::string& key : axis.keys)
+        if (key == at || key.starts_with(at + ".")) return true;
+    return false;
+}
+
+}  // namespace
+
 void check_axes_readable(const SweepScenario& scenario, const SweepPlan& plan) {
     const SweepCase first = make_case(plan, 0);
     std::size_t column = 0;  // the axis's first assignment in a case's list
     for (const SweepAxis& axis : plan.axes) {
         std::string first_error;
-        bool any_read = false;
-        for (std::size_t p = 0; p < axis.points.size() && !any_read; ++p) {
+        // Refused only when every value fails on the axis's own keys: a failure on another key
+        // (another axis's first value, the first record) says nothing of this axis.
+        bool all_fail_here = true;
+        for (std::size_t p = 0; p < axis.points.size() && all_fail_here; ++p) {
             SweepCase c = first;
             for (std::size_t j = 0; j < axis.keys.size(); ++j) c.assignments[column + j].value = axis.points[p][j];
             try {
                 (void)read_model(case_root(scenario, plan, c), scenario.file.string(), scenario.file.parent_path());
-                any_read = true;
-            } catch (const std::exception& e) {
-                if (first_error.empty()) first_error = e.what();
+                all_fail_here = false;
+            } catch (const InputError& e) {
+                all_fail_here = names_axis(e, axis);
+                if (first_error.empty()) first_error = e.problem();
+            } catch (const std::exception&) {
+                all_fail_here = false;
             }
         }
-        if (!any_read)
+        if (all_fail_here)
             throw InputError({scenario.file.string(), axis.keys.front(), 0, 0},
-                             fmt::format("no value of the varied key can be read into the scenario, e.g. {}", first_error));
+                             fmt::format("no value of the varied key can be read into the scenario (the first: {})", first_error));
         column += axis.keys.size();
     }
 }

@@ -68,8 +68,9 @@ struct CaseResult {
 
 /// Refuses (InputError) a plan with an axis none of whose values can be read into the scenario
 /// (an unknown key, a value of the wrong type or range), each value tried with the first case's
-/// other values, before any case runs: a value that fails only in some cases is recorded with
-/// them, an axis that fails in all would only fill the table with the same error.
+/// other values and failing on the axis's own key, before any case runs: a value that fails only
+/// in some cases is recorded with them, an axis that fails in all would only fill the table with
+/// the same error.
 void check_axes_readable(const SweepScenario& scenario, const SweepPlan& plan);
 
 /// Thrown out of run_case when `cancel` turns true (Ctrl-C): the case is not finished and is

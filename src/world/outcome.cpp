@@ -74,13 +74,20 @@ bool gone(Outcome o) { return o == Outcome::fell || o == Outcome::left_model; }
 
 std::vector<std::string> untouched_body_warnings(const std::vector<BodyRecord>& records, const std::vector<std::string>& names,
                                                  double duration_s) {
+    // Named one by one up to a few, then counted (a packing poured from above has thousands).
+    constexpr std::size_t named_at_most = 10;
     std::vector<std::string> warnings;
-    for (std::size_t i = 0; i < records.size(); ++i)
-        if (records[i].dynamic && !records[i].touched_a_body && !records[i].left_model)
+    std::size_t untouched = 0;
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        if (!records[i].dynamic || records[i].touched_a_body || records[i].left_model) continue;
+        if (++untouched <= named_at_most)
             warnings.push_back(fmt::format(
                 "body '{}' touched no other body in the run's {:g} s: it was in free flight from the start, so its outcome "
                 "says nothing of its stability; check its position (blockdem check lists the bodies touching nothing at the start)",
                 names[i], duration_s));
+    }
+    if (untouched > named_at_most)
+        warnings.push_back(fmt::format("... and {} more bodies touched no other body in the run", untouched - named_at_most));
     return warnings;
 }
 

@@ -63,4 +63,7 @@ expect_refused "key 'contact.mu': no value of the varied key can be read into th
 # A value that fails alone is recorded with its case, as before.
 "$blockdem" sweep "$scenario" --out "$work/sw" --vary contact.mu=abc,0.5 -q > "$work/sweep.log"
 grep -q "2 cases, 2 done (1 failed or bad input)" "$work/sweep.log" || { cat "$work/sweep.log"; fail "sweep with one bad value"; }
+# A first value failing on another axis's key does not condemn this axis.
+"$blockdem" sweep "$scenario" --out "$work/sw2" --vary contact.mu=-1,0.5 --vary simulation.duration=0.01,0.02 -q > "$work/sweep2.log"
+grep -q "4 cases, 4 done (2 failed or bad input)" "$work/sweep2.log" || { cat "$work/sweep2.log"; fail "sweep of two axes"; }
 echo "option checks: all refused with their option named"

@@ -36,10 +36,10 @@ def _read_json(path):
 def run_dimension(folder):
     """3 for a folder whose summary.json says so, else 2 (also when there is no summary.json:
     RunFolder then says what is missing)."""
-    try:
-        summary = json.loads((Path(folder) / "summary.json").read_text(encoding="utf-8"))
-    except (OSError, ValueError):
+    path = Path(folder) / "summary.json"
+    if not path.is_file():
         return 2
+    summary = _read_json(path)  # (a damaged one is named, not taken for a 2-D run's)
     return 3 if isinstance(summary, dict) and summary.get("dimension") == 3 else 2
 
 
@@ -56,9 +56,14 @@ class RunFolder:
                 raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
         header, data = _read_csv(self.path / "history.csv")
         self.columns = {name: data[:, k] for k, name in enumerate(header)}
+        if "t" not in self.columns:
+            raise RunFolderError(f"{self.path / 'history.csv'}: no column t (its header: {','.join(header[:5])}...)")
         self.t_s = self.columns["t"]
         self.summary = _read_json(self.path / "summary.json")
-        self.bodies = _read_json(self.path / "bodies.json")["bodies"]
+        bodies = _read_json(self.path / "bodies.json")
+        if not isinstance(bodies, dict) or not isinstance(bodies.get("bodies"), list):
+            raise RunFolderError(f"{self.path / 'bodies.json'}: no list of bodies")
+        self.bodies = bodies["bodies"]
         # Wall-clock time and restarts (run_info.json, absent in folders of older versions).
         info = self.path / "run_info.json"
         self.run_info = _read_json(info) if info.is_file() else {}

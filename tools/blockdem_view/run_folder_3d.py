@@ -48,6 +48,8 @@ class RunFolder3d:
             if not (self.path / name).is_file():
                 raise RunFolderError(f"{self.path}: no {name} (is this a folder written by `blockdem run`?)")
         self.summary = _read_json(self.path / "summary.json")
+        if not isinstance(self.summary, dict):
+            raise RunFolderError(f"{self.path / 'summary.json'}: not a run's summary (no object at its top)")
         self.bodies = self.summary.get("bodies", [])
         self.columns = self._read_history(self.path / "history.csv")
         self.t_s = self.columns["t_s"]
