@@ -131,7 +131,10 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
     while (std::getline(in, line)) {
         ++line_no;
         const InputLocation where{spec.file.string(), "", line_no, 0};
-        const auto fields = split_fields(line);
+        auto fields = split_fields(line);
+        // Empty fields at a line's end are no column (a spreadsheet's export may end rows with a
+        // comma): not counted in the row's width.
+        while (fields.size() > 1 && fields.back().empty()) fields.pop_back();
         if (fields.empty() || (!fields[0].empty() && fields[0][0] == '#')) continue;
         if (columns == 0) {
             const bool is_header = !to_number(fields[0]);

@@ -99,6 +99,9 @@ TEST(TimeSeriesCsv, RowsOfAnotherWidthThanTheHeaderAreRefused) {
     expect_in(csv_error(spec), "blockdem-csv-narrow.csv:3: this line has 2 columns but the header has 3");
     spec.file = write("ragged.csv", "0 0\n0.01 1\n0.02 1 7\n");  // no header: the first row sets the width
     expect_in(csv_error(spec), "blockdem-csv-ragged.csv:3: this line has 3 columns but the first row has 2");
+    // Rows ended by a comma (a spreadsheet's export) have no column more.
+    spec.file = write("trailing.csv", "t,a,\n0,0,\n0.01,1\n0.02,0.5,\n");
+    EXPECT_EQ(read_time_series_csv(spec).acceleration_m_s2.size(), 3u);
 }
 
 // dt given and the default column 0 read the time column as the acceleration (a ramp).
