@@ -109,6 +109,10 @@ std::vector<std::string> check_run_budget(const LoadedScenario& s, const RunBudg
                     byte_text(b.energy_bytes),
                     b.vtk_frames > 0 ? fmt::format(", vtk/ {} ({:.3g} frames)", byte_text(b.vtk_bytes), b.vtk_frames) : "");
     const double disk = free_disk_bytes(out_dir);
+    // Nothing free at all is the place, not the run's length (a full disk, /proc): named as such.
+    if (disk <= 0.0)
+        throw InputError({out_dir.string(), "", 0, 0},
+                         "the output folder's disk has no free space (0 B): give --out a folder on a disk that can hold the run's files");
     if (b.output_bytes() > disk)
         throw InputError({file, "simulation.duration", 0, 0},
                          fmt::format("the run would write about {} ({}), more than the {} free where {} is; shorten "

@@ -52,6 +52,10 @@ expect_refused "--time: 'nan' is not a finite number of at least 0" export "$wor
 expect_refused "--time: '-5' is not a finite number of at least 0" export "$work/done" --dxf "$work/x.dxf" --time -5
 cp "$scenario" "$work/settle.toml" && printf '\n[settling]\nwindow = 5\nmax_time = 1\n' >> "$work/settle.toml"
 expect_refused "key 'settling.window': the window, 5 s, is longer than max_time, 1 s" check "$work/settle.toml"
+# A place with no space at all is named as such (it blamed simulation.duration).
+if [ -d /proc ]; then
+  expect_refused "/proc/blockdem_out: the output folder's disk has no free space (0 B)" run "$scenario" --out /proc/blockdem_out
+fi
 [ ! -e "$work/r" ] && [ ! -e "$work/cv" ] || fail "a refused command left an output folder"
 
 expect_refused "the key 'contact.mu' is varied twice" sweep "$scenario" --out "$work/sw" --vary contact.mu=0.5 --vary contact.mu=0.6
