@@ -87,8 +87,16 @@ struct BodyLabel {
 
 std::vector<BodyLabel> body_labels(const fs::path& run_dir) {
     const fs::path file = run_dir / "bodies.json";
-    if (!fs::is_regular_file(file))
+    if (!fs::is_regular_file(file)) {
+        // A 3-D run writes no bodies.json: say that, not that the folder is no run's.
+        const fs::path summary = run_dir / "summary.json";
+        const nlohmann::json s = fs::is_regular_file(summary) ? nlohmann::json::parse(file_text(summary), nullptr, false) : nlohmann::json();
+        if (s.is_object() && s.value("dimension", 2) == 3)
+            throw InputError({run_dir.string(), "", 0, 0},
+                             "a 3-D run: its drawings are 2-D (polylines of each block's outline); its bodies are in the "
+                             "VTK frames (vtk/bodies.pvd) for ParaView");
         throw InputError({file.string(), "", 0, 0}, "no bodies.json: is this the output folder of a blockdem run?");
+    }
     std::vector<BodyLabel> labels;
     try {
         const nlohmann::json j = nlohmann::json::parse(file_text(file));

@@ -56,7 +56,9 @@ std::vector<std::string> split_top_level(const std::string& text, char separator
 }
 
 std::vector<std::string> range_values(double start, double stop, double step) {
-    if (!(step != 0.0) || !std::isfinite(step)) throw std::invalid_argument("the step of a range must not be 0");
+    if (!std::isfinite(start) || !std::isfinite(stop) || !std::isfinite(step))
+        throw std::invalid_argument(fmt::format("the range {}:{}:{} holds a value that is not a finite number", start, stop, step));
+    if (step == 0.0) throw std::invalid_argument("the step of a range must not be 0");
     if ((stop - start) * step < 0.0)
         throw std::invalid_argument(fmt::format("the range {}:{}:{} never reaches its end", start, stop, step));
     // Inclusive of stop up to round-off: 0:1:0.1 has 11 values.
@@ -153,6 +155,8 @@ SweepAxis parse_vary(const std::string& spec) {
 }
 
 SweepAxis read_case_list(const std::filesystem::path& file) {
+    if (std::filesystem::is_directory(file))
+        throw std::invalid_argument(fmt::format("{}: a folder, not a case list (a CSV file: a header of keys, a row a case)", file.string()));
     std::ifstream in(file);
     if (!in) throw std::invalid_argument(fmt::format("{}: cannot open the case list", file.string()));
     SweepAxis axis;

@@ -67,6 +67,10 @@ expect_refused "key 'contact.mu': no value of the varied key can be read into th
 # A value that fails alone is recorded with its case, as before.
 "$blockdem" sweep "$scenario" --out "$work/sw" --vary contact.mu=abc,0.5 -q > "$work/sweep.log"
 grep -q "2 cases, 2 done (1 failed or bad input)" "$work/sweep.log" || { cat "$work/sweep.log"; fail "sweep with one bad value"; }
+expect_refused "the range 0:1:nan holds a value that is not a finite number" sweep "$scenario" --out "$work/sw3" --vary contact.mu=0:1:nan
+expect_refused "$work: a folder, not a case list" sweep "$scenario" --out "$work/sw3" --cases "$work"
+"$blockdem" run "$source_dir/examples/3d/drum_column.toml" --out "$work/run3" -q --set simulation.duration=0.02 > /dev/null 2>&1
+expect_refused "$work/run3: a 3-D run: its drawings are 2-D" export "$work/run3" --dxf "$work/x3.dxf"
 # A first value failing on another axis's key does not condemn this axis.
 "$blockdem" sweep "$scenario" --out "$work/sw2" --vary contact.mu=-1,0.5 --vary simulation.duration=0.01,0.02 -q > "$work/sweep2.log"
 grep -q "4 cases, 4 done (2 failed or bad input)" "$work/sweep2.log" || { cat "$work/sweep2.log"; fail "sweep of two axes"; }
