@@ -155,7 +155,12 @@ BodyDef3d read_body_3d(TableReader t) {
         const double height = t.positive("height");
         if (t.has("polygon")) {
             if (t.has("sides") || t.has("radius")) t.fail("polygon", "give either polygon or sides and radius, not both");
-            local_m = centered_prism(t.vec2_list("polygon"), height);
+            const std::vector<Vec2> polygon = t.vec2_list("polygon");
+            // Checked as the 2-D polygon it is: the hull of its extrusion named a vertex of the
+            // centred prism the user never wrote.
+            if (const auto problem = convexity_problem(counter_clockwise(polygon)))
+                t.fail("polygon", fmt::format("is not a convex polygon: {}", *problem));
+            local_m = centered_prism(polygon, height);
         } else {
             const auto sides = t.whole_number("sides", 3, max_sides);
             local_m = centered_prism(regular_polygon(static_cast<int>(sides), t.positive("radius")), height);

@@ -366,6 +366,12 @@ TEST(Scenario3d, BadInputNamesTheKeyAndTheBody) {
                                             "vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, nan]]\n");
     EXPECT_NE(nan_vertex.find("key 'bodies.tet.vertices': point 3 holds a value that is not a finite number"), std::string::npos)
         << nan_vertex;
+    // A concave prism polygon was named by a vertex of the centred prism the user never wrote.
+    const std::string concave = error_of("[[bodies]]\nname = \"pr\"\nshape = \"prism\"\nheight = 0.5\ndensity = 1000.0\n"
+                                         "position = [0, 0, 0.25]\npolygon = [[0, 0], [0.2, 0], [0.1, 0.05], [0.2, 0.2], [0, 0.2]]\n");
+    EXPECT_NE(concave.find("key 'bodies.pr.polygon': is not a convex polygon: not strictly convex at vertex 2 (0.1, 0.05) m"),
+              std::string::npos)
+        << concave;
     // A tetrahedron's faces listed, one of them inverted (seen from outside it runs clockwise).
     const std::string tetra = "[[bodies]]\nname = \"tet\"\nshape = \"polyhedron\"\n"
                               "vertices = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]\ndensity = 1.0\n";
