@@ -1,5 +1,6 @@
 #include "io/time_series_csv.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -93,13 +94,21 @@ void check_row_width(std::size_t fields, std::size_t columns, bool has_header, c
                                         has_header ? "header" : "first row", columns));
 }
 
+// A field that is not a number, as a message shows it: quoted, or said to be no text when it
+// holds control or non-ASCII bytes (a binary file's, which were echoed to the terminal).
+std::string not_a_number(const std::string& field) {
+    const bool text = std::all_of(field.begin(), field.end(), [](char c) { return c >= 0x20 && c < 0x7f; });
+    return text ? fmt::format("'{}' is not a finite number", field)
+                : std::string("a field of bytes that are not text, not a number (is this a binary file?)");
+}
+
 // The time of a row, which must increase and not be negative: a motion starts at rest at its
 // first sample, and one that started before t = 0 would have the table moving when the run
 // begins. (A record's time column is instead taken to start at 0: records count time from a
 // trigger; a CSV series is the motion's own schedule, and a first time above 0 delays it.)
 double row_time(const std::string& field, const std::vector<double>& time_s, const InputLocation& where) {
     const auto t = to_number(field);
-    if (!t) throw InputError(where, fmt::format("'{}' is not a finite number", field));
+    if (!t) throw InputError(where, not_a_number(field));
     if (*t < 0.0)
         throw InputError(where, fmt::format("time {} s is before 0: a motion starts at rest at its first sample, and one "
                                             "that started before t = 0 would have the table already moving when the run "
@@ -118,6 +127,8 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
     if (!size_error && bytes > records::max_record_file_bytes)  // refused before reading it
         throw InputError({spec.file.string(), "", 0, 0}, fmt::format("the file holds {} bytes; a time-series file may have at most {}",
                                                                      bytes, records::max_record_file_bytes));
+    if (std::filesystem::is_directory(spec.file))
+        throw InputError({spec.file.string(), "", 0, 0}, "a folder, not a time-series file");
     std::ifstream in(spec.file);
     if (!in) throw InputError({spec.file.string(), "", 0, 0}, "cannot open the time-series file");
     std::vector<double> time_s;
@@ -147,7 +158,7 @@ AccelerationSeries read_time_series_csv(const CsvSeriesSpec& spec) {
         }
         check_row_width(fields.size(), columns, !header.empty(), where);
         const auto a = to_number(fields[a_col]);
-        if (!a) throw InputError(where, fmt::format("'{}' is not a finite number", fields[a_col]));
+        if (!a) throw InputError(where, not_a_number(fields[a_col]));
         const double t = spec.dt_s ? static_cast<double>(acc_m_s2.size()) * *spec.dt_s : row_time(fields[t_col], time_s, where);
         if (acc_m_s2.size() == max_record_samples)
             throw InputError(where, fmt::format("a motion may have at most {} samples", max_record_samples));
@@ -191,6 +202,11 @@ AccelerationSeries read_time_series_csv_keys(TableReader& keys, const std::files
     };
     spec.time_column = column("time_column", 0);
     spec.acceleration_column = column("column", spec.dt_s ? 0 : 1);
+    // One column read as both: its times taken as accelerations (reported as times that do not
+    // increase, or as a ramp).
+    const bool same = spec.time_column.name == spec.acceleration_column.name &&
+                      spec.time_column.index == spec.acceleration_column.index;
+    if (!spec.dt_s && same) keys.fail(keys.has("column") ? "column" : "time_column", "names the same column as time_column and column");
     keys.reject_unknown_keys();
     try {
         return read_time_series_csv(spec);

@@ -3,6 +3,8 @@
 # key or line: a start before t = 0 (2-D and 3-D), a period shorter than 4 time steps, a CSV
 # motion with negative times, a row wider than its header or its time column read as
 # acceleration, and a record value beyond the range of a number in m/s^2. Each of these ran.
+# Also: a folder given as the file, one column named for both time and acceleration (reported
+# as times that do not increase), a binary file (its bytes were echoed).
 # Usage: test_motion_input.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
 blockdem=$1
@@ -62,5 +64,21 @@ with_motion huge 'type = "record"
 file = "huge.csv"'
 expect_refused "huge.csv:4: sample 3 (1e+308 in the file's units, 9.80665 m/s^2 each) is beyond the range of a number in m/s^2" \
   run "$work/huge.toml" "${short[@]}"
+
+# A folder for a file, one column read as both time and acceleration, a binary file's bytes.
+with_motion folder 'type = "csv"
+file = "."'
+expect_refused "a folder, not a time-series file" run "$work/folder.toml" "${short[@]}"
+with_motion same_column 'type = "csv"
+file = "timed.csv"
+time_column = 1
+column = 1'
+expect_refused "key 'table_motion.horizontal.column': names the same column as time_column and column" \
+  run "$work/same_column.toml" "${short[@]}"
+printf 't,a\n0,\001\002\377\n' > "$work/binary.csv"
+with_motion binary 'type = "csv"
+file = "binary.csv"'
+expect_refused "binary.csv:2: a field of bytes that are not text, not a number (is this a binary file?)" \
+  run "$work/binary.toml" "${short[@]}"
 
 echo "ok"
