@@ -12,17 +12,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# Runs blockdem with a time limit; expects exit status 2 and the words on stderr.
-expect_refused() {  # <words> <blockdem arguments...>
-  local words=$1
-  shift
-  set +e
-  timeout 60 "$blockdem" "$@" > "$work/out.txt" 2> "$work/err.txt"
-  local status=$?
-  set -e
-  [ $status -eq 2 ] || { cat "$work/err.txt"; fail "exit status $status (expected 2) for: $*"; }
-  grep -qF -- "$words" "$work/err.txt" || { cat "$work/err.txt"; fail "message for: $* (expected: $words)"; }
-}
+source "$(dirname "$0")/expect_refused.sh"
 
 knet_header() {  # <scale factor>
   printf 'Origin Time       2003/01/02 04:05:00\nLat.              35.0\nLong.             135.0\nDepth. (km)       10\n'

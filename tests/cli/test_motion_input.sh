@@ -13,17 +13,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-# Runs blockdem; expects exit status 2 and the words on stderr.
-expect_refused() {  # <words> <blockdem arguments...>
-  local words=$1
-  shift
-  set +e
-  timeout 120 "$blockdem" "$@" > "$work/out.txt" 2> "$work/err.txt"
-  local status=$?
-  set -e
-  [ $status -eq 2 ] || { cat "$work/err.txt"; fail "exit status $status (expected 2) for: $*"; }
-  grep -qF -- "$words" "$work/err.txt" || { cat "$work/err.txt"; fail "message for: $* (expected: $words)"; }
-}
+source "$(dirname "$0")/expect_refused.sh"
 
 rocking=$source_dir/examples/paper/rocking.toml
 short=(--set simulation.duration=0.2 --out "$work/run")

@@ -15,16 +15,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-expect_refused() {  # <words> <blockdem arguments...>: exit status 2, the words on stderr
-  local words=$1
-  shift
-  set +e
-  timeout 60 "$blockdem" "$@" > "$work/out.txt" 2> "$work/err.txt"
-  local status=$?
-  set -e
-  [ $status -eq 2 ] || { cat "$work/out.txt" "$work/err.txt"; fail "exit status $status (expected 2) for: $*"; }
-  grep -qF -- "$words" "$work/err.txt" || { cat "$work/err.txt"; fail "message for: $* (expected: $words)"; }
-}
+source "$(dirname "$0")/expect_refused.sh"
 
 scenario=$work/rock.toml
 sed 's/^duration = .*/duration = 0.05/' "$source_dir/examples/paper/rocking.toml" > "$scenario"
