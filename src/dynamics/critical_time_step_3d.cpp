@@ -8,6 +8,7 @@
 
 #include "dynamics/block_pencil.hpp"
 #include "dynamics/highest_mode.hpp"
+#include "dynamics/gershgorin_rows.hpp"
 #include "dynamics/point_runs.hpp"
 #include "geometry/quaternion.hpp"
 #include "laws/linear_spring_dashpot.hpp"
@@ -131,56 +132,17 @@ struct StiffnessPoints3d {
     StiffnessPoints3d& operator=(const StiffnessPoints3d&) = delete;
 };
 
-double l1(const double* g) {
-    double sum = 0.0;
-    for (int j = 0; j < 6; ++j) sum += std::abs(g[j]);
-    return sum;
-}
 
 using Rows = std::array<double, 6>;  // x, y, z, rotation about x, y, z
 
 }  // namespace
 
-// Each body's rows summed over its own points by runs (dynamics/point_runs.hpp): in parallel, and
-// the same bits at any thread count.
 CriticalTimeStep3d stable_time_step_3d(const World3d& w, const std::vector<ContactPoint3d>& points) {
     const std::size_t n = w.bodies.size();
-    std::vector<Rows> rows_k(n, Rows{}), rows_c(n, Rows{});
     const StiffnessPoints3d stiffness(w, points);
-    const PointRuns runs(stiffness.source, n);
-    // Each run's sums for its two ends (a point's |g|_1 needs both), then each body's over its runs.
-    struct RunRows {
-        Rows k[2]{}, c[2]{};  // a's, b's
-    };
-    std::vector<RunRows> run_rows(runs.size());
-    parallel_for(static_cast<std::ptrdiff_t>(runs.size()), [&](std::ptrdiff_t r) {
-        RunRows sums;
-        const PointRuns::Run& run = runs.run(static_cast<std::size_t>(r));
-        for (std::uint32_t p = run.first; p < run.end; ++p)
-            stiffness.source.directions(p, [&](const double* ga, const double* gb, double k, double c) {
-                // Row q of a direction: k |g_q| |g|_1, g over both ends (the signs do not matter).
-                const double norm1 = l1(ga) + l1(gb);
-                for (int q = 0; q < 6; ++q) {
-                    sums.k[0][q] += k * std::abs(ga[q]) * norm1;
-                    sums.c[0][q] += c * std::abs(ga[q]) * norm1;
-                    sums.k[1][q] += k * std::abs(gb[q]) * norm1;
-                    sums.c[1][q] += c * std::abs(gb[q]) * norm1;
-                }
-            });
-        run_rows[r] = sums;
-    });
-    parallel_for(static_cast<std::ptrdiff_t>(n), [&](std::ptrdiff_t i) {
-        Rows k_rows{}, c_rows{};
-        runs.for_each_run(static_cast<std::size_t>(i), [&](const PointRuns::Entry& e) {
-            const RunRows& sums = run_rows[e.index];
-            for (int q = 0; q < 6; ++q) {
-                k_rows[q] += sums.k[e.is_b][q];
-                c_rows[q] += sums.c[e.is_b][q];
-            }
-        });
-        rows_k[i] = k_rows;
-        rows_c[i] = c_rows;
-    });
+    const GershgorinRows<6> rows = gershgorin_rows<6>(stiffness.source, PointRuns(stiffness.source, n));
+    const std::vector<Rows>& rows_k = rows.stiffness_1_s2;
+    const std::vector<Rows>& rows_c = rows.damping_1_s;
     CriticalTimeStep3d r;
     double lambda_k = 0.0, lambda_c = 0.0;
     for (std::uint32_t i = 0; i < rows_k.size(); ++i) {
