@@ -14,7 +14,8 @@
 //     and the spring k and dashpot c along it;
 //   template <class F> void end_directions(std::size_t i, bool b_end, F&& f) const;
 //     the same, f(const double* g, double k, double c), with g's entries on one end only (on b
-//     where b_end), for a pass that needs no more (half the work in 3-D).
+//     where b_end), for a pass that needs no more (half the work in 3-D); only for_each_direction
+//     asks for it.
 #include <cstddef>
 #include <cstdint>
 #include <limits>
