@@ -45,6 +45,24 @@ double positive(double value, const char* name) {
     return value;
 }
 
+/// A motion's start [s]: finite and >= 0, as the scenario's `start` key (a motion starts at rest).
+double start_time(double start_s) {
+    if (!(start_s >= 0.0) || !std::isfinite(start_s))
+        throw py::value_error(fmt::format("start must be >= 0 and finite [s], got {}: a motion starts at rest, and one "
+                                          "that started before t = 0 would have the table already moving when the run "
+                                          "begins", start_s));
+    return start_s;
+}
+
+/// A motion's amplitude [m/s^2]: finite and within the scenario's bound (io/scenario_keys.hpp).
+double amplitude(double amplitude_m_s2) {
+    if (!(std::abs(amplitude_m_s2) <= max_table_acceleration_m_s2))
+        throw py::value_error(fmt::format("amplitude {} m/s^2 is beyond the {:g} m/s^2 that any earthquake, shaking "
+                                          "table or centrifuge model asks for: check the value and its unit",
+                                          amplitude_m_s2, max_table_acceleration_m_s2));
+    return amplitude_m_s2;
+}
+
 py::array_t<double> to_array(const std::vector<double>& v) { return py::array_t<double>(static_cast<py::ssize_t>(v.size()), v.data()); }
 
 /// A table motion of one component, as the scenario's [table_motion.*] types make them.
@@ -54,7 +72,9 @@ struct Motion {
 
 Motion series_motion(const Samples& acceleration, double dt_s, double start_s) {
     positive(dt_s, "dt");
+    start_time(start_s);
     std::vector<double> a = finite_samples(acceleration, "accelerations");
+    for (const double a_m_s2 : a) amplitude(a_m_s2);
     std::vector<double> t(a.size());
     for (std::size_t k = 0; k < t.size(); ++k) t[k] = start_s + static_cast<double>(k) * dt_s;
     return {make_acceleration_series(std::move(t), std::move(a), "numpy array")};
@@ -66,26 +86,35 @@ void bind_motion(py::module_& m) {
         .def_static(
             "sine",
             [](double amplitude_m_s2, double period_s, double phase_rad, double start_s, double cycles) {
-                return Motion{SineMotion{amplitude_m_s2, positive(period_s, "period"), phase_rad, start_s, cycles}};
+                if (!(cycles >= 0.0) || !std::isfinite(cycles))
+                    throw py::value_error(fmt::format("cycles must be >= 0 and finite (0: no end), got {}", cycles));
+                if (!std::isfinite(phase_rad)) throw py::value_error(fmt::format("phase must be finite, got {}", phase_rad));
+                return Motion{SineMotion{amplitude(amplitude_m_s2), positive(period_s, "period"), phase_rad,
+                                         start_time(start_s), cycles}};
             },
             py::arg("amplitude"), py::arg("period"), py::arg("phase") = 0.0, py::arg("start") = 0.0, py::arg("cycles") = 0.0,
             "a = amplitude sin(2 pi (t - start) / period + phase) [m/s^2, s, rad]; cycles = 0: no end")
         .def_static(
             "one_sine",
             [](double amplitude_m_s2, double period_s, double start_s) {
-                return Motion{PulseMotion{PulseMotion::Shape::one_sine, amplitude_m_s2, positive(period_s, "period"), start_s}};
+                return Motion{PulseMotion{PulseMotion::Shape::one_sine, amplitude(amplitude_m_s2), positive(period_s, "period"),
+                                          start_time(start_s)}};
             },
             py::arg("amplitude"), py::arg("period"), py::arg("start") = 0.0, "One-sine pulse [m/s^2, s]")
         .def_static(
             "one_cosine",
             [](double amplitude_m_s2, double period_s, double start_s) {
-                return Motion{PulseMotion{PulseMotion::Shape::one_cosine, amplitude_m_s2, positive(period_s, "period"), start_s}};
+                return Motion{PulseMotion{PulseMotion::Shape::one_cosine, amplitude(amplitude_m_s2), positive(period_s, "period"),
+                                          start_time(start_s)}};
             },
             py::arg("amplitude"), py::arg("period"), py::arg("start") = 0.0, "One-cosine pulse [m/s^2, s]")
         .def_static(
             "ricker",
             [](double amplitude_m_s2, double peak_frequency_hz, double center_time_s) {
-                return Motion{RickerMotion{amplitude_m_s2, positive(peak_frequency_hz, "peak_frequency"), center_time_s}};
+                if (!std::isfinite(center_time_s))
+                    throw py::value_error(fmt::format("center_time must be finite [s], got {}", center_time_s));
+                return Motion{RickerMotion{amplitude(amplitude_m_s2), positive(peak_frequency_hz, "peak_frequency"),
+                                           center_time_s}};
             },
             py::arg("amplitude"), py::arg("peak_frequency"), py::arg("center_time") = 1.0, "Ricker wavelet [m/s^2, Hz, s]")
         .def_static("series", &series_motion, py::arg("accelerations"), py::arg("dt"), py::arg("start") = 0.0,

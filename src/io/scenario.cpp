@@ -419,6 +419,11 @@ namespace {
 }  // namespace
 
 // (Shared with the 3-D reader: io/scenario_keys.hpp.)
+void read_scenario_labels(TableReader& top) {
+    top.optional_string("title");
+    top.optional_string("description");
+}
+
 std::string read_body_name(TableReader& t) {
     const std::string name = t.string("name");
     // Names head CSV columns and are path segments of --set: keep them to one plain word.
@@ -491,10 +496,7 @@ double read_start(TableReader& t) {
     return start_s;
 }
 
-}  // namespace
-
-// (Shared with the 3-D reader: io/scenario_keys.hpp.)
-ComponentMotion read_component(TableReader t, const std::filesystem::path& scenario_dir) {
+ComponentMotion read_component_motion(TableReader& t, const std::filesystem::path& scenario_dir) {
     const std::string type =
         t.choice("type", {"sine", "one_sine", "one_cosine", "ricker", "csv", "series", "record", "synthetic", "none"}, "");
     ComponentMotion motion = RestMotion{};
@@ -526,6 +528,30 @@ ComponentMotion read_component(TableReader t, const std::filesystem::path& scena
         motion = m;
     }
     t.reject_unknown_keys();
+    return motion;
+}
+
+// The key that sets a component's size, for a message about it.
+std::string size_key(const TableReader& t) {
+    for (const char* key : {"amplitude", "target_pga", "scale"})
+        if (t.raw().contains(key)) return key;
+    return "type";
+}
+
+}  // namespace
+
+// (Shared with the 3-D reader: io/scenario_keys.hpp.)
+ComponentMotion read_component(TableReader t, const std::filesystem::path& scenario_dir) {
+    ComponentMotion motion = read_component_motion(t, scenario_dir);
+    const double peak_m_s2 = peak_acceleration(motion);
+    if (!std::isfinite(peak_m_s2))
+        t.fail(size_key(t), "gives a peak table acceleration beyond the range of a number in m/s^2: check the value "
+                            "and its unit");
+    if (peak_m_s2 > max_table_acceleration_m_s2)
+        t.fail(size_key(t), fmt::format("gives a peak table acceleration of {:.4g} m/s^2 ({:.4g} g), beyond the {:g} "
+                                        "m/s^2 that any earthquake, shaking table or centrifuge model asks for: "
+                                        "check the value and its unit",
+                                        peak_m_s2, peak_m_s2 / standard_gravity_m_s2, max_table_acceleration_m_s2));
     return motion;
 }
 
@@ -584,7 +610,8 @@ Model read_model(const toml::table& root, const std::string& file, const std::fi
     model.contact = read_contact(top.table("contact"), model.bodies);
     check_bonds_have_joints(top.table("contact"), model);
     if (auto motion = top.optional_table("table_motion")) model.table_motion = read_table_motion(*motion, scenario_dir);
-    top.allow({"title", "description", "output", "sensors", "dimension"});  // read by load_scenario: not physics
+    read_scenario_labels(top);
+    top.allow({"output", "sensors", "dimension"});  // read by load_scenario: not physics
     top.reject_unknown_keys();
     return model;
 }

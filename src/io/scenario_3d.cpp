@@ -436,7 +436,7 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
         s.initial_state = std::filesystem::path(*state).is_absolute() ? std::filesystem::path(*state)
                                                                       : file.parent_path() / *state;
     }
-    top.allow({"title", "description"});
+    read_scenario_labels(top);
     top.reject_unknown_keys();
     try {
         check_no_initial_overlap_3d(s.world);

@@ -18,6 +18,10 @@ namespace blockdem {
 /// output_interval, max_energy_error, max_overlap.
 void read_run_keys(TableReader& t, SimulationSettings& s);
 
+/// The scenario's `title` and `description`, which the report prints: each a string when given
+/// (title = 5 was accepted and shown as "5").
+void read_scenario_labels(TableReader& top);
+
 /// A body's `name`: one plain word (letters, digits, '_' or '-'), as it heads CSV columns and is
 /// a path segment of --set.
 std::string read_body_name(TableReader& t);
@@ -32,7 +36,8 @@ ContactParameters read_contact_parameters(TableReader& t, const ContactParameter
 std::optional<double> read_angle(TableReader& t, const std::string& base);
 
 /// One component of the table's motion (type = sine, one_sine, one_cosine, ricker, csv, series,
-/// record, synthetic or none; docs/scenario.md); file names relative to scenario_dir.
+/// record, synthetic or none; docs/scenario.md); file names relative to scenario_dir. A peak
+/// acceleration above max_table_acceleration_m_s2 (motion/table_motion.hpp) is refused at the key that sets its size.
 ComponentMotion read_component(TableReader t, const std::filesystem::path& scenario_dir);
 
 }  // namespace blockdem

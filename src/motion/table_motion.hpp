@@ -11,6 +11,12 @@
 
 namespace blockdem {
 
+/// [m/s^2] The largest peak table acceleration a motion may have: 20 times what any earthquake
+/// (the largest recorded, about 4 g), shaking table or centrifuge model (some 50 g at model scale)
+/// asks for. Beyond it is a wrong unit or a typed exponent: such a table leaves its blocks behind
+/// in the first step, and a peak that overflowed (1e308 g) was reported as a time step too large.
+inline constexpr double max_table_acceleration_m_s2 = 1.0e4;
+
 /// Kinematics of one component at one time.
 struct MotionSample {
     double displacement_m = 0.0;     ///< [m]

@@ -2,7 +2,8 @@
 # Table motions refused at the start of a run with exit status 2 and a message naming the file,
 # key or line: a start before t = 0 (2-D and 3-D), a period shorter than 4 time steps, a CSV
 # motion with negative times, a row wider than its header or its time column read as
-# acceleration, and a record value beyond the range of a number in m/s^2. Each of these ran.
+# acceleration, a record value beyond the range of a number in m/s^2, an amplitude beyond any
+# table's (1e4 m/s^2) or overflowing. Each of these ran. And a title that is not a string.
 # Also: a folder given as the file, one column named for both time and acceleration (reported
 # as times that do not increase), a binary file (its bytes were echoed).
 # Usage: test_motion_input.sh BLOCKDEM SOURCE_DIR
@@ -24,6 +25,17 @@ expect_refused "key 'table_motion.x.start': must be >= 0 [s], got -5" \
   run "$source_dir/examples/3d/drum_column.toml" "${short[@]}" --set table_motion.x.start=-5
 expect_refused "key 'table_motion.horizontal.period': the period 1e-12 s spans 5e-08 time steps of dt = 2e-05 s; it must span at least 4" \
   run "$rocking" "${short[@]}" --set table_motion.horizontal.period=1e-12
+# An amplitude beyond any table (a wrong unit, a typed exponent) or one that overflows in m/s^2:
+# the first was run with its blocks left behind, the second reported as a time step too large.
+expect_refused "key 'table_motion.horizontal.amplitude': gives a peak table acceleration of 1.961e+04 m/s^2 (2000 g), beyond the 10000 m/s^2" \
+  run "$rocking" "${short[@]}" --set table_motion.horizontal.amplitude=2000 --set 'table_motion.horizontal.unit="g"'
+expect_refused "key 'table_motion.horizontal.amplitude': gives a peak table acceleration beyond the range of a number" \
+  run "$rocking" "${short[@]}" --set table_motion.horizontal.amplitude=1e308 --set 'table_motion.horizontal.unit="g"'
+expect_refused "key 'table_motion.z.amplitude': gives a peak table acceleration of 2.942e+04 m/s^2 (3000 g)" \
+  run "$source_dir/examples/3d/drum_column.toml" "${short[@]}" --set table_motion.z.amplitude=3000
+# The title and description the report prints must be strings (title = 5 was shown as "5").
+sed 's/^title = .*/title = 5/' "$rocking" > "$work/title.toml"
+expect_refused "title.toml:7:9: key 'title': must be a string (in quotes)" check "$work/title.toml"
 
 # The rocking scenario with its sine replaced by a CSV motion (or a record) of the given keys.
 with_motion() {  # <name> <keys of [table_motion.horizontal]>

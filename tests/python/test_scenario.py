@@ -127,3 +127,23 @@ def test_motion_array_errors():
     with pytest.raises(ValueError, match="direction"):
         s.set_motion(np.zeros(10), dt=0.01, direction="sideways")
     assert "table_motion" not in s.to_dict()
+
+
+def test_motion_constructors_refuse_what_the_scenario_refuses():
+    # A motion starts at rest at start >= 0, as the scenario's `start` key; an amplitude beyond
+    # 1e4 m/s^2 is a wrong unit (io/scenario_keys.hpp), as is one that overflows.
+    with pytest.raises(ValueError, match="start must be >= 0"):
+        blockdem.Motion.sine(1.0, 0.5, start=-5.0)
+    with pytest.raises(ValueError, match="start must be >= 0"):
+        blockdem.Motion.one_sine(1.0, 0.5, start=float("nan"))
+    with pytest.raises(ValueError, match="start must be >= 0"):
+        blockdem.Motion.series(np.zeros(10), 0.01, start=-0.1)
+    with pytest.raises(ValueError, match="beyond the 10000 m/s"):
+        blockdem.Motion.one_cosine(2e4, 0.5)
+    with pytest.raises(ValueError, match="beyond the 10000 m/s"):
+        blockdem.Motion.ricker(float("inf"), 2.0)
+    with pytest.raises(ValueError, match="beyond the 10000 m/s"):
+        blockdem.Motion.series(np.array([0.0, 3e4, 0.0]), 0.01)
+    with pytest.raises(ValueError, match="cycles"):
+        blockdem.Motion.sine(1.0, 0.5, cycles=-1.0)
+    assert blockdem.Motion.sine(9.81, 0.5, start=0.2, cycles=2.0).sample(0.2)["acceleration"] == 0.0
