@@ -74,8 +74,12 @@ void write_output_file(const std::filesystem::path& file, std::string_view text)
         out.append(text);
         out.close();
     } catch (const OutputError&) {
+        // Half a JSON or VTK file is worse than none; but only a plain file is removed: a device
+        // (--json /dev/full) or a pipe named as the output is the user's, and removing /dev/full,
+        // as root, left a plain file in its place for every later writer.
         std::error_code ignored;
-        std::filesystem::remove(file, ignored);  // half a JSON or VTK file is worse than none
+        if (std::filesystem::is_regular_file(std::filesystem::status(file, ignored)))
+            std::filesystem::remove(file, ignored);
         throw;
     }
 }

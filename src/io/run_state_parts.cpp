@@ -57,6 +57,7 @@ constexpr FlagField flag_fields[] = {
     {"touches_a_supporter", &BodyResponse::touches_a_supporter},
     {"at_rest", &BodyResponse::at_rest},
     {"touched_a_body", &BodyResponse::touched_a_body, true},
+    {"rested_on_ground", &BodyResponse::rested_on_ground, true},
 };
 
 }  // namespace

@@ -419,6 +419,15 @@ namespace {
 }  // namespace
 
 // (Shared with the 3-D reader: io/scenario_keys.hpp.)
+void check_some_body_moves(const std::string& file, std::size_t dynamic_bodies, std::size_t fixed_bodies,
+                           std::size_t driven_bodies) {
+    if (dynamic_bodies > 0) return;
+    throw InputError({file, "", 0, 0},
+                     fmt::format("the model has no dynamic body ({} fixed, {} driven), so nothing would move: give a "
+                                 "body kind = \"dynamic\" (the default), or check an assembly's `fixed` key",
+                                 fixed_bodies, driven_bodies));
+}
+
 void read_scenario_labels(TableReader& top) {
     top.optional_string("title");
     top.optional_string("description");
@@ -643,6 +652,12 @@ LoadedScenario load_scenario(toml::table root, const std::filesystem::path& file
                                                                       : file.parent_path() / *state;
     }
     if (!settle) s.model.settling.reset();
+    const auto count_kind = [&](BodyKind kind) {
+        return static_cast<std::size_t>(std::count_if(s.model.bodies.begin(), s.model.bodies.end(),
+                                                      [&](const BodyDef& b) { return b.kind == kind; }));
+    };
+    check_some_body_moves(file.string(), count_kind(BodyKind::dynamic), count_kind(BodyKind::fixed),
+                          count_kind(BodyKind::driven));
     try {
         s.world = build_world(s.model, stop_requested);
     } catch (const ModelError& e) {

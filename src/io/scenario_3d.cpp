@@ -421,6 +421,11 @@ LoadedScenario3d load_scenario_3d(toml::table root, const std::filesystem::path&
     s.max_energy_error = settings.max_energy_error;
     s.max_overlap_ratio = settings.max_overlap_ratio;
     s.world = build_world_3d(top, file, file.parent_path(), s.assembly_notes);
+    const auto count_kind = [&](BodyKind3d kind) {
+        return static_cast<std::size_t>(std::count(s.world.kinds.begin(), s.world.kinds.end(), kind));
+    };
+    check_some_body_moves(file.string(), count_kind(BodyKind3d::dynamic), count_kind(BodyKind3d::fixed),
+                          count_kind(BodyKind3d::driven));
     s.world.gravity_m_s2 = settings.gravity_m_s2;
     s.world.duration_s = settings.duration_s;
     s.world.output_interval_s = settings.output_interval_s;

@@ -22,6 +22,11 @@ void read_run_keys(TableReader& t, SimulationSettings& s);
 /// (title = 5 was accepted and shown as "5").
 void read_scenario_labels(TableReader& top);
 
+/// Refuses a model without a dynamic body (every body fixed or driven: nothing would move, and a
+/// run of it reported nothing), naming the file and the counts.
+void check_some_body_moves(const std::string& file, std::size_t dynamic_bodies, std::size_t fixed_bodies,
+                           std::size_t driven_bodies);
+
 /// A body's `name`: one plain word (letters, digits, '_' or '-'), as it heads CSV columns and is
 /// a path segment of --set.
 std::string read_body_name(TableReader& t);

@@ -315,6 +315,7 @@ constexpr Flag3dField flag_3d_fields[] = {
     {"at_rest", &BodyResponse3d::at_rest},
     {"slid_on_support", &BodyResponse3d::slid_on_support},
     {"touched_a_body", &BodyResponse3d::touched_a_body, true},
+    {"rested_on_ground", &BodyResponse3d::rested_on_ground, true},
 };
 
 }  // namespace

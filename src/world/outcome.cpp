@@ -77,17 +77,33 @@ std::vector<std::string> untouched_body_warnings(const std::vector<BodyRecord>& 
     // Named one by one up to a few, then counted (a packing poured from above has thousands).
     constexpr std::size_t named_at_most = 10;
     std::vector<std::string> warnings;
-    std::size_t untouched = 0;
-    for (std::size_t i = 0; i < records.size(); ++i) {
-        if (!records[i].dynamic || records[i].touched_a_body || records[i].left_model) continue;
-        if (++untouched <= named_at_most)
-            warnings.push_back(fmt::format(
-                "body '{}' touched no other body in the run's {:g} s: it was in free flight from the start, so its outcome "
-                "says nothing of its stability; check its position (blockdem check lists the bodies touching nothing at the start)",
-                names[i], duration_s));
-    }
-    if (untouched > named_at_most)
-        warnings.push_back(fmt::format("... and {} more bodies touched no other body in the run", untouched - named_at_most));
+    const auto name_each = [&](auto is_one, auto warning, const char* more) {
+        std::size_t count = 0;
+        for (std::size_t i = 0; i < records.size(); ++i) {
+            if (!records[i].dynamic || records[i].left_model || !is_one(records[i])) continue;
+            if (++count <= named_at_most) warnings.push_back(warning(names[i]));
+        }
+        if (count > named_at_most) warnings.push_back(fmt::format("... and {} more bodies {} in the run", count - named_at_most, more));
+    };
+    name_each([](const BodyRecord& r) { return !r.touched_a_body; },
+              [&](const std::string& name) {
+                  return fmt::format(
+                      "body '{}' touched no other body in the run's {:g} s: it was in free flight (from the start, or "
+                      "until the run ended before the weight of the bodies below reached it), so its outcome says "
+                      "nothing of its stability; check its position (blockdem check lists the bodies touching nothing "
+                      "at the start)",
+                      name, duration_s);
+              },
+              "touched no other body");
+    name_each([](const BodyRecord& r) { return r.touched_a_body && !r.rested_on_ground; },
+              [&](const std::string& name) {
+                  return fmt::format(
+                      "body '{}' touched other bodies but never rested, directly or through them, on a fixed or driven "
+                      "body in the run's {:g} s: it was in free flight with them, so its outcome says nothing of its "
+                      "stability; check the group's position",
+                      name, duration_s);
+              },
+              "rested on no fixed or driven body");
     return warnings;
 }
 

@@ -69,6 +69,7 @@ struct BodyRecord {
     Vec2 final_position_m;                   ///< [m] centroid at the end
     bool at_rest = true;                     ///< slower than rest_speed at the end
     bool touched_a_body = true;              ///< met another body (any contact) at some step of the run
+    bool rested_on_ground = true;            ///< touched a fixed or driven body, or one that had, at some step
     bool left_model = false;
     double left_model_time_s = -1.0;         ///< [s]
     Vec2 left_model_position_m;              ///< [m] centroid when it left
@@ -86,9 +87,24 @@ struct ClassifiedOutcome {
 
 /// A warning for each dynamic body that touched no other body during the whole run (names[i]:
 /// body i's name): it was in free flight from the start, so its outcome, stable with nothing to
-/// stand on, says nothing of its stability. Both dimensions.
+/// stand on, says nothing of its stability. Then one for each that touched bodies but never,
+/// through them, a fixed or driven body: a group in free flight together (a stack placed beside
+/// the table), whose lowest member was reported stable after falling with the others. Both
+/// dimensions.
 std::vector<std::string> untouched_body_warnings(const std::vector<BodyRecord>& records, const std::vector<std::string>& names,
                                                  double duration_s);
+
+/// A contact between two bodies' responses passes the ground on (a_is_ground, b_is_ground: the
+/// body is fixed or driven): one that rests on the ground, or on a body that did, rests on it.
+/// Noted at every contact of every observed step in the table's order, a stack on the table is
+/// found grounded from its bottom up, at least a body a step.
+template <class Response>
+void note_ground(Response& a, Response& b, bool a_is_ground, bool b_is_ground) {
+    const bool a_grounded = a_is_ground || a.rested_on_ground;
+    const bool b_grounded = b_is_ground || b.rested_on_ground;
+    a.rested_on_ground = a.rested_on_ground || b_grounded;
+    b.rested_on_ground = b.rested_on_ground || a_grounded;
+}
 
 /// One outcome per record (index = body id). Records of bodies that are not dynamic get stable.
 std::vector<ClassifiedOutcome> classify_outcomes(const std::vector<BodyRecord>& records, const OutcomeThresholds& thresholds);

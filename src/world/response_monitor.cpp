@@ -141,6 +141,7 @@ void ResponseMonitor::note_contacts(const World& w) {
     for (const PairContact& pair : w.contacts) {
         if (pair.count == 0) continue;
         responses_[pair.a].touched_a_body = responses_[pair.b].touched_a_body = true;
+        note_ground(responses_[pair.a], responses_[pair.b], b.kind[pair.a] != BodyKind::dynamic, b.kind[pair.b] != BodyKind::dynamic);
         if (gathering) {
             // The normal points from a to b: upwards means a is below b and holds it up. The
             // first supporter found is the body whose interface judges sliding and rocking.
@@ -269,6 +270,7 @@ std::vector<BodyRecord> ResponseMonitor::records(const World& w) const {
         o.final_position_m = b.position_m[i];
         o.at_rest = r.at_rest;
         o.touched_a_body = r.touched_a_body;
+        o.rested_on_ground = r.rested_on_ground;
     }
     for (const BodyLeftModel& left : w.domain.left) {
         BodyRecord& o = out[left.body];

@@ -70,6 +70,9 @@ struct BodyResponse {
     double drop_time_s = -1.0;           ///< [s] first time its centroid was fall_drop_ratio x height below its start
     bool at_rest = true;                 ///< now
     bool touched_a_body = false;         ///< met another body (any contact) at some step
+    /// Rested at some step on a fixed or driven body, or on a body that had (a chain of contacts
+    /// to the ground, found as the contacts are noted: ResponseMonitor::note_contacts).
+    bool rested_on_ground = false;
 
     bool overturned() const { return beyond_alpha; }
     /// Rocked: it rotated on the body below it by the rocking threshold.

@@ -152,6 +152,7 @@ void ResponseMonitor3d::note_contacts(const World3d& w) {
     for (const ContactPoint3d& p : w.contacts) {
         const std::uint32_t a = p.key.body_a, b = p.key.body_b;
         bodies_[a].touched_a_body = bodies_[b].touched_a_body = true;
+        note_ground(bodies_[a], bodies_[b], w.kinds[a] != BodyKind3d::dynamic, w.kinds[b] != BodyKind3d::dynamic);
         // The normal points from a to b: upwards means a is below b and holds it up.
         const bool b_on_a = p.normal.z > supporting_normal_z, a_on_b = p.normal.z < -supporting_normal_z;
         if (gathering) {
@@ -259,6 +260,7 @@ std::vector<BodyRecord> ResponseMonitor3d::records(const World3d& w) const {
         o.final_position_m = {at.x, at.y};
         o.at_rest = r.at_rest;
         o.touched_a_body = r.touched_a_body;
+        o.rested_on_ground = r.rested_on_ground;
     }
     for (const BodyLeftModel3d& left : w.domain.left) {
         BodyRecord& o = out[left.body];

@@ -54,6 +54,9 @@ struct BodyResponse3d {
     double drop_time_s = -1.0;           ///< [s] first time its drop passed fall_drop_ratio x height
     bool at_rest = true;                 ///< slower than rest_speed now
     bool touched_a_body = false;         ///< met another body (any contact) at some step
+    /// Rested at some step on a fixed or driven body, or on a body that had (a chain of contacts
+    /// to the ground, found as the contacts are noted: ResponseMonitor3d::note_contacts).
+    bool rested_on_ground = false;
 };
 
 /// The turn of body i since t = 0 (world frame: q(t) q(0)*).

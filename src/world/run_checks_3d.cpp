@@ -16,9 +16,8 @@ namespace blockdem {
 void check_energy_balance_3d(const World3d& w, double max_error, double start_limit_s) {
     const double error = w.ledger.balance_error();
     if (w.steps <= 10 || w.ledger.scale_j() <= 1e-9 || !(error > max_error || std::isnan(error))) return;
-    std::size_t fastest = 0;
-    for (std::size_t i = 1; i < w.bodies.size(); ++i)
-        if (length(w.bodies[i].velocity_at_t_m_s) > length(w.bodies[fastest].velocity_at_t_m_s)) fastest = i;
+    const std::size_t fastest =
+        fastest_body(w.bodies.size(), [&](std::size_t i) { return length(w.bodies[i].velocity_at_t_m_s); });
     const CriticalTimeStep3d live = live_time_step_3d(w);
     const double ratio = w.stability.limit_ratio > 0.0 ? w.stability.limit_ratio : 1.0;
     const StabilityWatch3d& watch = w.stability;

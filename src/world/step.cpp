@@ -373,9 +373,7 @@ void check_stability(const World& w, bool state_finite) {
     const double error = w.energy.balance_error();
     // (The first steps are skipped: every term is still near zero and their ratio means little.)
     if (w.step_index > 10 && w.energy.scale_j() > 1e-9 && error > w.settings.max_energy_error) {
-        std::size_t fastest = 0;
-        for (std::size_t i = 1; i < b.size(); ++i)
-            if (length(b.velocity_m_s[i]) > length(b.velocity_m_s[fastest])) fastest = i;
+        const std::size_t fastest = fastest_body(b.size(), [&](std::size_t i) { return length(b.velocity_m_s[i]); });
         throw SimulationError(fmt::format(
             "unstable: energy balance error {:.3g} (of the largest term, {:.4g} J) exceeds {:g} at t = {:.6g} s "
             "(step {}); fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s; stable limit {:.4g} s at the start{})",

@@ -39,6 +39,11 @@ run_bad() {  # expected text, --set value
 run_bad "key 'outcomes.fall_drop_ratio': must be >= 0" "outcomes.fall_drop_ratio=-1"
 run_bad "key 'outcomes.rest_speed': must be a number" 'outcomes.rest_speed="fast"'
 run_bad "key 'simulation.domain': [[-1, 0], [1, 5]] m does not contain body 'table'" "simulation.domain=[[-1, 0], [1, 5]]"
+# Every body fixed or driven: nothing would move, and such a run reported nothing; refused.
+msg=$("$bin" run "$scene" --out "$tmp/still" -q --set 'bodies.upper.kind="fixed"' --set 'bodies.lower.kind="driven"' 2>&1)
+rc=$?
+[ $rc -eq 2 ] || fail "nothing to move: exit $rc, expected 2 ($msg)"
+expect_in "$msg" "knocked_off.toml: the model has no dynamic body (2 fixed, 1 driven), so nothing would move"
 
 [ $failures -eq 0 ] && echo "all outcome checks passed"
 exit $failures

@@ -13,6 +13,7 @@
 #   overturned: the slender block of test_run_3d.sh (0.2 x 0.2 x 1 m, 0.6 g one-sine pulse);
 #   the collapse by assembly: a slender and a squat drum column on one table (below);
 # [outcomes] thresholds are read in 3-D (a large rocking_ratio makes the rocking box "stable").
+# A column in free fall beside the table is warned of; a model with nothing to move is refused.
 # Usage: test_outcomes_3d.sh BLOCKDEM
 set -u
 bin=$1
@@ -322,6 +323,54 @@ import json
 a, b = (json.load(open(f'$tmp/{d}/summary.json'))['collapse'] for d in ('columns', 'columns_restart'))
 assert a == b, (a, b)
 " || fail "the collapse groups after a restart differ"
+
+# A two-drum column placed beside the table (nothing under it) falls for 0.3 s: the drums touch
+# each other, never the ground, and the lower one was reported stable after falling 0.44 m.
+# Both are named in the summary's warnings and on the console.
+cat > "$tmp/beside.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 0.3
+[contact]
+kn = 1e8
+ks = 1e8
+mu = 0.6
+e = 0.3
+$table
+[[assemblies]]
+name = "d"
+type = "drum_column"
+radius = 0.3
+height = 0.5
+base = [50.0, 0.0, 0.0]
+density = 2700.0
+drums = 2
+TOML
+"$bin" run "$tmp/beside.toml" --out "$tmp/beside" >"$tmp/beside.txt" 2>&1 || fail "a column beside the table: $(cat "$tmp/beside.txt")"
+/usr/bin/python3 - "$tmp/beside/summary.json" <<'PY' || fail "the warnings of a column in free fall"
+import json, sys
+w = json.load(open(sys.argv[1]))["warnings"]
+falling = [x for x in w if "touched other bodies but never rested, directly or through them, on a fixed or driven body" in x]
+assert len(falling) == 2 and "'d_1'" in falling[0] and "'d_2'" in falling[1], w
+PY
+grep -q "body 'd_1' touched other bodies but never rested" "$tmp/beside.txt" || fail "the console's warning: $(cat "$tmp/beside.txt")"
+
+# A model where nothing moves (a rock mass whose blocks are all ground) is refused by name.
+cat > "$tmp/still.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 0.01
+dt = 1e-4
+[contact]
+kn = 1e8
+ks = 1e8
+mu = 0.8
+e = 0.2
+$table
+TOML
+"$bin" run "$tmp/still.toml" --out "$tmp/still" -q >"$tmp/still.txt" 2>&1
+[[ $? -eq 2 ]] && grep -qF "still.toml: the model has no dynamic body (0 fixed, 1 driven), so nothing would move" "$tmp/still.txt" \
+    || fail "a model with nothing to move: $(cat "$tmp/still.txt")"
 
 [[ $failures -eq 0 ]] && echo "all 3-D outcome checks passed"
 exit $((failures > 0))

@@ -88,6 +88,18 @@ TEST(OutputFile, WholeFileThatFailsIsRemoved) {
     fs::remove(file);
 }
 
+TEST(OutputFile, AFailedWriteToADeviceLeavesTheDevice) {
+    // `limit --json /dev/full` removed /dev/full (run as root), and every later writer made a plain
+    // file there. A link to it stands for it here, so that the test cannot harm the machine.
+    const fs::path link = temporary("full_link");
+    fs::remove(link);
+    fs::create_symlink("/dev/full", link);
+    EXPECT_THROW(write_output_file(link, "{}\n"), OutputError);
+    EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+    fs::remove(link);
+}
+
 TEST(OutputFile, CannotCreateNamesTheFile) {
     try {
         OutputFile out("/nonexistent-folder/history.csv");

@@ -58,6 +58,39 @@ TEST(ResponseMonitor, ABlockTouchingNothingIsNamedInAWarning) {
     }
 }
 
+TEST(ResponseMonitor, AStackRestingOnNothingFixedIsNamedInAWarning) {
+    // Two blocks stacked beside the table (x = 10 m) fall together for 0.3 s: they touch each
+    // other, not the ground, and the lower one was reported stable after falling 0.44 m. Stacked
+    // on the table, the same two rest on it through the lower one: no warning.
+    for (const double x_m : {10.0, 0.0}) {
+        Model m = testing::model_with({testing::rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0, -0.1}),
+                                       testing::rectangle_body("lower", BodyKind::dynamic, 0.4, 0.4, {x_m, 0.2}, 0.0, 2000.0),
+                                       testing::rectangle_body("upper", BodyKind::dynamic, 0.4, 0.4, {x_m, 0.6}, 0.0, 2000.0)},
+                                      testing::contact(1e8, 0.6, 0.3, 1.0), 2e-5, 9.81, 0.3);
+        World w = build_world(m);
+        ResponseMonitor monitor(w);
+        while (w.time_s < 0.3) {
+            step_begin(w);
+            monitor.observe(w);
+            step_end(w);
+        }
+        const std::vector<BodyRecord> records = monitor.records(w);
+        const std::vector<std::string> warnings = untouched_body_warnings(records, w.bodies.name, w.time_s);
+        if (x_m > 0.0) {
+            ASSERT_TRUE(records[1].touched_a_body && records[2].touched_a_body);
+            ASSERT_EQ(warnings.size(), 2u);
+            EXPECT_NE(warnings[0].find("body 'lower' touched other bodies but never rested, directly or through them, on a "
+                                       "fixed or driven body in the run's"),
+                      std::string::npos)
+                << warnings[0];
+            EXPECT_NE(warnings[1].find("body 'upper' touched other bodies"), std::string::npos) << warnings[1];
+        } else {
+            EXPECT_TRUE(records[1].rested_on_ground && records[2].rested_on_ground);
+            EXPECT_TRUE(warnings.empty()) << warnings[0];
+        }
+    }
+}
+
 TEST(ResponseMonitor, LevelBlockCriticalAngles) {
     Model m = testing::model_with({testing::rectangle_body("table", BodyKind::fixed, 4.0, 0.2, {0, -0.1}),
                                    testing::rectangle_body("block", BodyKind::dynamic, 2 * b, 2 * h, {0.0, h}, 0.0, 1536.0)},
