@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "dynamics/critical_time_step.hpp"
 #include "dynamics/highest_mode.hpp"
@@ -221,6 +222,21 @@ TEST(Penetration, StiffContactsRecordTheirDeepestOverlap) {
     // At rest each corner carries m g / 2: overlap 2.45e-4 m of the 0.2 m least width.
     EXPECT_NEAR(w.stability.max_overlap_m, 9.81 / 2.0 / 2e4, 0.5 * 9.81 / 2.0 / 2e4);
     EXPECT_NEAR(w.stability.max_overlap_ratio, w.stability.max_overlap_m / 0.2, 1e-12);
+}
+
+// The body an unstable run's message names: the fastest, and one whose speed is not finite
+// before any (the one that blew up): compared as numbers, an inf or nan speed lost to the
+// table's 9e-6 m/s and the message named the table.
+TEST(UnstableRunMessage, NamesTheBodyWhoseSpeedIsNotFinite) {
+    const double nan = std::nan("");
+    const double inf = HUGE_VAL;
+    const auto fastest = [](std::vector<double> speeds_m_s) {
+        return fastest_body(speeds_m_s.size(), [&](std::size_t i) { return speeds_m_s[i]; });
+    };
+    EXPECT_EQ(fastest({9e-6, 0.5, 0.2}), 1u);
+    EXPECT_EQ(fastest({9e-6, nan, 0.2}), 1u);
+    EXPECT_EQ(fastest({9e-6, 0.2, inf}), 2u);
+    EXPECT_EQ(fastest({nan, 0.2, inf}), 0u);  // the first that blew up
 }
 
 }  // namespace
