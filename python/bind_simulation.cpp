@@ -289,8 +289,9 @@ void bind_simulation(py::module_& m) {
              "The energy balance at t [J] and its relative error.")
         .def("history", [](Simulation& s) { return history_dict(s.scenario_run()); },
              "The output rows so far as numpy arrays (rows x recorded bodies), without CSV.")
-        .def("summary", [](Simulation& s) { return json_to_python(s.scenario_run().summary("running")); },
-             "The summary of the state now (as summary.json, nothing written).");
+        .def("summary", [](Simulation& s) { return json_to_python(s.scenario_run().summary(s.scenario_run().status())); },
+             "The summary of the state now (as summary.json, nothing written), its status \"running\" until the "
+             "run ends, then \"completed\", \"interrupted\" or \"failed\" as finish() says.");
 }
 
 }  // namespace blockdem::python

@@ -23,6 +23,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "io/input_error.hpp"
+#include "io/scenario_3d.hpp"
 #include "python/bindings.hpp"
 #include "python/run_arrays.hpp"
 #include "python/scenario_source.hpp"
@@ -37,6 +39,17 @@ namespace fs = std::filesystem;
 namespace blockdem::python {
 namespace {
 
+// A 2-D scenario is refused by name, as Simulation refuses a 3-D one (the 3-D reader would
+// call its 2-D keys unknown).
+void refuse_2d(const toml::table& root, const std::string& file) {
+    if (scenario_dimension(root, file) == 3) return;
+    const toml::node* d = root.get("dimension");
+    const std::string what = d ? "is 2" : "is not given, so the scenario is 2-D";
+    throw InputError({file, "dimension", d ? static_cast<int>(d->source().begin.line) : 0, 0},
+                     what + ": a 2-D scenario runs in blockdem.Simulation (the same step, t, positions, summary); "
+                            "a 3-D one has dimension = 3");
+}
+
 class Simulation3d {
 public:
     Simulation3d(const ScenarioSource& scenario, int threads, std::optional<fs::path> out_dir, bool force, bool history,
@@ -45,6 +58,7 @@ public:
         RunRequest request = simulation_request(threads, out_dir, force, save_state_s, save_state_every_s);
         request.scenario = scenario.file;
         toml::table root = scenario.parse();
+        refuse_2d(root, scenario.file.string());
         run_ = build_watching_signals(threads, settling_stop_, [&](const std::atomic<bool>* stop) {
             request.stop_requested = stop;
             return std::make_unique<ScenarioRun3d>(request, std::move(root), history);
@@ -273,8 +287,9 @@ void bind_simulation_3d(py::module_& m) {
             "force that held it.")
         .def("energy", [](Simulation3d& s) { return energy_dict(s.run().world().ledger); },
              "The energy balance at t [J] and its relative error.")
-        .def("summary", [](Simulation3d& s) { return json_to_python(s.run().summary("running")); },
-             "The summary of the state now (as summary.json, nothing written).");
+        .def("summary", [](Simulation3d& s) { return json_to_python(s.run().summary(s.run().status())); },
+             "The summary of the state now (as summary.json, nothing written), its status \"running\" until the "
+             "run ends, then \"completed\", \"interrupted\" or \"failed\" as finish() says.");
 }
 
 }  // namespace blockdem::python

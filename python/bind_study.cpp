@@ -13,11 +13,13 @@
 #include <thread>
 #include <vector>
 
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include "python/bindings.hpp"
 #include "python/scenario_source.hpp"
+#include "run/run_request.hpp"
 #include "sweep/case_queue.hpp"
 #include "sweep/case_runner.hpp"
 #include "sweep/results_table.hpp"
@@ -103,6 +105,8 @@ void bind_study(py::module_& m) {
                 }
                 plan.suite.common_keys = assignments(record_keys);
             }
+            if (threads < 0 || threads > max_threads)
+                throw py::value_error(fmt::format("threads must be 0 (all cores) or 1 to {}, got {}", max_threads, threads));
             sweep::CaseOptions options;
             options.solver = parse_solver(solver);
             options.stop_when_overturned = stop_when_overturned;

@@ -13,7 +13,9 @@ namespace blockdem::python {
 RunRequest simulation_request(int threads, const std::optional<std::filesystem::path>& out_dir, bool force,
                               const std::vector<double>& save_state_s, std::optional<double> save_state_every_s,
                               bool restart) {
-    if (threads < 1) throw py::value_error(fmt::format("threads must be 1 or more, got {}", threads));
+    // (As the CLI's --threads: 1e9 threads ran out of memory, MemoryError, instead.)
+    if (threads < 1 || threads > max_threads)
+        throw py::value_error(fmt::format("threads must be 1 to {}, got {}", max_threads, threads));
     // State files belong to a run's folder: their restart continues its files.
     if (!out_dir && !restart && (!save_state_s.empty() || save_state_every_s))
         throw py::value_error("save_state and save_state_every write state files into the run's folder: give out_dir too");

@@ -30,7 +30,8 @@ struct BrickPlacement3d {
 
 /// The bricks in running bond (odd courses shifted by half a brick and one brick shorter, so that
 /// none overhangs the one below), course by course: shared by the scene and the scenario's
-/// brick_wall assembly (io/scenario_3d.cpp).
+/// brick_wall assembly (io/scenario_3d.cpp, which refuses bricks_per_course = 1 with more than
+/// one course: its odd courses would be empty).
 std::vector<BrickPlacement3d> running_bond_3d(int courses, int bricks_per_course, int wythes, Vec3 brick_m);
 
 /// The wall, every brick placed touching its neighbours; body 0 is the driven slab.

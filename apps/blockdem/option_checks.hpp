@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "run/run_request.hpp"
+
 namespace blockdem::cli {
 
 namespace detail {
@@ -55,8 +57,8 @@ inline CLI::Validator finite_in(double lo, double hi) {
         fmt::format("NUMBER in [{:g} - {:g}]", lo, hi));
 }
 
-/// The most threads --threads takes, and the most copies converge --ensemble runs.
-inline constexpr long long max_threads = 4096;
+/// The most copies converge --ensemble runs. (The most threads, max_threads, is the library's:
+/// run/run_request.hpp, shared with the Python module.)
 inline constexpr long long max_ensemble = 1000;
 
 /// A whole number from lo to hi; why_most says what the upper bound is for.

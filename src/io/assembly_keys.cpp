@@ -1,5 +1,6 @@
 #include "io/assembly_keys.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -43,6 +44,25 @@ std::vector<scenes::Polygon> read_column(TableReader& t) {
     return scenes::block_column(sizes, base);
 }
 
+// With stepped ends the odd courses are one piece a brick shorter than the wall: a wall not
+// longer than a brick would leave them empty (the courses above floating), and a piece below
+// min_piece_fraction of a brick has no neighbour to join.
+void check_stepped_courses(TableReader& t, const scenes::WallSpec& w) {
+    if (!w.stepped_ends || w.courses < 2) return;
+    const double odd_length_m = w.length_m - w.brick_length_m;
+    const double least_piece_m = std::max(w.min_piece_fraction, 0.0) * w.brick_length_m;
+    if (!(odd_length_m > 0.0))
+        t.fail("stepped_ends", fmt::format("is true with a length of {:g} m, not more than brick_length {:g} m: the odd courses, "
+                                           "half a brick shorter at each end, would hold no brick and the courses above "
+                                           "would float; give a longer wall, or stepped_ends = false (half bricks at the ends)",
+                                           w.length_m, w.brick_length_m));
+    if (odd_length_m < least_piece_m - 1e-9 * w.brick_length_m)  // (the joints' tolerance, scenes/masonry.cpp)
+        t.fail("stepped_ends", fmt::format("is true with a length of {:g} m: the odd courses, half a brick shorter at each end, "
+                                           "would be one piece {:g} m long, less than min_piece_fraction x brick_length = {:g} m; "
+                                           "give a length of at least {:g} m, or stepped_ends = false (half bricks at the ends)",
+                                           w.length_m, odd_length_m, least_piece_m, w.brick_length_m + least_piece_m));
+}
+
 std::vector<scenes::Polygon> read_wall(TableReader& t) {
     scenes::WallSpec w;
     w.origin_m = t.optional_vec2("origin").value_or(Vec2{});
@@ -52,6 +72,7 @@ std::vector<scenes::Polygon> read_wall(TableReader& t) {
     w.brick_height_m = t.optional_positive("brick_height").value_or(w.brick_height_m);
     w.stepped_ends = t.boolean_or("stepped_ends", false);
     w.min_piece_fraction = t.number_or("min_piece_fraction", w.min_piece_fraction);
+    check_stepped_courses(t, w);
     for (TableReader o : t.table_array("openings")) {
         scenes::WallOpening opening{o.number("x"), o.number("y"), o.positive("width"), o.positive("height"),
                                     o.number_or("lintel_bearing", 0.0)};

@@ -27,6 +27,29 @@ bool segments_meet(Vec2 p1, Vec2 p2, Vec2 q1, Vec2 q2) {
            (d4 == 0.0 && within(p1, p2, q2));
 }
 
+// No area, relative to the square of the outline's size, so that the test does not depend on
+// the drawing's units.
+constexpr double area_tolerance = 1e-12;
+
+// The diagonal of the outline's bounding box.
+double outline_size(const std::vector<Vec2>& v) {
+    Vec2 lo = v[0], hi = v[0];
+    for (const Vec2& p : v) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    }
+    return length(hi - lo);
+}
+
+// Whether every corner lies on the line through the first corner and the corner farthest from
+// it (the triangle each makes with them has no area).
+bool on_one_line(const std::vector<Vec2>& v, double size) {
+    const Vec2 far = *std::max_element(v.begin(), v.end(), [&](Vec2 p, Vec2 q) { return length(p - v[0]) < length(q - v[0]); });
+    return std::all_of(v.begin(), v.end(), [&](Vec2 p) {
+        return !(std::abs(orientation(v[0], far, p)) > area_tolerance * size * size);
+    });
+}
+
 std::string point_text(Vec2 p, const std::string& unit) { return fmt::format("({:.10g}, {:.10g}) {}", p.x, p.y, unit); }
 
 }  // namespace
@@ -42,16 +65,11 @@ std::optional<std::string> drawn_outline_problem(const std::vector<Vec2>& v, con
     if (n < 3) return fmt::format("has {} distinct corner{}: a block needs at least 3", n, n == 1 ? "" : "s");
     if (n > max_outline_vertices)
         return fmt::format("has {} corners, more than the {} a block may have", n, max_outline_vertices);
-    // No area: relative to the square of the outline's size, so that the test does not depend
-    // on the drawing's units.
-    Vec2 lo = v[0], hi = v[0];
-    for (const Vec2& p : v) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    }
-    const double size = length(hi - lo);
-    if (!(std::abs(signed_area(v)) > 1e-12 * size * size))
-        return "has no area (its corners lie on one line)";
+    // Checked in this order so that each outline gets the message of what is wrong with it: a
+    // self-crossing outline can have no net area (a symmetric bow tie), and corners on one
+    // line fold back on themselves.
+    const double size = outline_size(v);
+    if (on_one_line(v, size)) return "has no area (its corners lie on one line)";
     for (std::size_t i = 0; i < n; ++i) {
         const Vec2 a = v[i], b = v[(i + 1) % n], c = v[(i + 2) % n];
         if (orientation(a, b, c) == 0.0 && dot(b - a, c - b) < 0.0)
@@ -65,6 +83,8 @@ std::optional<std::string> drawn_outline_problem(const std::vector<Vec2>& v, con
                                    "outline must be a simple polygon)",
                                    i, point_text(v[i], unit), j, point_text(v[j], unit));
         }
+    // A simple polygon off one line has an area; this catches a sliver rounding leaves of one.
+    if (!(std::abs(signed_area(v)) > area_tolerance * size * size)) return "has no area (its corners lie almost on one line)";
     return std::nullopt;
 }
 

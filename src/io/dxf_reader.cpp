@@ -1,6 +1,7 @@
 #include "io/dxf_reader.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <sstream>
 #include <string_view>
 
@@ -38,8 +39,70 @@ std::string count_problem(const std::string& entity, int code, std::string_view 
                        std::string(value.substr(0, 40)));
 }
 
+// What the DXF reference says a group code's value is: group codes 10-59, 110-149, 210-239,
+// 460-469 and 1010-1059 hold reals; 60-79, 90-99, 160-179, 270-299, 370-389, 400-409, 420-429,
+// 440-459 and 1060-1071 whole numbers (290-299 booleans 0/1); the others text or handles.
+enum class GroupValue { text, real, whole };
+
+GroupValue group_value(int code) {
+    const auto in = [code](int lo, int hi) { return code >= lo && code <= hi; };
+    if (in(10, 59) || in(110, 149) || in(210, 239) || in(460, 469) || in(1010, 1059)) return GroupValue::real;
+    if (in(60, 79) || in(90, 99) || in(160, 179) || in(270, 299) || in(370, 389) || in(400, 409) || in(420, 429) ||
+        in(440, 459) || in(1060, 1071))
+        return GroupValue::whole;
+    return GroupValue::text;
+}
+
+// Why value is not what its group code holds, or "" when it is: all of it a finite number (a
+// whole one where the code says). dxflib reads numbers with atof-like calls, which take "4x0"
+// as 4, "1e999" as infinity and "nan" as a NaN that drops the vertex: a corrupt coordinate
+// would silently move or remove a corner.
+std::string number_problem(int code, std::string_view value) {
+    const GroupValue kind = group_value(code);
+    if (kind == GroupValue::text) return "";
+    const std::string_view digits = !value.empty() && value.front() == '+' ? value.substr(1) : value;  // from_chars takes no '+'
+    const char* first = digits.data();
+    const char* last = digits.data() + digits.size();
+    if (kind == GroupValue::whole) {
+        long long n = 0;
+        const auto [end, error] = std::from_chars(first, last, n);
+        return !digits.empty() && error == std::errc{} && end == last ? "" : "not a whole number";
+    }
+    double x = 0.0;
+    const auto [end, error] = std::from_chars(first, last, x);
+    if (digits.empty() || end != last || (error != std::errc{} && error != std::errc::result_out_of_range)) return "not a number";
+    return error == std::errc{} && std::isfinite(x) ? "" : "not a finite number";
+}
+
+// The entity or header variable a group belongs to, for messages: "the LWPOLYLINE (handle B1)",
+// "the LWPOLYLINE" (a drawing without handles), "the header variable $EXTMIN".
+struct GroupOwner {
+    std::string entity;     ///< the value of the last group 0
+    std::string variable;   ///< in the HEADER section: the last group 9
+    std::string handle;     ///< group 5 (105 for a DIMSTYLE) of the entity
+
+    std::string text() const {
+        if (!variable.empty()) return "the header variable " + variable;
+        return fmt::format("the {}{}", entity, handle.empty() ? "" : fmt::format(" (handle {})", handle));
+    }
+};
+
+// A group value that is not the number its code holds, where it is.
+struct BadNumber {
+    int line = 0;
+    int code = 0;
+    std::string value;
+    std::string problem;   ///< "not a number", ...
+    GroupOwner owner;      ///< its handle filled in when it comes after the value
+
+    std::string text() const {
+        return fmt::format("line {}: group {} of {} holds '{}', which is {}", line, code, owner.text(), value, problem);
+    }
+};
+
 // Why text is not an ASCII DXF drawing, or "" when it looks like one: its first group (after
-// 999 comments) opens a SECTION, every group code is a number and the last group is 0 EOF.
+// 999 comments) opens a SECTION, every group code is a number, every value of a numeric group
+// all of it a finite number (number_problem) and the last group is 0 EOF.
 // dxflib itself reads anything without complaint, so a wrong file would give an empty drawing.
 std::string structure_problem(const std::string& text) {
     if (text.rfind("AutoCAD Binary DXF", 0) == 0)
@@ -48,9 +111,10 @@ std::string structure_problem(const std::string& text) {
     std::string code_line, value_line;
     int line = 0;
     bool first = true;
-    std::string entity;   // the type of the entity being read (the value of the last group 0)
     long long vertices_declared = 0, vertices_seen = 0;   // of an LWPOLYLINE
     std::string last_code_text, last_value_text;
+    GroupOwner owner;   // the entity being read (the value of the last group 0)
+    std::optional<BadNumber> bad_number;   // told once its entity's handle has been read
     while (std::getline(in, code_line)) {
         ++line;
         const std::string_view code = trimmed(code_line);
@@ -69,24 +133,33 @@ std::string structure_problem(const std::string& text) {
             if (number != 0 || value != "SECTION") return "is not a DXF drawing (a DXF file starts with the group '0' 'SECTION')";
             first = false;
         }
+        if (number == 0 && bad_number) return bad_number->text();
         if (number == 0) {
             // dxflib keeps only the vertices an LWPOLYLINE declares: a count that disagrees would
             // silently cut the outline short.
-            if (entity == "LWPOLYLINE" && vertices_declared != vertices_seen)
+            if (owner.entity == "LWPOLYLINE" && vertices_declared != vertices_seen)
                 return fmt::format("line {}: the LWPOLYLINE before this line declares {} vertices (group 90) but has {}",
                                    line - 1, vertices_declared, vertices_seen);
-            entity = std::string(value);
+            owner = {std::string(value), "", ""};
             vertices_declared = vertices_seen = 0;
         }
-        if (entity == "LWPOLYLINE" && number == 90) std::from_chars(value.data(), value.data() + value.size(), vertices_declared);
-        if (entity == "LWPOLYLINE" && number == 10) ++vertices_seen;
-        if (const std::string problem = count_problem(entity, number, value, text.size()); !problem.empty())
+        if (number == 9) owner.variable = std::string(value);
+        if ((number == 5 || number == 105) && owner.handle.empty()) {
+            owner.handle = std::string(value);
+            if (bad_number) bad_number->owner.handle = owner.handle;
+        }
+        if (const std::string problem = number_problem(number, value); !problem.empty() && !bad_number)
+            bad_number = BadNumber{line, number, std::string(value.substr(0, 40)), problem, owner};
+        if (owner.entity == "LWPOLYLINE" && number == 90) std::from_chars(value.data(), value.data() + value.size(), vertices_declared);
+        if (owner.entity == "LWPOLYLINE" && number == 10) ++vertices_seen;
+        if (const std::string problem = count_problem(owner.entity, number, value, text.size()); !problem.empty())
             return fmt::format("line {}: {}", line, problem);
         last_code_text = std::string(code);
         last_value_text = std::string(value);
         if (number == 0 && value == "EOF") break;  // what follows (a DOS end-of-file mark) is not read
     }
     if (first) return "is not a DXF drawing (it holds no DXF groups)";
+    if (bad_number) return bad_number->text();
     if (last_code_text != "0" || last_value_text != "EOF")
         return "ends before its '0' 'EOF' group: the file is truncated or not a complete DXF drawing";
     return "";

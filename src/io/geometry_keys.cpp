@@ -125,7 +125,7 @@ std::vector<BodyDef> drawing_bodies(const Drawing& drawing, const std::string& f
 
 // Every block layer of the table has blocks in the drawing, and every layer with closed
 // outlines is in the table: a misspelt layer name would otherwise drop blocks silently.
-void check_layers(TableReader& t, TableReader& layer_table, const Drawing& drawing,
+void check_layers(TableReader& t, TableReader& layer_table, const Drawing& drawing, const std::string& file,
                   const std::map<std::string, LayerSettings>& layers) {
     std::map<std::string, int> outlines;   // closed outlines per layer of the drawing
     std::vector<std::string> drawing_layers;
@@ -143,7 +143,14 @@ void check_layers(TableReader& t, TableReader& layer_table, const Drawing& drawi
                                      fmt::join(unmapped, ", ")));
     for (const auto& [layer, s] : layers) {
         if (s.skip || outlines.contains(layer)) continue;
-        const std::string guess = nearest(layer, drawing_layers);
+        // The layer's entities are there but none is a closed outline: what is wrong with the
+        // first (an open polyline: close it) is the message, not a missing layer.
+        const auto drawn = std::find_if(drawing.entities.begin(), drawing.entities.end(),
+                                        [&](const DrawingEntity& e) { return e.layer == layer && !e.problem.empty(); });
+        if (drawn != drawing.entities.end()) fail_entity(file, *drawn, drawn->problem);
+        std::vector<std::string> others = drawing_layers;
+        std::erase(others, layer);
+        const std::string guess = nearest(layer, others);
         layer_table.fail(layer, fmt::format("the drawing has no closed outline on layer '{}'{}; its layers: {}", layer,
                                             guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess),
                                             drawing_layers.empty() ? "(none)" : fmt::format("{}", fmt::join(drawing_layers, ", "))));
@@ -179,7 +186,7 @@ std::vector<BodyDef> read_geometry_entry(TableReader t, const fs::path& scenario
         t.fail("units", fmt::format("is \"{}\", but the drawing '{}' declares its units as {} ($INSUNITS); give the "
                                     "drawing's units (m, cm or mm), or scale the drawing",
                                     unit, file.string(), *drawing.declared_units));
-    check_layers(t, layer_table, drawing, layers);
+    check_layers(t, layer_table, drawing, file.string(), layers);
     return drawing_bodies(drawing, file.string(), unit, prefix, format == "text", layers);
 }
 

@@ -213,6 +213,14 @@ std::vector<BodyDef3d> read_drum_column(TableReader& t, const std::string& name)
 std::vector<BodyDef3d> read_brick_wall(TableReader& t, const std::string& name) {
     const auto courses = t.whole_number("courses", 1, 100000);
     const auto per_course = t.whole_number("bricks_per_course", 1, 100000);
+    // Running bond's odd courses hold one brick fewer: with one a course they would be empty and
+    // every course above them would float. (A single stack of bricks is not a bond: [[bodies]]
+    // boxes build it.)
+    if (per_course < 2 && courses > 1)
+        t.fail("bricks_per_course",
+               fmt::format("is 1 with {} courses: in running bond the odd courses, shifted half a brick, hold one brick "
+                           "fewer, so they would be empty and the bricks above would float; give at least 2 (or courses = 1)",
+                           courses));
     const auto wythes = t.whole_number_or("wythes", 1, 1, 1000);
     const Vec3 brick = vec3(t, "brick", " ([length, thickness, height] of a brick in m)");
     if (!(brick.x > 0.0 && brick.y > 0.0 && brick.z > 0.0)) t.fail("brick", "edge lengths must be > 0");

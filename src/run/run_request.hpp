@@ -12,6 +12,10 @@
 
 namespace blockdem {
 
+/// The most threads a run or a study takes (the CLI's --threads, the Python module's threads=):
+/// more is a mistake, and the per-thread buffers of 1e9 threads do not fit in memory.
+inline constexpr int max_threads = 4096;
+
 struct RunRequest {
     /// The scenario file; may be empty with restart: the state's run folder's scenario.toml.
     std::filesystem::path scenario;

@@ -385,7 +385,7 @@ nlohmann::json ScenarioRun::finish() {
         p.write_failed_summary(e.what());
         throw;
     }
-    const std::string status = p.loop->end() == RunEnd::stopped ? "interrupted" : "completed";
+    const std::string status = this->status();
     nlohmann::json summary = p.summary_with(status, "");
     if (!p.out_dir.empty()) {
         write_summary(p.out_dir / "summary.json", summary);
@@ -406,5 +406,12 @@ const RunTrace* ScenarioRun::trace() const { return parts_->trace ? &*parts_->tr
 bool ScenarioRun::ended() const { return parts_->loop->ended(); }
 bool ScenarioRun::failed() const { return parts_->loop->failed(); }
 bool ScenarioRun::finished() const { return parts_->finished; }
+
+std::string ScenarioRun::status() const {
+    const RunLoop& loop = *parts_->loop;
+    if (loop.failed()) return "failed";
+    if (!loop.ended()) return "running";
+    return loop.end() == RunEnd::stopped ? "interrupted" : "completed";
+}
 
 }  // namespace blockdem

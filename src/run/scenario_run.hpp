@@ -54,6 +54,9 @@ public:
     /// The summary of the state now, as finish() would write it with this status (nothing is
     /// written).
     nlohmann::json summary(const std::string& status) const;
+    /// The run's status now, as its summary says it: "running" (it may go on), "completed" (at
+    /// its end), "interrupted" (stopped before it: a stop request, stop(), finish() early), "failed".
+    std::string status() const;
 
     World& world();
     const World& world() const;

@@ -421,7 +421,13 @@ nlohmann::json ScenarioRun3d::finish() {
         write_failed_summary(e.what());
         throw;
     }
-    return parts_->finish(loop_->end() == RunEnd::stopped ? "interrupted" : "completed", "");
+    return parts_->finish(status(), "");
+}
+
+std::string ScenarioRun3d::status() const {
+    if (loop_->failed()) return "failed";
+    if (!loop_->ended()) return "running";
+    return loop_->end() == RunEnd::stopped ? "interrupted" : "completed";
 }
 
 nlohmann::json ScenarioRun3d::summary(const std::string& status) const {

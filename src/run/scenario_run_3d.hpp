@@ -51,6 +51,9 @@ public:
 
     /// The summary as it would be written now, with this status.
     nlohmann::json summary(const std::string& status) const;
+    /// The run's status now, as its summary says it: "running" (it may go on), "completed" (at
+    /// its end), "interrupted" (stopped before it: a stop request, finish() early), "failed".
+    std::string status() const;
     const World3d& world() const;
     /// The world to change between steps (a caller's loads and velocities, world/external_loads_3d.hpp).
     World3d& world();

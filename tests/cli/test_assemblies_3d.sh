@@ -4,7 +4,7 @@
 # and on the terminal; the packing's bodies are the same bytes from one run to the next; bad
 # assemblies exit with status 2 naming the file and the key: an unknown key, a dip outside
 # [0, 90], a dip direction outside [0, 360), a spacing <= 0, a region that is not convex, a
-# packing that does not fit.
+# packing that does not fit, a brick wall of one brick a course (its odd courses empty).
 # Usage: test_assemblies_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1
@@ -54,6 +54,9 @@ bad spacing 's/^spacing = 2.0 .*/spacing = 0.0/' rock_slope "'assemblies.rock.jo
 bad concave 's/\[4, 4, 8\]\]/[4, 4, 8], [6, 2, 4]]/' rock_slope "'assemblies.rock.region_vertices'"
 bad no_fit 's/^count = 48.*/count = 65/' random_packing "'assemblies.rock.count'"
 expect_in "$out" "do not fit"
+# One brick a course: the odd courses (one brick fewer) would be empty, the bricks above floating.
+bad one_brick_a_course 's/^bricks_per_course = 12.*/bricks_per_course = 1/' brick_wall "'assemblies.brick.bricks_per_course': is 1 with 6 courses"
+expect_in "$out" "the bricks above would float"
 
 [[ $failures -eq 0 ]] && echo "test_assemblies_3d: all passed"
 exit $((failures > 0))

@@ -4,7 +4,9 @@
 # nearest to --time, a state file or a VTK frame); the drawing at t = 0 read back through
 # [[geometry]] gives the run's corners within 1e-9 m; a state file and a VTK frame of the same
 # time give the same drawing within 1e-8 m; a run without saved times and a bad drawing are
-# refused with exit status 2, naming the folder, or the file, the entity and its layer.
+# refused with exit status 2, naming the folder, or the file, the entity and its layer (an open
+# polyline, also when it is its layer's only one; a coordinate that is not a finite number, with
+# its line).
 #   bash tests/cli/test_drawings.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
 blockdem=$1 source_dir=$2
@@ -109,4 +111,43 @@ set +e
 set -e
 [ $status -eq 2 ] || fail "an open polyline: exit $status"
 grep -q "open.dxf: polyline (handle 102) on layer 'BLOCKS' is open" "$work/err" || fail "open polyline message: $(cat "$work/err")"
+# The slab (handle 101), the only polyline of layer GROUND, drawn open: the polyline is named, not
+# the layer as missing (it said "no closed outline on layer 'GROUND' (did you mean 'GROUND'?)").
+/usr/bin/python3 - "$source_dir/examples/dxf/stone_wall.dxf" "$work" <<'PY'
+import sys
+text = open(sys.argv[1]).read()
+at = text.index("  5\n101\n")
+flag = text.index(" 70\n1\n", at)
+open(sys.argv[2] + "/open_slab.dxf", "w").write(text[:flag] + " 70\n0\n" + text[flag + 6:])
+# Stone 102's first x coordinate '4x0' (dxflib read it as 4), and the slab's a NaN (dxflib dropped the corner).
+at = text.index("  5\n102\n")
+x = text.index(" 10\n", at) + 4
+end = text.index("\n", x)
+open(sys.argv[2] + "/badnum.dxf", "w").write(text[:x] + "4x0" + text[end:])
+print(text[:x].count("\n") + 1, file=open(sys.argv[2] + "/badnum.line", "w"))
+x = text.index(" 10\n", text.index("  5\n101\n")) + 4
+open(sys.argv[2] + "/nan.dxf", "w").write(text[:x] + "nan" + text[text.index("\n", x):])
+PY
+for case in open_slab badnum nan; do
+  sed "s|stone_wall.dxf|$work/$case.dxf|" "$source_dir/examples/dxf/stone_wall.toml" > "$work/$case.toml"
+done
+set +e
+"$blockdem" check "$work/open_slab.toml" >/dev/null 2>"$work/err"; status=$?
+set -e
+[ $status -eq 2 ] || fail "the only polyline of a layer open: exit $status"
+grep -q "open_slab.dxf: polyline (handle 101) on layer 'GROUND' is open: a block is a closed polyline (close it in the drawing)" \
+  "$work/err" || fail "open slab message: $(cat "$work/err")"
+! grep -q "did you mean" "$work/err" || fail "a layer guessed: $(cat "$work/err")"
+set +e
+"$blockdem" check "$work/badnum.toml" >/dev/null 2>"$work/err"; status=$?
+set -e
+[ $status -eq 2 ] || fail "a coordinate '4x0': exit $status"
+grep -qF "badnum.dxf: line $(cat "$work/badnum.line"): group 10 of the LWPOLYLINE (handle 102) holds '4x0', which is not a number" \
+  "$work/err" || fail "'4x0' message: $(cat "$work/err")"
+set +e
+"$blockdem" check "$work/nan.toml" >/dev/null 2>"$work/err"; status=$?
+set -e
+[ $status -eq 2 ] || fail "a coordinate 'nan': exit $status"
+grep -qF "group 10 of the LWPOLYLINE (handle 101) holds 'nan', which is not a finite number" "$work/err" ||
+  fail "'nan' message: $(cat "$work/err")"
 echo "drawing checks passed"

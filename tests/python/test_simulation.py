@@ -71,6 +71,17 @@ def test_step_argument_errors():
         blockdem.Simulation({"not": "a scenario"})
     with pytest.raises(ValueError):
         simulation(threads=0)
+    # As the CLI's -j: 1 to 4096 (1e9 ran out of memory).
+    with pytest.raises(ValueError, match="threads must be 1 to 4096, got 1000000000"):
+        simulation(threads=10**9)
+
+
+def test_the_summary_says_the_status_finish_returned():
+    sim = simulation()
+    sim.step(10)
+    assert sim.summary()["status"] == "running"
+    assert sim.finish()["status"] == "interrupted"
+    assert sim.summary()["status"] == "interrupted"  # it said "running"
 
 
 def test_step_after_an_error_raises():

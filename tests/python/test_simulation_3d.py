@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 import blockdem
+from conftest import block_on_table
 
 # A 0.4 x 0.4 x 0.8 m block at rest on a fixed slab, and a 10 cm cube falling 0.05 m onto it.
 DROP = """dimension = 3
@@ -68,7 +69,7 @@ def test_a_falling_cube_follows_free_fall_until_it_lands():
     energy = sim.energy()
     assert abs(energy["balance_error"]) < 1e-2
     summary = sim.summary()
-    assert summary["dimension"] == 3 and summary["status"] == "running"
+    assert summary["dimension"] == 3 and summary["status"] == "completed"  # at its end (sim.done)
     assert summary["bodies"][2]["name"] == "cube"
 
 
@@ -98,12 +99,39 @@ def test_a_3d_scenario_given_to_the_2d_simulation_names_simulation3d():
         blockdem.Simulation(blockdem.Scenario.from_toml(DROP))
 
 
+def test_a_2d_scenario_given_to_the_3d_simulation_names_simulation():
+    # The 3-D reader called the 2-D keys unknown ("key 'simulation': unknown key").
+    with pytest.raises(blockdem.InputError, match=r"key 'dimension': is not given, so the scenario is 2-D: a 2-D "
+                                                  r"scenario runs in blockdem.Simulation \("):
+        blockdem.Simulation3d(blockdem.Scenario.from_dict(block_on_table()))
+    with pytest.raises(blockdem.InputError, match=r"key 'dimension': is 2: a 2-D scenario runs in blockdem.Simulation \("):
+        blockdem.Simulation3d(blockdem.Scenario.from_dict({"dimension": 2, **block_on_table()}))
+
+
 def test_bad_arguments_are_refused():
     with pytest.raises(ValueError, match="threads"):
         blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=0)
+    # 1e9 threads ran the machine out of memory (MemoryError); the CLI's -j takes 1 to 4096.
+    with pytest.raises(ValueError, match="threads must be 1 to 4096, got 1000000000"):
+        blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=10**9)
+    with pytest.raises(ValueError, match="threads must be 1 to 4096, got 4097"):
+        blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=4097)
     sim = blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=1)
     with pytest.raises(ValueError, match="n >= 0"):
         sim.step(-1)
+
+
+def test_the_summary_says_the_status_finish_returned():
+    # summary() said "running" after finish() had returned "interrupted".
+    sim = blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP), threads=1)
+    sim.step(10)
+    assert sim.summary()["status"] == "running"
+    assert sim.finish()["status"] == "interrupted"
+    assert sim.summary()["status"] == "interrupted"
+    short = blockdem.Simulation3d(blockdem.Scenario.from_toml(DROP.replace("duration = 0.2", "duration = 0.01")), threads=1)
+    short.step(1000)
+    assert short.done and short.summary()["status"] == "completed"
+    assert short.finish()["status"] == "completed" and short.summary()["status"] == "completed"
 
 
 def test_a_settled_pier_starts_loaded_and_its_contacts_carry_its_weight():

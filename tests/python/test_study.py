@@ -84,6 +84,10 @@ def test_sweep_bad_cases_are_rows_and_bad_plans_raise(source_dir):
         blockdem.sweep(scenario, cases=[{"contact.mu": 0.5}, {"contact.kn": 1e9}])
     with pytest.raises(TypeError, match="cannot be a scenario value"):
         blockdem.sweep(scenario, vary={"contact.mu": [None]})
+    # As the CLI's --threads (0 here: every core); 1e9 would start 1e9 threads.
+    for threads in (10**9, -1):
+        with pytest.raises(ValueError, match=f"threads must be 0 \\(all cores\\) or 1 to 4096, got {threads}"):
+            blockdem.sweep(scenario, vary={"contact.mu": [0.5]}, threads=threads)
 
 
 def test_the_gil_is_released_during_a_sweep(source_dir):

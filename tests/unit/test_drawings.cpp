@@ -178,6 +178,26 @@ TEST(DxfReader, NotADrawingIsRefusedWithTheFile) {
     EXPECT_EQ(read_dxf("\xEF\xBB\xBF" + whole + "\x1a", "d.dxf").entities.size(), 1u);
 }
 
+TEST(DxfReader, GroupValuesThatAreNotTheirNumbersAreRefusedWithLineEntityAndValue) {
+    const std::string polyline = lwpolyline("B1", "L", {{0, 0}, {400, 0}, {400, 300}, {0, 300}}, true);
+    const auto with_first_x = [&](const std::string& x) { return dxf(testing::replace_once(polyline, "10\n0.000000\n", "10\n" + x + "\n")); };
+    // (dxflib alone reads '4x0' as 4, drops a NaN vertex and takes 1e999 as infinity.)
+    expect_contains(read_error(with_first_x("4x0")), "d.dxf: line 16: group 10 of the LWPOLYLINE (handle B1) holds '4x0', which is not a number");
+    expect_contains(read_error(with_first_x("nan")), "line 16: group 10 of the LWPOLYLINE (handle B1) holds 'nan', which is not a finite number");
+    expect_contains(read_error(with_first_x("1e999")), "holds '1e999', which is not a finite number");
+    expect_contains(read_error(with_first_x("-inf")), "holds '-inf', which is not a finite number");
+    expect_contains(read_error(with_first_x("")), "holds '', which is not a number");
+    // A handle after the bad value still names the entity; a whole-number group takes no fraction.
+    expect_contains(read_error(dxf(group(0, "LWPOLYLINE") + group(70, "1.5") + group(5, "C7") + group(8, "L"))),
+                    "group 70 of the LWPOLYLINE (handle C7) holds '1.5', which is not a whole number");
+    expect_contains(read_error(dxf(polyline, group(9, "$EXTMIN") + group(10, "x") + group(20, "0"))),
+                    "group 10 of the header variable $EXTMIN holds 'x', which is not a number");
+    // What CAD programs write is read: a '+', exponents, padding; text groups are not numbers.
+    EXPECT_EQ(read_error(with_first_x("  +4.0E+02 ")), "");
+    EXPECT_DOUBLE_EQ(read_dxf(with_first_x("-1.5e-3"), "d.dxf").entities.at(0).vertices.at(0).x, -1.5e-3);
+    EXPECT_EQ(read_error(dxf(lwpolyline("1", "4x0", square, true))), "");
+}
+
 // ---- the text format ------------------------------------------------------------------------
 
 TEST(PolygonText, NamesLayersCommentsAndLines) {
@@ -216,10 +236,13 @@ TEST(DrawnOutline, RefusesWhatCannotBeABlock) {
     EXPECT_FALSE(drawn_outline_problem({{0, 0}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}, "m"));  // concave: passes on
     expect_contains(*drawn_outline_problem({{0, 0}, {1, 0}}, "m"), "has 2 distinct corners");
     expect_contains(*drawn_outline_problem({{0, 0}, {1, 0}, {2, 0}}, "m"), "has no area");
-    // A bow tie with unequal lobes (a symmetric one has no net area, and is refused for that).
+    // A bow tie with unequal lobes, and a symmetric one, whose lobes cancel (no net area): both
+    // cross themselves, whatever their area.
     expect_contains(*drawn_outline_problem({{0, 0}, {2, 2}, {2, 0}, {0, 3}}, "mm"),
                     "crosses itself: its edge from corner 0 (0, 0) mm meets its edge from corner 2 (2, 0) mm");
-    expect_contains(*drawn_outline_problem({{0, 0}, {1, 1}, {1, 0}, {0, 1}}, "m"), "has no area");
+    expect_contains(*drawn_outline_problem({{0, 0}, {400, 300}, {400, 0}, {0, 300}}, "mm"),
+                    "crosses itself: its edge from corner 0 (0, 0) mm meets its edge from corner 2 (400, 0) mm");
+    expect_contains(*drawn_outline_problem({{0, 0}, {2, 0}, {1, 0}}, "m"), "has no area (its corners lie on one line)");
     expect_contains(*drawn_outline_problem({{0, 0}, {2, 0}, {1, 0}, {1, 1}}, "m"), "folds back on itself at its corner 1 (2, 0) m");
     // A figure eight touching itself at one corner.
     EXPECT_TRUE(drawn_outline_problem({{0, 0}, {1, 1}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}, "m"));
@@ -302,6 +325,13 @@ TEST(GeometryKeys, EveryLayerWithBlocksIsMappedOrSkipped) {
     EXPECT_EQ(scenario_error("skipped", base + "FRAME = { skip = true }\n"), "");
     expect_contains(scenario_error("typo", base + "BLOCK = { density = 2000.0 }\nFRAME = { skip = true }\n"),
                     "key 'geometry[0].layers.BLOCK': the drawing has no closed outline on layer 'BLOCK' (did you mean 'BLOCKS'?)");
+    // A layer whose only polyline is open: that polyline is named, and no layer is guessed.
+    write_file("open.dxf", dxf(lwpolyline("2A", "GROUND", {{-1000, -200}, {1000, -200}, {1000, 0}, {-1000, 0}}, true) +
+                                   lwpolyline("B1", "BLOCKS", {{0, 0}, {400, 0}, {400, 300}, {0, 300}}, false),
+                               group(9, "$INSUNITS") + group(70, "4")));
+    const std::string open = scenario_error("open", geometry_keys("blockdem-drawings-open.dxf"));
+    expect_contains(open, "open.dxf: polyline (handle B1) on layer 'BLOCKS' is open: a block is a closed polyline (close it in the drawing)");
+    EXPECT_EQ(open.find("did you mean"), std::string::npos) << open;
     expect_contains(scenario_error("skipkeys", base + "FRAME = { skip = true, kind = \"fixed\" }\n"),
                     "a skipped layer takes no other key");
     expect_contains(scenario_error("nodensity", testing::replace_once(base, "density = 2600.0, ", "") + "FRAME = { skip = true }\n"),

@@ -140,6 +140,24 @@ TEST(InputRanges, AssemblyWholeNumbersAreRangeChecked) {
     expect_error("seed_minus_one", voronoi + "seed = -1\n", "assemblies.v.seed", "must be a whole number from 0 to 9007199254740992, got -1");
 }
 
+TEST(InputRanges, SteppedWallTooShortForItsOddCoursesIsRefused) {
+    // A wall one brick long with stepped ends had empty odd courses: the courses above floated.
+    expect_error("stepped_one_brick", wall + "length = 0.2\ncourses = 3\nstepped_ends = true\n", "assemblies.b.stepped_ends",
+                 "is true with a length of 0.2 m, not more than brick_length 0.2 m: the odd courses, half a brick shorter at "
+                 "each end, would hold no brick and the courses above would float");
+    expect_error("stepped_sliver", wall + "length = 0.21\ncourses = 2\nstepped_ends = true\n", "assemblies.b.stepped_ends",
+                 "would be one piece 0.01 m long, less than min_piece_fraction x brick_length = 0.05 m; give a length of at least 0.25 m");
+    // Flat ends put two half bricks on a brick; one course has no odd course (bodies: the table and the bricks).
+    const auto bodies = [](const std::string& name, const std::string& extra) {
+        const auto path = folder() / (name + ".toml");
+        std::ofstream(path) << base << wall << extra;
+        return load_scenario(path, {}).model.bodies.size();
+    };
+    EXPECT_EQ(bodies("flat_one_brick", "length = 0.2\ncourses = 3\n"), 1u + 1 + 2 + 1);
+    EXPECT_EQ(bodies("stepped_one_course", "length = 0.2\ncourses = 1\nstepped_ends = true\n"), 1u + 1);
+    EXPECT_EQ(bodies("stepped_long_enough", "length = 0.3\ncourses = 3\nstepped_ends = true\n"), 1u + 2 + 1 + 2);
+}
+
 TEST(InputRanges, AssemblyTooLargeForTheMachineIsRefusedBeforeGenerating) {
     // A wall 1e9 m long tried to allocate 16.8 GB.
     expect_error("wall_1e9", wall + "length = 1e9\ncourses = 2\n", "assemblies.b.length",

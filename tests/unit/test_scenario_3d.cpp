@@ -173,6 +173,25 @@ density = 2000.0
     EXPECT_EQ(s.world.bodies.back().name, "w_1_1_1");
 }
 
+TEST(Scenario3d, BrickWallOfOneBrickACourseIsRefusedAboveOneCourse) {
+    // Its odd courses, one brick shorter, were empty: the bricks above floated.
+    const std::string wall = R"([[assemblies]]
+name = "w"
+type = "brick_wall"
+bricks_per_course = 1
+brick = [0.4, 0.2, 0.2]
+origin = [0.0, 0.0, 0.0]
+density = 2000.0
+)";
+    const std::string three = error_of(wall + "courses = 3\n");
+    EXPECT_NE(three.find("key 'assemblies.w.bricks_per_course': is 1 with 3 courses: in running bond the odd courses, shifted "
+                         "half a brick, hold one brick fewer, so they would be empty and the bricks above would float"),
+              std::string::npos)
+        << three;
+    EXPECT_NE(error_of(wall + "courses = 2\n").find("bricks_per_course"), std::string::npos);
+    EXPECT_EQ(load(wall + "courses = 1\n").world.bodies.size(), 2u);  // one brick (and the table)
+}
+
 TEST(Scenario3d, AssemblyTooLargeForTheMachineIsRefusedBeforeGenerating) {
     // 1e5 courses of 12 bricks in 2 wythes were generated and ran the machine out of memory.
     const std::string wall = error_of(R"([[assemblies]]
