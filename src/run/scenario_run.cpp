@@ -63,16 +63,17 @@ void write_scenario_copy(const toml::table& root, const fs::path& scenario, cons
 }
 
 // Everything that can refuse the run, before anything is written: whether the run fits the
-// machine, and the output folder (not when a restart continues its own folder). Returns whether
-// VTK frames will be written.
-bool check_before_run(const LoadedScenario& loaded, const RunRequest& request, const fs::path& out_dir, bool in_place) {
+// machine, and the output folder (not when a restart continues its own folder), which the run
+// then holds (lock). Returns whether VTK frames will be written.
+bool check_before_run(const LoadedScenario& loaded, const RunRequest& request, const fs::path& out_dir, bool in_place,
+                      RunFolderLock& lock) {
     check_step_count(loaded);
     if (out_dir.empty()) return false;  // (no files)
     const World& world = loaded.world;
     const bool vtk_on = vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s);
     for (const std::string& warning : check_run_budget(loaded, estimate_run_budget(loaded, vtk_on), out_dir))
         if (request.on_warning) request.on_warning(warning);
-    if (!in_place) prepare_output_folder(out_dir, request.force);
+    lock = in_place ? RunFolderLock::take(out_dir) : prepare_output_folder(out_dir, request.force);
     return vtk_on;
 }
 
@@ -123,6 +124,7 @@ struct ScenarioRun::Parts {
     fs::path scenario;   ///< the file run (or the name of a scenario given as text)
     fs::path out_dir;    ///< empty: no files
     bool in_place = false;
+    RunFolderLock folder_lock;   ///< held while the run writes (released after the writers close)
     StartingState start;
     LoadedScenario loaded;
     SavePoints points;
@@ -177,7 +179,7 @@ void ScenarioRun::Parts::start_from_restart_or_initial_state() {
 void ScenarioRun::Parts::open_outputs(bool keep_trace) {
     World& world = loaded.world;
     points = save_points(world, request);
-    const bool vtk_on = check_before_run(loaded, request, out_dir, in_place);
+    const bool vtk_on = check_before_run(loaded, request, out_dir, in_place, folder_lock);
     monitor.emplace(world);
     monitor_state.emplace(*monitor);
     state_parts = {&*monitor_state};
@@ -305,6 +307,7 @@ void ScenarioRun::Parts::write_failed_summary(const std::string& error) {
     } catch (const OutputError&) {
         // The disk that stopped the run may refuse the summary too: the first error is the news.
     }
+    folder_lock = RunFolderLock();  // (the run cannot go on: a caller's next run may take the folder)
 }
 
 ScenarioRun::ScenarioRun(const RunRequest& request) : parts_(std::make_unique<Parts>()) {
@@ -391,6 +394,7 @@ nlohmann::json ScenarioRun::finish() {
         write_summary(p.out_dir / "summary.json", summary);
         write_summary(p.out_dir / "run_info.json", p.run_info(status));
     }
+    p.folder_lock = RunFolderLock();  // (written: a caller's next run may take the folder)
     summary["run_folder"] = p.out_dir.string();
     summary["wall_time_s"] = p.wall_s();  // (for the callers that time their runs: converge)
     summary["state_files"] = p.state_files;

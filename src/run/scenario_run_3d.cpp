@@ -211,6 +211,7 @@ struct ScenarioRun3d::Parts {
     std::optional<StateFile> restart;
     fs::path run_folder;            ///< the restarted run's folder
     bool in_place = false;
+    RunFolderLock folder_lock;      ///< held while the run writes (released after the writers close)
     LoadedScenario3d loaded;
     std::optional<ResponseMonitor3d> monitor;
     std::optional<History3dRecorder> history;
@@ -291,7 +292,7 @@ struct ScenarioRun3d::Parts {
     void open_outputs() {
         const World3d& w = loaded.world;
         const bool vtk_on = vtk_enabled(loaded.output, w.bodies.size(), w.duration_s);
-        if (!in_place) prepare_output_folder(out_dir, request.force);
+        folder_lock = in_place ? RunFolderLock::take(out_dir) : prepare_output_folder(out_dir, request.force);
         const auto mode = restart ? OutputFile::Mode::append : OutputFile::Mode::replace;
         if (restart) {
             const std::int64_t rows = restart->info().output_rows;
@@ -375,6 +376,7 @@ struct ScenarioRun3d::Parts {
             if (!restart && !loaded.initial_state.empty()) run.initial_state = loaded.initial_state;
             write_summary(out_dir / "run_info.json", run_info_json(status, run));
         }
+        folder_lock = RunFolderLock();  // (written: a caller's next run may take the folder)
         summary["run_folder"] = out_dir.string();
         summary["wall_time_s"] = wall_s();
         summary["state_files"] = state_files;
