@@ -880,8 +880,11 @@ EnergyLedger read_ledger(const StateGroup& group) { return read_energy(group); }
 double StateFile::time_s() const { return root_->number("time_s"); }
 std::int64_t StateFile::step_index() const { return root_->integer("step_index"); }
 
-std::filesystem::path state_file_name(const std::filesystem::path& run_dir, double t_s) {
-    return run_dir / "state" / fmt::format("t_{:.6f}s.h5", t_s);
+std::filesystem::path state_file_name(const std::filesystem::path& run_dir, std::int64_t step_index, double dt_s) {
+    // Two times dt apart print differently once the last decimal is finer than dt.
+    int decimals = 6;
+    while (decimals < 17 && std::pow(10.0, -decimals) >= dt_s) ++decimals;
+    return run_dir / "state" / fmt::format("t_{:.{}f}s.h5", static_cast<double>(step_index) * dt_s, decimals);
 }
 
 }  // namespace blockdem

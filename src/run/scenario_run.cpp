@@ -254,7 +254,7 @@ void ScenarioRun::Parts::save_state(const World& w, SaveReason reason) {
     if (interfaces) interfaces->flush();
     state_info.reason = state_reason(reason);
     state_info.output_rows = output_rows_before(w, w.step_index);
-    const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
+    const fs::path file = state_file_of(out_dir, w);
     std::vector<const StatePart*> const_parts(state_parts.begin(), state_parts.end());
     write_state_file(file, w, state_info, const_parts);
     state_files.push_back(file.string());

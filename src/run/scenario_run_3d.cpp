@@ -344,7 +344,7 @@ struct ScenarioRun3d::Parts {
         energy->flush();
         state_info.reason = state_reason(reason);
         state_info.output_rows = output_rows_before(w, w.steps);
-        const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
+        const fs::path file = state_file_of(out_dir, w);
         std::vector<const StatePart*> parts = {&*monitor_state};
         if (vtk_state) parts.push_back(&*vtk_state);
         settling_state.emplace(loaded.settled);
