@@ -318,9 +318,10 @@ ScenarioRun::ScenarioRun(const RunRequest& request) : parts_(std::make_unique<Pa
     if (!request.restart.empty()) {
         p.start.restart.emplace(request.restart);
         check_state_dimension(*p.start.restart, 2);
-        p.start.run_folder = state_run_folder(request.restart, p.start.restart->info());
-        if (p.scenario.empty()) p.scenario = p.start.run_folder / "scenario.toml";
-        if (p.out_dir.empty()) p.out_dir = p.start.run_folder;
+        const RestartFolders folders = restart_folders(request.restart, p.start.restart->info(), p.scenario, p.out_dir);
+        p.start.run_folder = folders.run_folder;
+        p.scenario = folders.scenario;
+        p.out_dir = folders.out_dir;
     }
     std::error_code ec;
     p.in_place = p.start.restart && fs::exists(p.out_dir) && fs::equivalent(p.out_dir, p.start.run_folder, ec);

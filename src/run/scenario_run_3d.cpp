@@ -234,9 +234,10 @@ struct ScenarioRun3d::Parts {
         if (!request.restart.empty()) {
             restart.emplace(request.restart);
             check_state_dimension(*restart, 3);
-            run_folder = state_run_folder(request.restart, restart->info());
-            if (scenario.empty()) scenario = run_folder / "scenario.toml";
-            if (out_dir.empty()) out_dir = run_folder;
+            const RestartFolders folders = restart_folders(request.restart, restart->info(), scenario, out_dir);
+            run_folder = folders.run_folder;
+            scenario = folders.scenario;
+            out_dir = folders.out_dir;
             std::error_code ec;
             in_place = fs::exists(out_dir) && fs::equivalent(out_dir, run_folder, ec);
         }
