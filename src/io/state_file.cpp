@@ -851,7 +851,12 @@ StateFile::StateFile(const std::filesystem::path& file) : file_(file) {
     const InputLocation where{file.string(), "", 0, 0};
     if (std::filesystem::is_directory(file))
         throw InputError(where, "a folder, not a state file (a run's state files are in its state/ folder: t_*.h5)");
-    if (!std::filesystem::is_regular_file(file)) throw InputError(where, "no such state file");
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(file, ec);
+    if (!std::filesystem::exists(status)) throw InputError(where, "no such state file");
+    // (/dev/null, a pipe: it exists, so "no such file" would mislead.)
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(where, "not a regular file (a device, pipe or socket), so not a state file (an HDF5 file t_*.h5)");
     if (H5Fis_hdf5(file.c_str()) <= 0) throw InputError(where, "not an HDF5 file (not a blockdem state file)");
     const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (id < 0) throw InputError(where, "cannot open the HDF5 file (damaged or truncated?)");
