@@ -7,10 +7,22 @@
 // in a new folder, they are copied first.
 #include <cstdint>
 #include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "io/state_file.hpp"
 
 namespace blockdem {
+
+/// The refusal of a restart whose bodies changed mass or shape (why: the mismatch): the state's
+/// momenta, contact overlaps and energy ledger are those of the bodies it was saved with, so a
+/// run under the changed bodies would go on from a state they never were in.
+inline std::string restart_body_change(const std::filesystem::path& scenario, const std::string& why) {
+    return fmt::format("the state does not belong to scenario {}: {}; a restart goes on with the bodies the state was "
+                       "saved with (to start changed bodies from it, give it as [simulation] initial_state: a new run)",
+                       scenario.string(), why);
+}
 
 /// The folders and the scenario of a restart (docs/outputs.md, "Restart").
 struct RestartFolders {

@@ -660,6 +660,8 @@ void write_world(StateGroup& root, const WorldState& s) {
     b.write("kind", kinds);
     b.write("vertex_count", s.vertex_count);
     b.write("local_vertices_m", s.local_vertices_m);
+    b.write("mass_kg", s.mass_kg);
+    b.write("inertia_kg_m2", s.inertia_kg_m2);
     b.write("is_static", s.is_static);
     b.write("position_m", s.position_m);
     b.write("rotation_rad", s.rotation_rad);
@@ -727,6 +729,8 @@ WorldState read_world(const StateGroup& root) {
     std::int64_t corners = 0;
     for (std::uint32_t c : s.vertex_count) corners += c;
     s.local_vertices_m = b.vectors("local_vertices_m", corners);
+    if (b.has("mass_kg")) s.mass_kg = b.doubles("mass_kg", n);  // (files before them lack them)
+    if (b.has("inertia_kg_m2")) s.inertia_kg_m2 = b.doubles("inertia_kg_m2", n);
     s.is_static = b.flags("is_static", n);
     s.position_m = b.vectors("position_m", n);
     s.rotation_rad = b.doubles("rotation_rad", n);

@@ -99,10 +99,13 @@ void check_state_fits(const World& w, const StateFile& state, const fs::path& sc
                          fmt::format("the state does not belong to scenario {}: {}", scenario.string(), *mismatch));
 }
 
-// The checks only a restart needs: the same time step, and a state within the run.
+// The checks only a restart needs: the same bodies' masses, the same time step, and a state
+// within the run.
 void check_restart(const World& w, const StateFile& state, const fs::path& scenario) {
     check_state_fits(w, state, scenario);
     const WorldState& s = state.world();
+    if (auto mismatch = mass_mismatch(w, s))
+        throw InputError({state.path().string(), "", 0, 0}, restart_body_change(scenario, *mismatch));
     if (s.dt_s != w.dt_s)
         throw InputError({state.path().string(), "", 0, 0},
                          fmt::format("the state was saved with dt = {:.17g} s, scenario {} gives dt = {:.17g} s: a "
