@@ -1,6 +1,13 @@
 #include "io/output_folder.hpp"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <array>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <string_view>
 #include <vector>
@@ -90,30 +97,105 @@ bool holds_run(const fs::path& dir) {
            (fs::is_regular_file(dir / "scenario.toml") && is_scenario_copy(dir / "scenario.toml"));
 }
 
-void prepare_output_folder(const fs::path& dir, bool force) {
+namespace {
+
+std::string lock_holder(int fd) {
+    char text[32] = {};
+    const ssize_t got = pread(fd, text, sizeof text - 1, 0);
+    const std::string pid = got > 0 ? std::string(text, static_cast<std::size_t>(got)) : std::string();
+    return pid.empty() ? std::string("a run whose pid is not known") : "the run of pid " + pid;
+}
+
+// Whether the file at path is still the one open as fd: a holder that released the lock unlinks
+// it, and a lock on the unlinked file would hold nothing.
+bool same_file(int fd, const fs::path& path) {
+    struct stat open_file {}, named {};
+    return fstat(fd, &open_file) == 0 && stat(path.c_str(), &named) == 0 && open_file.st_dev == named.st_dev &&
+           open_file.st_ino == named.st_ino;
+}
+
+}  // namespace
+
+RunFolderLock RunFolderLock::take(const fs::path& dir) {
+    const fs::path file = dir / run_lock_name;
+    const InputLocation where{dir.string(), "", 0, 0};
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const int fd = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+        if (fd < 0) throw InputError(where, fmt::format("cannot create the lock file {}: {}", run_lock_name, std::strerror(errno)));
+        if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+            const std::string holder = lock_holder(fd);
+            close(fd);
+            throw InputError(where, fmt::format("{} is writing in this folder ({} is locked); wait for it or stop it, or "
+                                                "give another --out (--force does not replace a live run)",
+                                                holder, run_lock_name));
+        }
+        if (!same_file(fd, file)) {  // taken just as its holder let it go: take the new one
+            close(fd);
+            continue;
+        }
+        const std::string pid = std::to_string(getpid());
+        if (ftruncate(fd, 0) != 0 || pwrite(fd, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
+            close(fd);
+            throw InputError(where, fmt::format("cannot write the lock file {}: {}", run_lock_name, std::strerror(errno)));
+        }
+        RunFolderLock lock;
+        lock.fd_ = fd;
+        lock.file_ = file;
+        return lock;
+    }
+    throw InputError(where, fmt::format("cannot take the lock file {}: other runs keep taking it", run_lock_name));
+}
+
+void RunFolderLock::release() noexcept {
+    if (fd_ < 0) return;
+    // Unlinked while still held, so that no one locks the file about to go.
+    std::error_code ignored;
+    fs::remove(file_, ignored);
+    close(fd_);
+    fd_ = -1;
+}
+
+RunFolderLock::RunFolderLock(RunFolderLock&& other) noexcept : fd_(other.fd_), file_(std::move(other.file_)) { other.fd_ = -1; }
+
+RunFolderLock& RunFolderLock::operator=(RunFolderLock&& other) noexcept {
+    if (this != &other) {
+        release();
+        fd_ = other.fd_;
+        file_ = std::move(other.file_);
+        other.fd_ = -1;
+    }
+    return *this;
+}
+
+RunFolderLock::~RunFolderLock() { release(); }
+
+RunFolderLock prepare_output_folder(const fs::path& dir, bool force) {
     const InputLocation where{dir.string(), "", 0, 0};
     std::error_code ec;
     if (!fs::exists(dir)) {
         fs::create_directories(dir, ec);
         if (ec) throw InputError(where, "cannot create the output folder: " + ec.message());
-        return;
+        return RunFolderLock::take(dir);
     }
     if (!fs::is_directory(dir)) throw InputError(where, "--out names a file, not a folder");
     if (fs::exists(dir / "sweep.json"))
         throw InputError(where, "the folder holds a sweep (sweep.json); give `blockdem run` another --out");
+    // (Before anything is removed: a live run's files are its own.)
+    RunFolderLock lock = RunFolderLock::take(dir);
     const std::vector<std::string> present = present_run_files(dir);
     if (holds_run(dir)) {
         if (!force)
             throw InputError(where, fmt::format("the folder holds an earlier run ({}); use --force to replace it, or "
                                                 "another --out", fmt::join(present, ", ")));
         remove_run_files(dir);
-        return;
+        return lock;
     }
     // Not a run folder: blockdem's names there belong to someone else, and --force does not
     // remove files it did not write.
     if (!present.empty())
         throw InputError(where, fmt::format("the folder holds {}, not written by blockdem run; it would be overwritten: "
                                             "give another --out", fmt::join(present, ", ")));
+    return lock;
 }
 
 }  // namespace blockdem

@@ -15,10 +15,25 @@ namespace blockdem {
 
 namespace fs = std::filesystem;
 
-fs::path state_run_folder(const fs::path& state_file, const StateFileInfo& info) {
+RestartFolders restart_folders(const fs::path& state_file, const StateFileInfo& info, const fs::path& scenario,
+                               const fs::path& out_dir) {
     const fs::path dir = fs::absolute(state_file).lexically_normal().parent_path();
-    if (dir.filename() == "state" && fs::exists(dir.parent_path() / "scenario.toml")) return dir.parent_path();
-    return info.run_folder;
+    const bool in_run_folder = dir.filename() == "state";
+    RestartFolders f;
+    f.run_folder = in_run_folder ? dir.parent_path() : fs::path(info.run_folder);
+    f.scenario = scenario.empty() ? f.run_folder / "scenario.toml" : scenario;
+    f.out_dir = out_dir.empty() && in_run_folder ? f.run_folder : out_dir;
+    if (f.out_dir.empty())
+        throw InputError({state_file.string(), "", 0, 0},
+                         fmt::format("the state is not in a run folder's state/ folder, so it has no folder to go on in: "
+                                     "give --out (the rows before the state are read from {}, where it was written)",
+                                     f.run_folder.string()));
+    if (scenario.empty() && !fs::exists(f.scenario))
+        throw InputError({f.scenario.string(), "", 0, 0},
+                         fmt::format("missing: the run folder of state {} has no scenario.toml (the scenario as run); "
+                                     "give the scenario on the command line",
+                                     state_file.string()));
+    return f;
 }
 
 namespace {

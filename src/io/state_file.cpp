@@ -660,6 +660,8 @@ void write_world(StateGroup& root, const WorldState& s) {
     b.write("kind", kinds);
     b.write("vertex_count", s.vertex_count);
     b.write("local_vertices_m", s.local_vertices_m);
+    b.write("mass_kg", s.mass_kg);
+    b.write("inertia_kg_m2", s.inertia_kg_m2);
     b.write("is_static", s.is_static);
     b.write("position_m", s.position_m);
     b.write("rotation_rad", s.rotation_rad);
@@ -727,6 +729,8 @@ WorldState read_world(const StateGroup& root) {
     std::int64_t corners = 0;
     for (std::uint32_t c : s.vertex_count) corners += c;
     s.local_vertices_m = b.vectors("local_vertices_m", corners);
+    if (b.has("mass_kg")) s.mass_kg = b.doubles("mass_kg", n);  // (files before them lack them)
+    if (b.has("inertia_kg_m2")) s.inertia_kg_m2 = b.doubles("inertia_kg_m2", n);
     s.is_static = b.flags("is_static", n);
     s.position_m = b.vectors("position_m", n);
     s.rotation_rad = b.doubles("rotation_rad", n);
@@ -851,7 +855,12 @@ StateFile::StateFile(const std::filesystem::path& file) : file_(file) {
     const InputLocation where{file.string(), "", 0, 0};
     if (std::filesystem::is_directory(file))
         throw InputError(where, "a folder, not a state file (a run's state files are in its state/ folder: t_*.h5)");
-    if (!std::filesystem::is_regular_file(file)) throw InputError(where, "no such state file");
+    std::error_code ec;
+    const std::filesystem::file_status status = std::filesystem::status(file, ec);
+    if (!std::filesystem::exists(status)) throw InputError(where, "no such state file");
+    // (/dev/null, a pipe: it exists, so "no such file" would mislead.)
+    if (!std::filesystem::is_regular_file(status))
+        throw InputError(where, "not a regular file (a device, pipe or socket), so not a state file (an HDF5 file t_*.h5)");
     if (H5Fis_hdf5(file.c_str()) <= 0) throw InputError(where, "not an HDF5 file (not a blockdem state file)");
     const hid_t id = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     if (id < 0) throw InputError(where, "cannot open the HDF5 file (damaged or truncated?)");
@@ -880,8 +889,11 @@ EnergyLedger read_ledger(const StateGroup& group) { return read_energy(group); }
 double StateFile::time_s() const { return root_->number("time_s"); }
 std::int64_t StateFile::step_index() const { return root_->integer("step_index"); }
 
-std::filesystem::path state_file_name(const std::filesystem::path& run_dir, double t_s) {
-    return run_dir / "state" / fmt::format("t_{:.6f}s.h5", t_s);
+std::filesystem::path state_file_name(const std::filesystem::path& run_dir, std::int64_t step_index, double dt_s) {
+    // Two times dt apart print differently once the last decimal is finer than dt.
+    int decimals = 6;
+    while (decimals < 17 && std::pow(10.0, -decimals) >= dt_s) ++decimals;
+    return run_dir / "state" / fmt::format("t_{:.{}f}s.h5", static_cast<double>(step_index) * dt_s, decimals);
 }
 
 }  // namespace blockdem

@@ -143,7 +143,9 @@ private:
     int dimension_ = 2;
 };
 
-/// The name of a state file at time t_s in a run folder: state/t_0.500000s.h5.
-std::filesystem::path state_file_name(const std::filesystem::path& run_dir, double t_s);
+/// The name of the state file of step step_index in a run folder: the time it holds,
+/// state/t_0.500000s.h5, with 6 decimals, or more when dt is 1e-6 s or less, so that no two
+/// steps share a name.
+std::filesystem::path state_file_name(const std::filesystem::path& run_dir, std::int64_t step_index, double dt_s);
 
 }  // namespace blockdem

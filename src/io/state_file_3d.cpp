@@ -1,9 +1,13 @@
 #include "io/state_file_3d.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "io/external_loads_state.hpp"
 #include "io/input_error.hpp"
+#include "io/run_restart.hpp"
 
 namespace blockdem {
 namespace {
@@ -46,6 +50,12 @@ void write_bodies(StateGroup g, const World3d& w) {
     g.write("velocity_at_t_m_s", flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.velocity_at_t_m_s; })), 3);
     g.write("angular_velocity_at_t_rad_s",
             flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.angular_velocity_at_t_rad_s; })), 3);
+    // To recognise the bodies (read_bodies): their shapes and mass properties.
+    std::vector<Vec3> local;
+    for (const RigidBody3d& x : b) local.insert(local.end(), x.shape.vertices_m.begin(), x.shape.vertices_m.end());
+    g.write("local_vertices_m", flat(local), 3);
+    g.write("mass_kg", column<double>(b, [](const RigidBody3d& x) { return x.mass_kg; }));
+    g.write("principal_moments_kg_m2", flat(column<Vec3>(b, [](const RigidBody3d& x) { return x.principal_moments_kg_m2; })), 3);
 }
 
 void write_contacts(StateGroup g, const World3d& w) {
@@ -90,7 +100,47 @@ void write_stability(StateGroup g, const StabilityWatch3d& s) {
                      fmt::format("the state does not belong to scenario {}: {}", scenario.string(), why));
 }
 
-void read_bodies(const StateFile& file, const std::filesystem::path& scenario, World3d& w) {
+// The same corners in each body's frame (exactly: both come from the same numbers). Files
+// written before the shapes were saved pass.
+void check_shapes(const StateFile& file, const std::filesystem::path& scenario, const StateGroup& g, const World3d& w) {
+    if (!g.has("local_vertices_m")) return;
+    std::size_t corners = 0;
+    for (const RigidBody3d& b : w.bodies) corners += b.shape.vertices_m.size();
+    const std::vector<Vec3> local = vec3s(g, "local_vertices_m", corners);
+    std::size_t k = 0;
+    for (const RigidBody3d& b : w.bodies)
+        for (std::size_t v = 0; v < b.shape.vertices_m.size(); ++v, ++k)
+            if (local[k].x != b.shape.vertices_m[v].x || local[k].y != b.shape.vertices_m[v].y ||
+                local[k].z != b.shape.vertices_m[v].z)
+                refuse(file, scenario, fmt::format("body '{}' has another shape in the state than in the scenario "
+                                                   "(vertex {})", b.name, v + 1));
+}
+
+// A restart's bodies must keep their mass properties (io/run_restart.hpp: restart_body_change).
+void check_masses(const StateFile& file, const std::filesystem::path& scenario, const StateGroup& g, const World3d& w) {
+    if (!g.has("mass_kg") || !g.has("principal_moments_kg_m2")) return;
+    const std::size_t n = w.bodies.size();
+    const std::vector<double> mass = g.doubles("mass_kg", static_cast<std::int64_t>(n));
+    const std::vector<Vec3> moments = vec3s(g, "principal_moments_kg_m2", n);
+    const auto differs = [](double a, double b) { return std::abs(a - b) > 1e-12 * std::max(std::abs(a), std::abs(b)); };
+    for (std::size_t i = 0; i < n; ++i) {
+        const RigidBody3d& b = w.bodies[i];
+        if (w.kinds[i] != BodyKind3d::dynamic) continue;
+        std::string why;
+        if (differs(mass[i], b.mass_kg))
+            why = fmt::format("body '{}' has mass {:g} kg in the state but {:g} kg in the scenario (its density or size "
+                              "changed)", b.name, mass[i], b.mass_kg);
+        else if (differs(moments[i].x, b.principal_moments_kg_m2.x) || differs(moments[i].y, b.principal_moments_kg_m2.y) ||
+                 differs(moments[i].z, b.principal_moments_kg_m2.z))
+            why = fmt::format("body '{}' has principal moments of inertia ({:g}, {:g}, {:g}) kg m^2 in the state but "
+                              "({:g}, {:g}, {:g}) kg m^2 in the scenario", b.name, moments[i].x, moments[i].y,
+                              moments[i].z, b.principal_moments_kg_m2.x, b.principal_moments_kg_m2.y,
+                              b.principal_moments_kg_m2.z);
+        if (!why.empty()) throw InputError({file.path().string(), "", 0, 0}, restart_body_change(scenario, why));
+    }
+}
+
+void read_bodies(const StateFile& file, const std::filesystem::path& scenario, World3d& w, bool restart) {
     const StateGroup g = file.root().open_group("bodies3d");
     const std::vector<std::string> name = g.strings("name");
     const std::size_t n = w.bodies.size();
@@ -104,6 +154,8 @@ void read_bodies(const StateFile& file, const std::filesystem::path& scenario, W
         if (kind[i] != static_cast<std::uint8_t>(w.kinds[i]) || vertices[i] != w.bodies[i].shape.vertices_m.size())
             refuse(file, scenario, fmt::format("body '{}' has another kind or shape in the state than in the scenario", name[i]));
     }
+    check_shapes(file, scenario, g, w);
+    if (restart) check_masses(file, scenario, g, w);
     const std::vector<Vec3> position = vec3s(g, "position_m", n), velocity = vec3s(g, "velocity_m_s", n),
                             momentum = vec3s(g, "angular_momentum_kg_m2_s", n),
                             omega_body = vec3s(g, "angular_velocity_body_rad_s", n),
@@ -242,7 +294,7 @@ void check_dimension(const StateFile& file, const std::filesystem::path& scenari
 
 void start_from_state_3d(const StateFile& file, World3d& w, const std::filesystem::path& scenario) {
     check_dimension(file, scenario);
-    read_bodies(file, scenario, w);
+    read_bodies(file, scenario, w, false);
     replace_contacts(w, read_contacts_3d(file.root().open_group("contacts3d"), w.bodies.size()));
     // As settling ends (world/settling_3d.cpp): the velocities at the state's time become the
     // initial ones, and the first step is the half step from an initial state.
@@ -258,7 +310,7 @@ void restore_world_3d(const StateFile& file, World3d& w, const std::filesystem::
     const InputLocation where{file.path().string(), "", 0, 0};
     check_dimension(file, scenario);
     const StateGroup& root = file.root();
-    read_bodies(file, scenario, w);  // (first: a state of another scenario is told as such)
+    read_bodies(file, scenario, w, true);  // (first: a state of another scenario is told as such)
     const double dt_s = root.number("dt_s");
     if (dt_s != w.dt_s)
         throw InputError(where, fmt::format("the state was saved with dt = {:.17g} s, scenario {} gives dt = {:.17g} s: a "

@@ -21,8 +21,30 @@
 
 namespace blockdem {
 
+/// The steps between two state files of --save-state-every DT: DT in whole time steps. A DT
+/// below dt is refused (a state can be saved once a step at most, and a name below dt's
+/// resolution would be written over); a DT that is not a whole number of steps is rounded to
+/// the nearest, with a warning when that moves it by more than 1 %.
+inline std::int64_t save_every_steps(const RunRequest& request, double dt_s) {
+    const double every_s = request.save_state_every_s;
+    // (0.999: a dt copied from a message with 6 digits is dt.)
+    if (every_s < 0.999 * dt_s)
+        throw InputError({"--save-state-every", "", 0, 0},
+                         fmt::format("{:g} s is below the time step dt = {:g} s: a state is saved at most once a step; give "
+                                     "dt or more",
+                                     every_s, dt_s));
+    const std::int64_t steps = std::max<std::int64_t>(1, std::llround(every_s / dt_s));
+    const double used_s = static_cast<double>(steps) * dt_s;
+    if (std::abs(used_s - every_s) > 0.01 * every_s && request.on_warning)
+        request.on_warning(fmt::format("--save-state-every {:g} s is not a whole number of time steps (dt = {:g} s): a "
+                                       "state is saved every {} ({:g} s), each file named by the time it holds",
+                                       every_s, dt_s, steps == 1 ? std::string("step") : fmt::format("{} steps", steps),
+                                       used_s));
+    return steps;
+}
+
 /// The steps of the state files asked for: --save-state times and --save-state-every. Throws
-/// InputError for a time outside the run.
+/// InputError for a time outside the run, or a DT below the time step.
 template <class W>
 SavePoints save_points(const W& w, const RunRequest& request) {
     SavePoints points;
@@ -31,20 +53,14 @@ SavePoints save_points(const W& w, const RunRequest& request) {
             throw InputError({"--save-state", "", 0, 0}, fmt::format("{:g} s is outside the run (0 to {:g} s)", t_s, end_time_s(w)));
         points.steps.push_back(step_at_time(w, t_s));
     }
-    if (request.save_state_every_s > 0.0)
-        points.every_steps = std::max<std::int64_t>(1, std::llround(request.save_state_every_s / w.dt_s));
+    if (request.save_state_every_s > 0.0) points.every_steps = save_every_steps(request, w.dt_s);
     return points;
 }
 
-/// [s] the time a state file is named by: the time asked for (the step nearest 0.3 s may be at
-/// 0.2999994 s), the multiple of --save-state-every, or the step's time on a stop.
+/// The state file of w's step in run_dir: named by the time it holds (io/state_file.hpp).
 template <class W>
-double state_file_time_s(const W& w, SaveReason reason, const RunRequest& request, const SavePoints& points) {
-    if (reason == SaveReason::at_time)
-        for (double t_s : request.save_state_times_s)
-            if (step_at_time(w, t_s) == step_index(w)) return t_s;
-    if (reason == SaveReason::every) return static_cast<double>(step_index(w) / points.every_steps) * request.save_state_every_s;
-    return static_cast<double>(step_index(w)) * w.dt_s;
+std::filesystem::path state_file_of(const std::filesystem::path& run_dir, const W& w) {
+    return state_file_name(run_dir, step_index(w), w.dt_s);
 }
 
 /// The state file's "reason" attribute.

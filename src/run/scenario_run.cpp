@@ -63,16 +63,17 @@ void write_scenario_copy(const toml::table& root, const fs::path& scenario, cons
 }
 
 // Everything that can refuse the run, before anything is written: whether the run fits the
-// machine, and the output folder (not when a restart continues its own folder). Returns whether
-// VTK frames will be written.
-bool check_before_run(const LoadedScenario& loaded, const RunRequest& request, const fs::path& out_dir, bool in_place) {
+// machine, and the output folder (not when a restart continues its own folder), which the run
+// then holds (lock). Returns whether VTK frames will be written.
+bool check_before_run(const LoadedScenario& loaded, const RunRequest& request, const fs::path& out_dir, bool in_place,
+                      RunFolderLock& lock) {
     check_step_count(loaded);
     if (out_dir.empty()) return false;  // (no files)
     const World& world = loaded.world;
     const bool vtk_on = vtk_enabled(loaded.output, world.bodies.size(), world.settings.duration_s);
     for (const std::string& warning : check_run_budget(loaded, estimate_run_budget(loaded, vtk_on), out_dir))
         if (request.on_warning) request.on_warning(warning);
-    if (!in_place) prepare_output_folder(out_dir, request.force);
+    lock = in_place ? RunFolderLock::take(out_dir) : prepare_output_folder(out_dir, request.force);
     return vtk_on;
 }
 
@@ -98,10 +99,13 @@ void check_state_fits(const World& w, const StateFile& state, const fs::path& sc
                          fmt::format("the state does not belong to scenario {}: {}", scenario.string(), *mismatch));
 }
 
-// The checks only a restart needs: the same time step, and a state within the run.
+// The checks only a restart needs: the same bodies' masses, the same time step, and a state
+// within the run.
 void check_restart(const World& w, const StateFile& state, const fs::path& scenario) {
     check_state_fits(w, state, scenario);
     const WorldState& s = state.world();
+    if (auto mismatch = mass_mismatch(w, s))
+        throw InputError({state.path().string(), "", 0, 0}, restart_body_change(scenario, *mismatch));
     if (s.dt_s != w.dt_s)
         throw InputError({state.path().string(), "", 0, 0},
                          fmt::format("the state was saved with dt = {:.17g} s, scenario {} gives dt = {:.17g} s: a "
@@ -123,6 +127,7 @@ struct ScenarioRun::Parts {
     fs::path scenario;   ///< the file run (or the name of a scenario given as text)
     fs::path out_dir;    ///< empty: no files
     bool in_place = false;
+    RunFolderLock folder_lock;   ///< held while the run writes (released after the writers close)
     StartingState start;
     LoadedScenario loaded;
     SavePoints points;
@@ -177,7 +182,7 @@ void ScenarioRun::Parts::start_from_restart_or_initial_state() {
 void ScenarioRun::Parts::open_outputs(bool keep_trace) {
     World& world = loaded.world;
     points = save_points(world, request);
-    const bool vtk_on = check_before_run(loaded, request, out_dir, in_place);
+    const bool vtk_on = check_before_run(loaded, request, out_dir, in_place, folder_lock);
     monitor.emplace(world);
     monitor_state.emplace(*monitor);
     state_parts = {&*monitor_state};
@@ -252,7 +257,7 @@ void ScenarioRun::Parts::save_state(const World& w, SaveReason reason) {
     if (interfaces) interfaces->flush();
     state_info.reason = state_reason(reason);
     state_info.output_rows = output_rows_before(w, w.step_index);
-    const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
+    const fs::path file = state_file_of(out_dir, w);
     std::vector<const StatePart*> const_parts(state_parts.begin(), state_parts.end());
     write_state_file(file, w, state_info, const_parts);
     state_files.push_back(file.string());
@@ -305,6 +310,7 @@ void ScenarioRun::Parts::write_failed_summary(const std::string& error) {
     } catch (const OutputError&) {
         // The disk that stopped the run may refuse the summary too: the first error is the news.
     }
+    folder_lock = RunFolderLock();  // (the run cannot go on: a caller's next run may take the folder)
 }
 
 ScenarioRun::ScenarioRun(const RunRequest& request) : parts_(std::make_unique<Parts>()) {
@@ -315,9 +321,10 @@ ScenarioRun::ScenarioRun(const RunRequest& request) : parts_(std::make_unique<Pa
     if (!request.restart.empty()) {
         p.start.restart.emplace(request.restart);
         check_state_dimension(*p.start.restart, 2);
-        p.start.run_folder = state_run_folder(request.restart, p.start.restart->info());
-        if (p.scenario.empty()) p.scenario = p.start.run_folder / "scenario.toml";
-        if (p.out_dir.empty()) p.out_dir = p.start.run_folder;
+        const RestartFolders folders = restart_folders(request.restart, p.start.restart->info(), p.scenario, p.out_dir);
+        p.start.run_folder = folders.run_folder;
+        p.scenario = folders.scenario;
+        p.out_dir = folders.out_dir;
     }
     std::error_code ec;
     p.in_place = p.start.restart && fs::exists(p.out_dir) && fs::equivalent(p.out_dir, p.start.run_folder, ec);
@@ -391,6 +398,7 @@ nlohmann::json ScenarioRun::finish() {
         write_summary(p.out_dir / "summary.json", summary);
         write_summary(p.out_dir / "run_info.json", p.run_info(status));
     }
+    p.folder_lock = RunFolderLock();  // (written: a caller's next run may take the folder)
     summary["run_folder"] = p.out_dir.string();
     summary["wall_time_s"] = p.wall_s();  // (for the callers that time their runs: converge)
     summary["state_files"] = p.state_files;

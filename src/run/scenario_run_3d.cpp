@@ -211,6 +211,7 @@ struct ScenarioRun3d::Parts {
     std::optional<StateFile> restart;
     fs::path run_folder;            ///< the restarted run's folder
     bool in_place = false;
+    RunFolderLock folder_lock;      ///< held while the run writes (released after the writers close)
     LoadedScenario3d loaded;
     std::optional<ResponseMonitor3d> monitor;
     std::optional<History3dRecorder> history;
@@ -233,9 +234,10 @@ struct ScenarioRun3d::Parts {
         if (!request.restart.empty()) {
             restart.emplace(request.restart);
             check_state_dimension(*restart, 3);
-            run_folder = state_run_folder(request.restart, restart->info());
-            if (scenario.empty()) scenario = run_folder / "scenario.toml";
-            if (out_dir.empty()) out_dir = run_folder;
+            const RestartFolders folders = restart_folders(request.restart, restart->info(), scenario, out_dir);
+            run_folder = folders.run_folder;
+            scenario = folders.scenario;
+            out_dir = folders.out_dir;
             std::error_code ec;
             in_place = fs::exists(out_dir) && fs::equivalent(out_dir, run_folder, ec);
         }
@@ -291,7 +293,7 @@ struct ScenarioRun3d::Parts {
     void open_outputs() {
         const World3d& w = loaded.world;
         const bool vtk_on = vtk_enabled(loaded.output, w.bodies.size(), w.duration_s);
-        if (!in_place) prepare_output_folder(out_dir, request.force);
+        folder_lock = in_place ? RunFolderLock::take(out_dir) : prepare_output_folder(out_dir, request.force);
         const auto mode = restart ? OutputFile::Mode::append : OutputFile::Mode::replace;
         if (restart) {
             const std::int64_t rows = restart->info().output_rows;
@@ -343,7 +345,7 @@ struct ScenarioRun3d::Parts {
         energy->flush();
         state_info.reason = state_reason(reason);
         state_info.output_rows = output_rows_before(w, w.steps);
-        const fs::path file = state_file_name(out_dir, state_file_time_s(w, reason, request, points));
+        const fs::path file = state_file_of(out_dir, w);
         std::vector<const StatePart*> parts = {&*monitor_state};
         if (vtk_state) parts.push_back(&*vtk_state);
         settling_state.emplace(loaded.settled);
@@ -375,6 +377,7 @@ struct ScenarioRun3d::Parts {
             if (!restart && !loaded.initial_state.empty()) run.initial_state = loaded.initial_state;
             write_summary(out_dir / "run_info.json", run_info_json(status, run));
         }
+        folder_lock = RunFolderLock();  // (written: a caller's next run may take the folder)
         summary["run_folder"] = out_dir.string();
         summary["wall_time_s"] = wall_s();
         summary["state_files"] = state_files;

@@ -66,11 +66,13 @@ Setup common_setup(const SweepRequest& request) {
     return s;
 }
 
-// The out folder must be new or hold this very sweep (same fingerprint).
-void check_out_folder(const SweepRequest& request, const Setup& s) {
+// The out folder must be new or hold this very sweep (same fingerprint), and no other sweep may
+// be writing there (two would mix their results): the sweep holds the folder while it runs.
+RunFolderLock check_out_folder(const SweepRequest& request, const Setup& s) {
     std::error_code ec;
     std::filesystem::create_directories(request.out_dir, ec);
     if (ec) throw OutputError(fmt::format("{}: cannot create the folder: {}", request.out_dir.string(), ec.message()));
+    RunFolderLock lock = RunFolderLock::take(request.out_dir);
     // A sweep killed while it replaced a file leaves the temporary behind; the log is the state.
     for (const char* name : {"sweep.json.tmp", "results.csv.tmp"}) std::filesystem::remove(request.out_dir / name, ec);
     const auto manifest = request.out_dir / "sweep.json";
@@ -78,7 +80,7 @@ void check_out_folder(const SweepRequest& request, const Setup& s) {
         if (holds_run(request.out_dir))
             throw InputError({request.out_dir.string(), "", 0, 0},
                              "the folder holds a run of `blockdem run` (summary.json); give the sweep another --out");
-        return;
+        return lock;
     }
     std::ifstream in(manifest);
     const nlohmann::json old = nlohmann::json::parse(in, nullptr, false);
@@ -86,6 +88,7 @@ void check_out_folder(const SweepRequest& request, const Setup& s) {
         throw InputError({request.out_dir.string(), "", 0, 0},
                          "the folder holds a different sweep (other scenario, values, records or solver); use "
                          "another --out, or delete it");
+    return lock;
 }
 
 void write_manifest(const SweepRequest& request, const Setup& s, const SweepProgress& p, const std::string& status) {
@@ -182,10 +185,11 @@ SweepOutcome run_sweep(const SweepRequest& request) {
     std::optional<Setup> setup;
     std::unique_ptr<FinishedCasesLog> log;
     std::exception_ptr setup_error;
+    RunFolderLock folder_lock;
     try {
         setup = common_setup(request);
         if (rank == 0) {
-            check_out_folder(request, *setup);
+            folder_lock = check_out_folder(request, *setup);
             log = std::make_unique<FinishedCasesLog>(request.out_dir / "finished_cases.csv", setup->header);
         }
     } catch (...) {

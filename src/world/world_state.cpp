@@ -1,5 +1,8 @@
 #include "world/world_state.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "contact/contact_forces.hpp"
@@ -26,6 +29,8 @@ WorldState capture_state(const World& w) {
     // The outlines only: a concave body's parts follow from its outline (world.cpp).
     const auto outline_end = static_cast<std::ptrdiff_t>(b.outline_corners());
     s.local_vertices_m.assign(b.local_vertices_m.begin(), b.local_vertices_m.begin() + outline_end);
+    s.mass_kg = b.mass_kg;
+    s.inertia_kg_m2 = b.inertia_kg_m2;
     s.is_static = b.is_static;
     s.position_m = b.position_m;
     s.rotation_rad = b.rotation_rad;
@@ -74,6 +79,23 @@ std::optional<std::string> state_mismatch(const World& w, const WorldState& s) {
             b.part_body[pair.part_b] != pair.b)
             return fmt::format("contact pair {} of the state joins parts {} and {}, which are not parts of bodies '{}' and "
                                "'{}' in the scenario", p + 1, pair.part_a, pair.part_b, b.name[pair.a], b.name[pair.b]);
+    }
+    return std::nullopt;
+}
+
+std::optional<std::string> mass_mismatch(const World& w, const WorldState& s) {
+    const Bodies& b = w.bodies;
+    if (s.mass_kg.size() != b.size() || s.inertia_kg_m2.size() != b.size()) return std::nullopt;
+    // (The same scenario gives the same numbers: the tolerance only forgives the last digit.)
+    const auto differs = [](double a, double c) { return std::abs(a - c) > 1e-12 * std::max(std::abs(a), std::abs(c)); };
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        if (b.kind[i] != BodyKind::dynamic) continue;
+        if (differs(s.mass_kg[i], b.mass_kg[i]))
+            return fmt::format("body '{}' has mass {:g} kg in the state but {:g} kg in the scenario (its density or size "
+                               "changed)", b.name[i], s.mass_kg[i], b.mass_kg[i]);
+        if (differs(s.inertia_kg_m2[i], b.inertia_kg_m2[i]))
+            return fmt::format("body '{}' has moment of inertia {:g} kg m^2 in the state but {:g} kg m^2 in the scenario "
+                               "(its density or size changed)", b.name[i], s.inertia_kg_m2[i], b.inertia_kg_m2[i]);
     }
     return std::nullopt;
 }

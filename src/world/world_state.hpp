@@ -37,6 +37,8 @@ struct WorldState {
     std::vector<BodyKind> kind;
     std::vector<std::uint32_t> vertex_count;
     std::vector<Vec2> local_vertices_m;     ///< [m] the geometry, to recognise the bodies
+    std::vector<double> mass_kg;            ///< [kg] to recognise a changed density (empty: a file from before them)
+    std::vector<double> inertia_kg_m2;      ///< [kg m^2] about the centroid, likewise
     std::vector<std::uint8_t> is_static;    ///< 1 also for bodies taken out of the model
     std::vector<Vec2> position_m;           ///< [m] at t
     std::vector<double> rotation_rad;       ///< [rad] at t
@@ -64,6 +66,12 @@ WorldState capture_state(const World& w);
 /// Why the state cannot belong to w's scenario (another body count, name, kind or shape), or
 /// nullopt when it can.
 std::optional<std::string> state_mismatch(const World& w, const WorldState& s);
+
+/// Why a restart cannot go on from s in w (a dynamic body whose mass or moment of inertia
+/// differs: the state's momenta and energy ledger are those of other bodies), or nullopt. A
+/// state without masses (written before they were saved) passes. A run started from s as its
+/// initial state may change them (its ledger starts at the state).
+std::optional<std::string> mass_mismatch(const World& w, const WorldState& s);
 
 /// Puts w in the saved state, clock included, and a caller's external loads with it: the run goes
 /// on from s.step_index. w must be built from the same scenario (state_mismatch) with the same dt.

@@ -6,7 +6,9 @@
 # from the state it wrote as it stopped; a scenario's [simulation] initial_state starts new runs
 # (and a sweep) from a settled state; a block dropped onto another, whose live limit's ratio is
 # estimated again and saved; bad state files are refused with exit 2, and a state that
-# cannot be written stops the run with exit 4 and leaves no torn file.
+# cannot be written stops the run with exit 4 and leaves no torn file; a restart under a changed
+# density, from a copied folder without scenario.toml, or from /dev/null is refused naming the
+# cause, and --save-state-every below dt too.
 # Usage: test_restart.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$(realpath "$1"); src=$(realpath "$2")
@@ -343,6 +345,33 @@ msg=$( (ulimit -f 20; "$bin" run "$tmp/drums.toml" --set simulation.output_inter
 echo "$msg" | grep -q "state/t_0.300000s.h5" || fail "the full-disk message does not name the state file: $msg"
 [ -n "$(ls -A "$tmp/full/state" 2>/dev/null)" ] && fail "a torn state file was left: $(ls "$tmp/full/state")"
 grep -q '"status": "failed"' "$tmp/full/summary.json" 2>/dev/null || fail "summary.json after a failed state write"
+
+# 6. What a careless user may hand a restart (probe 22), 2-D: another density (mass and moment
+# of inertia of the tombstone changed): refused naming the body and the quantity; a copied run
+# folder without its scenario.toml: refused naming it, the original folder untouched; /dev/null:
+# not a regular file; --save-state-every below dt: refused, nothing written.
+"$bin" run "$src/examples/paper/rocking.toml" --set simulation.duration=0.2 --set output.vtk=false --out "$tmp/rock" -q \
+  --save-state 0.1 > /dev/null 2>&1 || fail "rocking run with a state"
+rock_state="$tmp/rock/state/t_0.100000s.h5"
+sed 's/density = 2600.0/density = 5200.0/' "$src/examples/paper/rocking.toml" > "$tmp/heavy_rock.toml"
+expect 2 "does not belong to scenario.*body 'tombstone' has mass .* kg in the state but .* kg in the scenario" \
+  "$bin" run --restart "$rock_state" "$tmp/heavy_rock.toml" --out "$tmp/x12" -q
+[ -e "$tmp/x12" ] && fail "a refused restart (changed density) wrote $tmp/x12"
+cp -r "$tmp/rock" "$tmp/rock_copy" && rm "$tmp/rock_copy/scenario.toml"
+sum_before=$(md5sum < "$tmp/rock/history.csv")
+expect 2 "rock_copy/scenario.toml: missing" "$bin" run --restart "$tmp/rock_copy/state/t_0.100000s.h5" -q
+[ "$(md5sum < "$tmp/rock/history.csv")" = "$sum_before" ] || fail "a restart from a copied folder wrote into the original"
+grep -q restarted_from "$tmp/rock/run_info.json" 2>/dev/null && grep -q rock_copy "$tmp/rock/run_info.json" \
+  && fail "the original folder's run_info.json names the copy's restart"
+expect 2 "/dev/null: not a regular file" "$bin" run --restart /dev/null -q
+expect 2 "save-state-every: 1e-07 s is below the time step dt" \
+  "$bin" run "$src/examples/paper/rocking.toml" --set simulation.duration=0.001 --save-state-every 1e-7 --out "$tmp/x13" -q
+[ -e "$tmp/x13" ] && fail "a refused --save-state-every wrote $tmp/x13"
+# A dt below 1e-6 s: the names take more decimals, so that no two steps share one.
+"$bin" run "$src/examples/paper/rocking.toml" --set simulation.duration=2e-6 --set simulation.dt=2e-7 --set output.vtk=false \
+  --save-state-every 2e-7 --out "$tmp/fine" -q > /dev/null 2>&1 || fail "--save-state-every dt at dt = 2e-7 s"
+[ "$(ls "$tmp/fine/state" | wc -l)" -eq 10 ] && [ "$(ls "$tmp/fine/state" | head -1)" = t_0.0000002s.h5 ] \
+  || fail "--save-state-every at dt = 2e-7 s wrote: $(ls "$tmp/fine/state")"
 
 [ $failures -eq 0 ] && echo "state files: restarts, interruptions and initial states give identical, whole results"
 exit $failures

@@ -6,7 +6,11 @@
 # the state it wrote as it stopped and ends as a run straight to the same time; a 3-D state
 # given a 2-D scenario, a state of another scenario and a 2-D state given to a 3-D scenario are
 # refused with exit 2, naming the file, and so is a state whose deepest-overlap pair names no
-# body; a state without the deepest overlap (saved before it was kept) restarts.
+# body; a state without the deepest overlap (saved before it was kept) restarts; a restart under
+# bodies of another mass or shape is refused naming the body; a copied run folder goes on in
+# itself (or is refused naming its missing scenario.toml), never in the folder the state names;
+# --save-state-every below dt is refused, and files of a DT that is no whole number of steps are
+# named by the times they hold.
 # Usage: test_restart_3d.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$(realpath "$1"); src=$(realpath "$2")
@@ -129,6 +133,59 @@ PY
 "$bin" run "$src/examples/paper/sliding.toml" --out "$tmp/flat" --set simulation.duration=0.2 --save-state 0.1 -q >"$tmp/log" 2>&1 \
   || fail "the 2-D run failed: $(cat "$tmp/log")"
 refused "2-D state, 3-D scenario" "$tmp/flat/state/t_0.100000s.h5" "$drums" --out "$tmp/bad3" -- "a 2-D state: scenario"
+
+# 5. A restart under bodies that changed (another density, another radius): refused naming the
+# body and the quantity, not run into an energy failure that blames dt.
+sed 's/density = 2700.0/density = 5400.0/' "$drums" > "$tmp/heavier.toml"
+sed 's/radius = 0.3 /radius = 0.31 /' "$drums" > "$tmp/wider.toml"
+state="$tmp/first/state/t_0.100000s.h5"
+refused "denser drums" "$state" "$tmp/heavier.toml" --out "$tmp/heavier" -- \
+  "does not belong to scenario" "body 'drum_1' has mass" "kg in the state but" "initial_state"
+refused "wider drums" "$state" "$tmp/wider.toml" --out "$tmp/wider" -- "body 'drum_1' has another shape in the state"
+[[ ! -e "$tmp/heavier" && ! -e "$tmp/wider" ]] || fail "a refused restart created its --out"
+# ... and an unchanged scenario given again still restarts (the same masses, exactly).
+"$bin" run --restart "$state" "$drums" --set simulation.duration=0.2 --out "$tmp/same_bodies" -q --threads 1 >"$tmp/log" 2>&1 \
+  || fail "a restart under the same scenario was refused: $(cat "$tmp/log")"
+
+# 6. The folder a restart goes on in: a copy of the run folder without its scenario.toml is
+# refused naming it (never the original folder the state names); a state copied out of its run
+# needs --out; /dev/null is not a state file.
+cp -r "$tmp/first" "$tmp/copy"
+rm "$tmp/copy/scenario.toml"
+before=$(md5sum < "$tmp/first/history.csv")
+refused "a copied folder without scenario.toml" "$tmp/copy/state/t_0.100000s.h5" -- "$tmp/copy/scenario.toml" "missing"
+[[ "$(md5sum < "$tmp/first/history.csv")" == "$before" ]] || fail "a restart from the copy wrote into the original folder"
+"$bin" run --restart "$tmp/copy/state/t_0.100000s.h5" "$drums" --set simulation.duration=0.2 -q --threads 1 >"$tmp/log" 2>&1 \
+  || fail "a restart in the copy, with the scenario given, failed: $(cat "$tmp/log")"
+[[ "$(md5sum < "$tmp/first/history.csv")" == "$before" ]] || fail "the restart in the copy wrote into the original folder"
+same_results "restarted in a copy of its folder" "$tmp/whole" "$tmp/copy"
+cp "$state" "$tmp/lone.h5"
+refused "a state outside a state/ folder" "$tmp/lone.h5" -- "lone.h5" "give --out"
+refused "/dev/null" /dev/null -- "/dev/null: not a regular file"
+
+# 7. --save-state-every: below dt refused (exit 2, nothing written), 1.5 dt saved every 2 steps
+# with each file named by the time it holds, no name written twice.
+dt=$(/usr/bin/python3 -c "import h5py, sys; print(repr(h5py.File(sys.argv[1], 'r').attrs['dt_s']))" "$state")
+out=$("$bin" run "$drums" --out "$tmp/every_tiny" --set simulation.duration=0.01 --save-state-every 1e-9 -q 2>&1); status=$?
+[[ $status -eq 2 ]] || fail "--save-state-every 1e-9: exit status $status, expected 2: $out"
+expect_in "$out" "--save-state-every: 1e-09 s is below the time step dt = "
+[[ ! -e "$tmp/every_tiny" ]] || fail "a refused --save-state-every created its --out"
+every=$(/usr/bin/python3 -c "print(repr(1.5 * $dt))")
+out=$("$bin" run "$drums" --out "$tmp/every_odd" --set simulation.duration=0.01 --save-state-every "$every" -q 2>&1) \
+  || fail "--save-state-every 1.5 dt: $out"
+expect_in "$out" "is not a whole number of time steps"
+/usr/bin/python3 - "$tmp/every_odd" <<'PY' || fail "--save-state-every 1.5 dt: files not named by their times"
+import glob, json, os, sys, h5py
+folder = sys.argv[1]
+listed = json.load(open(f"{folder}/run_info.json"))["state_files"]
+assert len(listed) == len(set(listed)) > 10, listed
+files = sorted(glob.glob(f"{folder}/state/t_*.h5"))
+assert len(files) == len(listed), (len(files), len(listed))
+for path in files:
+    f = h5py.File(path, "r")
+    assert os.path.basename(path) == f"t_{f.attrs['time_s']:.6f}s.h5", (path, f.attrs["time_s"])
+    assert f.attrs["step_index"] % 2 == 0, (path, f.attrs["step_index"])
+PY
 
 if [[ $failures -gt 0 ]]; then echo "$failures failure(s)"; exit 1; fi
 echo "test_restart_3d: all passed"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # `blockdem run` when something goes wrong around the physics, and the exit codes of
 # docs/outputs.md: a write that fails (file-size limit), an --out folder that holds another run
-# (--force), a run that would not fit the machine (duration 1e300, memory, disk), a failed
+# (--force) or a run still in progress (refused even with --force), a run that would not fit the machine (duration 1e300, memory, disk), a failed
 # settle, a stop while settling, a bad command line, an internal error.
 # Usage: test_run_faults.sh BLOCKDEM SOURCE_DIR
 set -u
@@ -51,6 +51,34 @@ expect_in "$msg" "the folder holds a run of \`blockdem run\`"
 msg=$("$bin" run "$sliding" --out "$tmp/sweep" -q --force 2>&1); rc=$?
 [ $rc -eq 2 ] || fail "run into a sweep folder: exit $rc, expected 2"
 expect_in "$msg" "the folder holds a sweep (sweep.json)"
+#    A folder a run is still writing in: refused even with --force (exit 2), naming the folder
+#    and the live run's pid, its files left alone; so is a restart in place from its state and a
+#    second sweep into a live sweep's folder. Killed (SIGKILL: no chance to clean up), the run
+#    holds nothing: the next --force run takes the folder, and removes run.lock at its end.
+"$bin" run "$sliding" --out "$tmp/live" -q --set simulation.duration=300 --set output.vtk=false --save-state 0 \
+  > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 200); do [ -n "$(ls "$tmp/live/state" 2>/dev/null)" ] && break; sleep 0.05; done
+msg=$("$bin" run "$sliding" --out "$tmp/live" -q --force --set simulation.duration=0.05 2>&1); rc=$?
+[ $rc -eq 2 ] || fail "--force into a live run's folder: exit $rc, expected 2 ($msg)"
+expect_in "$msg" "$tmp/live: the run of pid $pid is writing in this folder (run.lock is locked)"
+grep -q "duration = 300" "$tmp/live/scenario.toml" || fail "a refused run touched the live run's scenario.toml"
+msg=$("$bin" run --restart "$tmp/live/state/t_0.000000s.h5" -q 2>&1); rc=$?
+[ $rc -eq 2 ] || fail "restart in place into a live run's folder: exit $rc, expected 2 ($msg)"
+expect_in "$msg" "the run of pid $pid is writing in this folder"
+kill -KILL $pid; wait $pid 2>/dev/null
+[ -f "$tmp/live/run.lock" ] || fail "no run.lock in the folder of a live run"
+"$bin" run "$sliding" --out "$tmp/live" -q --force --set simulation.duration=0.05 > /dev/null 2>&1 \
+  || fail "the folder of a killed run stayed locked"
+[ ! -e "$tmp/live/run.lock" ] || fail "run.lock left behind by a finished run"
+live_sweep=("$sliding" -q --vary contact.mu=0.3,0.4 --vary simulation.duration=300 --threads 1 --out "$tmp/live_sweep")
+"$bin" sweep "${live_sweep[@]}" > /dev/null 2>&1 &
+pid=$!
+for _ in $(seq 200); do [ -f "$tmp/live_sweep/sweep.json" ] && break; sleep 0.05; done
+msg=$("$bin" sweep "${live_sweep[@]}" 2>&1); rc=$?
+[ $rc -eq 2 ] || fail "a second sweep into a live sweep's folder: exit $rc, expected 2 ($msg)"
+expect_in "$msg" "the run of pid $pid is writing in this folder"
+kill -KILL $pid; wait $pid 2>/dev/null
 #    A folder with no run: other files are fine, a file with one of blockdem's names is not
 #    (not even with --force: it is not blockdem's to remove).
 mkdir "$tmp/mine" && echo "data" > "$tmp/mine/readme.txt"
