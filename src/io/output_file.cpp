@@ -74,8 +74,12 @@ void write_output_file(const std::filesystem::path& file, std::string_view text)
         out.append(text);
         out.close();
     } catch (const OutputError&) {
+        // Half a JSON or VTK file is worse than none; but a device, a pipe or a link named as the
+        // output is the user's, not a half-written file: removing /dev/full once made it a plain
+        // file that the next write filled without an error.
         std::error_code ignored;
-        std::filesystem::remove(file, ignored);  // half a JSON or VTK file is worse than none
+        if (std::filesystem::symlink_status(file, ignored).type() == std::filesystem::file_type::regular)
+            std::filesystem::remove(file, ignored);
         throw;
     }
 }
