@@ -5,7 +5,6 @@
 // library (study/rocking_calibration.hpp) runs the engine's own free-rocking block and root-finds
 // on h_n; this file checks the input, prints the fit and the scenario keys to paste.
 #include <cmath>
-#include <fstream>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -16,8 +15,10 @@
 #include "apps/blockdem/commands.hpp"
 #include "apps/blockdem/option_checks.hpp"
 #include "io/input_error.hpp"
+#include "io/output_file.hpp"
 #include "laws/restitution.hpp"
 #include "study/rocking_calibration.hpp"
+#include "world/simulation_error.hpp"
 #include "world/world.hpp"
 
 namespace blockdem::cli {
@@ -162,8 +163,44 @@ std::string contact_keys(const RockingFit& fit, const std::string& e_meaning) {
     return keys;
 }
 
-void run_calibrate(const CalibrateOptions& o) {
+// The calibration fits a block that rocks on its corners: refused up front when it cannot (the
+// DEM would run and fail with an unrelated remedy, or "fit" runs in which the block slid).
+void check_block_rocks(const RockingBlock& block, bool mu_given) {
+    const double aspect = block.width_m / block.height_m;  // [-] b/h = tan alpha
+    switch (rocking_obstacle(block)) {
+        case RockingObstacle::none: return;
+        case RockingObstacle::too_squat:
+            bad("--width", fmt::format("with --height {:g} m: width / height = {:.4g} is at least sqrt(2), so Housner's r = "
+                                       "1 - 1.5 sin^2 alpha = {:.4g} <= 0: the block's first impact stops it and it does not "
+                                       "rock on, so there is no rocking restitution to fit; calibrate on a block with "
+                                       "width / height < 1.414 (--height above {:.4g} m)",
+                                       block.height_m, aspect, housner_restitution(block.alpha_rad()),
+                                       block.width_m / std::numbers::sqrt2));
+        case RockingObstacle::slides:
+            bad("--mu", fmt::format("{:g}{} is below the block's b/h = width / height = {:.4g}: a block whose friction is below "
+                                    "b/h slides before it tips, and a rocking one slips at its corners (its peaks then read "
+                                    "r > 1 per impact), so the runs would not be free rocking; give --mu of at least {:.4g} "
+                                    "(docs/calibration.md)",
+                                    block.contact.mu, mu_given ? "" : " (the default)", aspect, aspect));
+    }
+}
+
+// An impact whose r is >= 1 gained energy: the block slid or bounced, and a fit through it is no
+// rocking restitution (physics, exit 3).
+void check_fit_rocks(const RockingFit& fit, const char* name) {
+    const int k = first_energy_gaining_impact(fit.run);
+    if (k < 0) return;
+    throw SimulationError(fmt::format(
+        "the fitted run ({} = {:.6g}) gained energy at impact {}: r = {:.6g} >= 1 (per impact {:.5f}), so the block slid or "
+        "bounced instead of rocking on its corners and the fit is not a rocking restitution; raise --mu or --h-s, or lower "
+        "--tilt (docs/calibration.md)",
+        name, fit.parameter == CalibratedParameter::kn ? fit.contact.kn_N_m : fit.contact.h_n, k + 1,
+        fit.run.impact_restitution[static_cast<std::size_t>(k)], fmt::join(fit.run.impact_restitution, ", ")));
+}
+
+void run_calibrate(const CalibrateOptions& o, bool mu_given) {
     RockingBlock block = read_block(o);
+    check_block_rocks(block, mu_given);
     const double alpha = block.alpha_rad();
     const Target target = read_target(o, alpha);
     const double tilt = o.tilt_rad ? *o.tilt_rad : target.tilt_rad > 0.0 ? target.tilt_rad : 0.5 * alpha;
@@ -207,6 +244,7 @@ void run_calibrate(const CalibrateOptions& o) {
                               "--fit kn (docs/calibration.md)"
                             : "Above it the impact must give energy back: a lighter damping or a stiffer kn"));
     }
+    check_fit_rocks(fit, name);
     const double static_overlap_m = block.gravity_m_s2 * block.density_kg_m3 * block.width_m * block.height_m * block.thickness_m /
                                     (2.0 * fit.contact.kn_N_m);
     fmt::print("fit         {} = {:.6g}: r = {:.6f} (per impact {:.5f}), residual {:+.2e}, {} DEM runs, dt = {:.4g} s\n", name,
@@ -216,13 +254,10 @@ void run_calibrate(const CalibrateOptions& o) {
                static_overlap_m / block.width_m);
     const std::string keys = contact_keys(fit, o.e_meaning);
     fmt::print("\n# scenario keys (paste into the scenario):\n{}", keys);
-    if (!o.toml_file.empty()) {
-        std::ofstream out(o.toml_file);
-        out << fmt::format("# blockdem calibrate: {}; fitted r = {:.6f} after {} DEM runs\n", target.source,
-                           fit.achieved_restitution, fit.dem_runs)
-            << keys;
-        if (!out) throw std::runtime_error(fmt::format("cannot write {}", o.toml_file));
-    }
+    if (!o.toml_file.empty())
+        write_output_file(o.toml_file, fmt::format("# blockdem calibrate: {}; fitted r = {:.6f} after {} DEM runs\n",
+                                                   target.source, fit.achieved_restitution, fit.dem_runs) +
+                                           keys);
 }
 
 }  // namespace
@@ -237,7 +272,7 @@ void add_calibrate_command(CLI::App& app) {
     cmd->add_option("--gravity", options->gravity_m_s2, "[m/s^2]")->capture_default_str();
     cmd->add_option("--kn", options->kn_N_m, "[N/m] normal stiffness per contact point")->required();
     cmd->add_option("--ks", options->ks_N_m, "[N/m] shear stiffness (default: kn)");
-    cmd->add_option("--mu", options->mu, "friction coefficient (high enough that the block rocks without sliding)")
+    CLI::Option* mu = cmd->add_option("--mu", options->mu, "friction coefficient, at least width / height (so that the block rocks without sliding)")
         ->capture_default_str();
     cmd->add_option("--h-s", options->h_s, "shear damping ratio")->capture_default_str();
     cmd->add_option("--fit", options->fit, "what to fit: h_n (at the given kn) or kn (at the given --h-n)")
@@ -262,7 +297,7 @@ void add_calibrate_command(CLI::App& app) {
     cmd->add_option("--tolerance", options->tolerance, "on r: |achieved - target| at most this")->capture_default_str();
     cmd->add_option("--dt", options->dt_s, "[s] time step of the DEM runs (default: dt_safety x the stable limit, as a run)");
     cmd->add_option("--toml", options->toml_file, "also write the scenario keys to this file")->check(output_file());
-    cmd->callback([options] { run_calibrate(*options); });
+    cmd->callback([options, mu] { run_calibrate(*options, mu->count() > 0); });
 }
 
 }  // namespace blockdem::cli

@@ -1,10 +1,11 @@
 // The static theorem as an LP (limit_analysis.hpp). Columns: per interface end, two
-// non-negative multiples of its friction cone's edges, n + mu t and n - mu t (associative), or
-// n >= 0 and a free s (non-associative); last, the free lambda. Rows: per dynamic body, force x,
-// force y and moment about its centroid (equalities: the interface forces plus lambda x live
-// load equal minus the dead load); with n and s, also per interface end s - mu n <= 0 and
-// -s - mu n <= 0. Forces are scaled by the heaviest body's weight and lengths by the largest
-// body's size, so that the coefficients are of order one whatever the units of the model.
+// non-negative multiples of its friction cone's edges, n + mu t and n - mu t (associative, every
+// mu at most cone_edges_max_mu), or n >= 0 and a free s (non-associative, or a larger mu); last,
+// the free lambda. Rows: per dynamic body, force x, force y and moment about its centroid
+// (equalities: the interface forces plus lambda x live load equal minus the dead load); with n
+// and s, also per interface end s - mu n <= 0 and -s - mu n <= 0 (divided by mu where mu > 1).
+// Forces are scaled by the heaviest body's weight and lengths by the largest body's size, so that
+// the coefficients are of order one whatever the units of the model.
 // GLPK's primal simplex (no presolve, so that an infeasible or unbounded problem still reports
 // its status and an optimum its dual values; its presolver, dual simplex and interior point
 // were no faster on walls of 1000 bricks: docs/limit_analysis.md). Non-associative friction
@@ -23,6 +24,7 @@
 
 #include <glpk.h>
 
+#include "analysis/glpk_guard.hpp"
 #include "geometry/polygon.hpp"
 
 namespace blockdem {
@@ -100,25 +102,6 @@ double largest_extent_m(const Model& model) {
 double mass_of(const BodyDef& b, const PolygonProperties& p) {
     return b.mass_kg.value_or(b.density_kg_m3 * p.area_m2 * b.thickness_m);
 }
-
-// GLPK's scaling and basis routines print to the terminal whatever the solver's message level:
-// its terminal output is off while a problem is solved, and restored after (the physics never
-// prints).
-struct GlpkSilence {
-    int previous = glp_term_out(GLP_OFF);
-    GlpkSilence() = default;
-    GlpkSilence(const GlpkSilence&) = delete;
-    GlpkSilence& operator=(const GlpkSilence&) = delete;
-    ~GlpkSilence() { glp_term_out(previous); }
-};
-
-struct GlpkProblem {
-    glp_prob* lp = glp_create_prob();
-    GlpkProblem() = default;
-    GlpkProblem(const GlpkProblem&) = delete;
-    GlpkProblem& operator=(const GlpkProblem&) = delete;
-    ~GlpkProblem() { glp_delete_prob(lp); }
-};
 
 // GLPK's sparse matrix, 1-based (entry 0 unused).
 struct Triplets {
@@ -236,14 +219,27 @@ std::vector<InterfaceKinematics> interface_kinematics(const Model& model, const 
         return motions[body].velocity + cross(motions[body].rotation, p - centroids[body]);
     };
     std::vector<InterfaceKinematics> out(interfaces.size());
-    double largest = 0.0;
+    double largest_raw = 0.0;
     for (std::size_t k = 0; k < interfaces.size(); ++k) {
         const BlockInterface& f = interfaces[k];
         for (int j = 0; j < 2; ++j) {
             const Vec2 relative = velocity_at(f.body_b, f.end_m[j]) - velocity_at(f.body_a, f.end_m[j]);
             out[k].slip[j] = dot(relative, perp(f.normal));
-            out[k].opening[j] = dot(relative, f.normal) - (dilation ? f.mu * std::abs(out[k].slip[j]) : 0.0);
-            largest = std::max({largest, std::abs(out[k].slip[j]), std::abs(out[k].opening[j])});
+            out[k].opening[j] = dot(relative, f.normal);
+            largest_raw = std::max({largest_raw, std::abs(out[k].slip[j]), std::abs(out[k].opening[j])});
+        }
+    }
+    // A slip below the resolution of the LP's duals (GLPK's tolerances, 1e-7) is none: times a
+    // large mu (1e9, or 1e300: a joint that cannot slip) it would be a dilation that swamps every
+    // real motion. A real slip there dilates by at most the largest motion, so mu |slip| <= 1e-7 x
+    // it needs mu < 1e7 to matter, and then it is below 5 % anyway.
+    const double round_off = 1e-7 * largest_raw;
+    double largest = 0.0;
+    for (std::size_t k = 0; k < interfaces.size(); ++k) {
+        for (int j = 0; j < 2; ++j) {
+            const double slip = std::abs(out[k].slip[j]);
+            if (dilation && slip > round_off) out[k].opening[j] -= interfaces[k].mu * slip;
+            largest = std::max({largest, slip, std::abs(out[k].opening[j])});
         }
     }
     const double tolerance = relative_tolerance * largest;
@@ -295,15 +291,42 @@ Rows body_rows(const Model& model) {
 // changes the friction rows into shear capacities, so it keeps n >= 0, a free s and the rows.
 enum class Formulation { cone_edges, normal_and_shear };
 
-// The friction rows of interface k's end j (1-based): s - mu n <= 0, then -s - mu n <= 0.
+// The cone's edges n + mu t and n - mu t turn antiparallel as mu grows: a shear is mu (c1 - c2),
+// a difference of two columns of order n, so the simplex's tolerances on the columns grow by mu on
+// the shears and lambda loses about log10(mu) digits (mu = 1e9: 1e-7 of lambda; 1e10: lambda of
+// the wrong sign; 1e300: GLPK's scaling breaks down). Above this mu the LP keeps n, s and friction
+// rows, whose coefficients stay within 1 whatever mu (friction_rows_of); up to it the cone's
+// smaller basis is kept. Measured on examples/limit/wall_with_window.toml, the two agree to 1e-15
+// up to mu = 5, the cone is 3e-7 off at mu = 10 and 6e-5 at mu = 100 (docs/limit_analysis.md).
+constexpr double cone_edges_max_mu = 2.0;
+
+Formulation formulation_for(const std::vector<BlockInterface>& faces, FrictionFlow friction) {
+    if (friction == FrictionFlow::non_associative) return Formulation::normal_and_shear;
+    const bool steep = std::any_of(faces.begin(), faces.end(), [](const BlockInterface& f) { return !(f.mu <= cone_edges_max_mu); });
+    return steep ? Formulation::normal_and_shear : Formulation::cone_edges;
+}
+
+// |s| <= mu n as two rows, s - mu n <= 0 and -s - mu n <= 0, divided by mu where mu > 1 so that
+// their coefficients stay within 1 and a row's tolerance is a force whatever mu; past mu = 1e13
+// 1 / mu falls below Triplets' round-off cut and the rows read n >= 0: a joint that cannot slip.
+void friction_rows_of(Triplets& m, int first_row, int normal_col, double mu) {
+    const double scale = 1.0 / std::max(1.0, mu);
+    m.add(first_row, normal_col + 1, scale);
+    m.add(first_row, normal_col, -mu * scale);
+    m.add(first_row + 1, normal_col + 1, -scale);
+    m.add(first_row + 1, normal_col, -mu * scale);
+}
+
+// The friction rows of interface k's end j (1-based): the upper face of the cone, then the lower one.
 int friction_row(const Rows& rows, std::size_t k, int j) { return rows.equilibrium_rows + static_cast<int>(4 * k) + 2 * j + 1; }
 
 int lambda_column(const std::vector<BlockInterface>& faces) { return static_cast<int>(4 * faces.size()) + 1; }
 
-// Rows, columns, bounds and the matrix of the associative LP.
-void build_problem(glp_prob* lp, const Model& model, const std::vector<BlockInterface>& faces, const Rows& rows, Vec2 live,
+// Rows, columns, bounds and the matrix of the LP.
+void build_problem(GlpkProblem& problem, const Model& model, const std::vector<BlockInterface>& faces, const Rows& rows, Vec2 live,
                    Formulation formulation) {
     const bool cone = formulation == Formulation::cone_edges;
+    glp_prob* lp = problem.lp;
     glp_set_obj_dir(lp, GLP_MAX);
     glp_add_rows(lp, rows.equilibrium_rows + (cone ? 0 : static_cast<int>(4 * faces.size())));
     const int lambda = lambda_column(faces);
@@ -347,29 +370,30 @@ void build_problem(glp_prob* lp, const Model& model, const std::vector<BlockInte
             const int rf = friction_row(rows, k, j);
             glp_set_row_bnds(lp, rf, GLP_UP, 0.0, 0.0);
             glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, 0.0);
-            m.add(rf, cs, 1.0);
-            m.add(rf, cn, -f.mu);
-            m.add(rf + 1, cs, -1.0);
-            m.add(rf + 1, cn, -f.mu);
+            friction_rows_of(m, rf, cn, f.mu);
         }
     }
     glp_set_col_bnds(lp, lambda, GLP_FR, 0.0, 0.0);
     glp_set_obj_coef(lp, lambda, 1.0);
-    glp_load_matrix(lp, static_cast<int>(m.row.size()) - 1, m.row.data(), m.column.data(), m.value.data());
+    glpk_guarded(problem, [&] { glp_load_matrix(lp, static_cast<int>(m.row.size()) - 1, m.row.data(), m.column.data(), m.value.data()); });
 }
 
 // Solves from the current basis (from a fresh one if that fails) and says how it ended.
-LimitStatus solve(glp_prob* lp) {
+LimitStatus solve(GlpkProblem& problem) {
+    glp_prob* lp = problem.lp;
     glp_smcp parameters;
     glp_init_smcp(&parameters);
     parameters.msg_lev = GLP_MSG_OFF;
     parameters.presolve = GLP_OFF;
-    glp_scale_prob(lp, GLP_SF_AUTO);
-    if (glp_simplex(lp, &parameters) != 0) {
+    int code = 0;
+    glpk_guarded(problem, [&] {
+        glp_scale_prob(lp, GLP_SF_AUTO);
+        code = glp_simplex(lp, &parameters);
+        if (code == 0) return;
         glp_adv_basis(lp, 0);
-        const int code = glp_simplex(lp, &parameters);
-        if (code != 0) throw std::runtime_error("limit analysis: the LP solver (GLPK) failed, code " + std::to_string(code));
-    }
+        code = glp_simplex(lp, &parameters);
+    });
+    if (code != 0) throw std::runtime_error("limit analysis: the LP solver (GLPK) failed, code " + std::to_string(code));
     const int status = glp_get_status(lp);
     if (status == GLP_NOFEAS || status == GLP_INFEAS) return LimitStatus::no_equilibrium;
     if (status == GLP_UNBND) return LimitStatus::unbounded;
@@ -382,8 +406,9 @@ LimitStatus solve(glp_prob* lp) {
 // mu n each time, and the LP solved again from its last basis until lambda settles (Gilbert,
 // Casapulla and Ahmed 2006). A heuristic: it may stop at a solution that is not the least
 // non-associative one (docs/limit_analysis.md).
-LimitStatus iterate_non_associative(glp_prob* lp, const std::vector<BlockInterface>& faces, const Rows& rows,
+LimitStatus iterate_non_associative(GlpkProblem& problem, const std::vector<BlockInterface>& faces, const Rows& rows,
                                     const LimitOptions& options, LimitResult& result) {
+    glp_prob* lp = problem.lp;
     auto mu_n = [&](std::size_t k, int j) { return faces[k].mu * std::max(0.0, glp_get_col_prim(lp, normal_column(k, j))); };
     std::vector<double> capacity(2 * faces.size());
     for (std::size_t k = 0; k < faces.size(); ++k)
@@ -398,11 +423,14 @@ LimitStatus iterate_non_associative(glp_prob* lp, const std::vector<BlockInterfa
                 double plus[2] = {0.0, 1.0}, minus[2] = {0.0, -1.0};
                 glp_set_mat_row(lp, rf, 1, index, plus);        // s <= c
                 glp_set_mat_row(lp, rf + 1, 1, index, minus);   // -s <= c
-                glp_set_row_bnds(lp, rf, GLP_UP, 0.0, capacity[2 * k + j]);
-                glp_set_row_bnds(lp, rf + 1, GLP_UP, 0.0, capacity[2 * k + j]);
+                // mu n past the largest double (mu = 1e308 on a joint carrying two weights) bounds nothing.
+                const double c = capacity[2 * k + j];
+                const int bound = std::isfinite(c) ? GLP_UP : GLP_FR;
+                glp_set_row_bnds(lp, rf, bound, 0.0, std::isfinite(c) ? c : 0.0);
+                glp_set_row_bnds(lp, rf + 1, bound, 0.0, std::isfinite(c) ? c : 0.0);
             }
         }
-        const LimitStatus status = solve(lp);
+        const LimitStatus status = solve(problem);
         if (status != LimitStatus::collapse) return status;
         const double lambda = glp_get_col_prim(lp, lambda_column(faces));
         for (std::size_t k = 0; k < faces.size(); ++k)
@@ -487,13 +515,12 @@ LimitResult solve_limit_analysis(const Model& model, const LimitOptions& options
 
     const GlpkSilence silence;
     GlpkProblem problem;
-    const Formulation formulation =
-        options.friction == FrictionFlow::associative ? Formulation::cone_edges : Formulation::normal_and_shear;
-    build_problem(problem.lp, model, faces, rows, live, formulation);
-    glp_adv_basis(problem.lp, 0);
-    result.status = solve(problem.lp);
+    const Formulation formulation = formulation_for(faces, options.friction);
+    build_problem(problem, model, faces, rows, live, formulation);
+    glpk_guarded(problem, [&] { glp_adv_basis(problem.lp, 0); });
+    result.status = solve(problem);
     if (result.status == LimitStatus::collapse && options.friction == FrictionFlow::non_associative)
-        result.status = iterate_non_associative(problem.lp, faces, rows, options, result);
+        result.status = iterate_non_associative(problem, faces, rows, options, result);
     result.lp_solve_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - lp_start).count();
     if (result.status != LimitStatus::collapse) return result;
 

@@ -74,11 +74,11 @@ void write_output_file(const std::filesystem::path& file, std::string_view text)
         out.append(text);
         out.close();
     } catch (const OutputError&) {
-        // Half a JSON or VTK file is worse than none; but only a plain file is removed: a device
-        // (--json /dev/full) or a pipe named as the output is the user's, and removing /dev/full,
-        // as root, left a plain file in its place for every later writer.
+        // Half a JSON or VTK file is worse than none; but a device, a pipe or a link named as the
+        // output is the user's, not a half-written file: removing /dev/full once made it a plain
+        // file that the next write filled without an error.
         std::error_code ignored;
-        if (std::filesystem::is_regular_file(std::filesystem::status(file, ignored)))
+        if (std::filesystem::symlink_status(file, ignored).type() == std::filesystem::file_type::regular)
             std::filesystem::remove(file, ignored);
         throw;
     }

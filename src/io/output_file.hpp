@@ -47,7 +47,8 @@ private:
 };
 
 /// Writes a whole small file (JSON, TOML, a VTK frame) through OutputFile. On failure the
-/// partial file is removed and OutputError is thrown.
+/// partial file is removed (a regular file only: a device or a link is left alone) and
+/// OutputError is thrown.
 void write_output_file(const std::filesystem::path& file, std::string_view text);
 
 }  // namespace blockdem

@@ -19,6 +19,18 @@ double housner_restitution(double alpha_rad) {
     return 1.0 - 1.5 * s * s;
 }
 
+RockingObstacle rocking_obstacle(const RockingBlock& block) {
+    if (!(housner_restitution(block.alpha_rad()) > 0.0)) return RockingObstacle::too_squat;
+    if (block.contact.mu < block.width_m / block.height_m) return RockingObstacle::slides;
+    return RockingObstacle::none;
+}
+
+int first_energy_gaining_impact(const FreeRocking& run) {
+    for (std::size_t k = 0; k < run.impact_restitution.size(); ++k)
+        if (!(run.impact_restitution[k] < 1.0)) return static_cast<int>(k);
+    return -1;
+}
+
 std::vector<double> restitution_from_peaks(double alpha_rad, const std::vector<double>& peaks_rad) {
     // Potential energy above the upright position at tilt theta, per m g R: cos(alpha - theta) - cos(alpha)
     // (the kinetic energy at the impact, I_O omega^2 / 2, equals it on either side of the impact).

@@ -41,6 +41,21 @@ struct RockingBlock {
 /// Housner's restitution 1 - 1.5 sin^2 alpha: a rigid block whose new pivot neither bounces nor slips.
 double housner_restitution(double alpha_rad);
 
+/// Why a block cannot rock freely on its corners as the calibration assumes.
+enum class RockingObstacle {
+    none,
+    /// width / height >= sqrt 2: Housner's r = 1 - 1.5 sin^2 alpha <= 0, so a rigid block's first
+    /// impact stops it (the angular momentum about the new corner is zero or reversed): it does
+    /// not rock on, and no rocking restitution can be measured or fitted.
+    too_squat,
+    /// mu < b/h = width / height (tan alpha): the static criterion; a horizontal push slides the
+    /// block before it can tip it, and a rocking block's corner slips (its peaks then read r > 1).
+    slides,
+};
+
+/// The first obstacle of the block and its contact's friction, in the order above.
+RockingObstacle rocking_obstacle(const RockingBlock& block);
+
 /// r of each impact from successive peak rotations |theta_0|, |theta_1|, ... [rad] (the first
 /// the release or an earlier peak), by the energy of rigid rocking between impacts.
 std::vector<double> restitution_from_peaks(double alpha_rad, const std::vector<double>& peaks_rad);
@@ -57,6 +72,10 @@ struct FreeRocking {
     long long steps = 0;                  ///< steps taken
     bool overturned = false;              ///< the block toppled (then no r is measured)
 };
+
+/// Index of the first impact whose r is >= 1 (an impact that gained energy: the block slid or
+/// bounced, so its peaks are not those of rigid rocking), or -1.
+int first_energy_gaining_impact(const FreeRocking& run);
 
 /// Releases the block from its tilt with its contact (block.contact, h_n included) and measures
 /// block.impacts impacts. Throws ModelError (world/world.hpp) for a block the engine refuses

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end checks of `blockdem calibrate` (docs/calibration.md): a fit from r, from r^2 and
 # from a decay of peaks; the keys it prints load in a scenario that `blockdem check` accepts;
-# fitting kn; and bad input (exit 2 with a message naming the option).
+# fitting kn; and bad input (exit 2 with a message naming the option), a block too squat to rock
+# or whose friction is below b/h among it; --toml that cannot be written exits 4.
 # The blocks are 0.2 m wide concrete, kn = 1e7 N/m: each DEM run takes a few milliseconds.
 # Usage: test_calibrate_command.sh BLOCKDEM SOURCE_DIR
 set -u
@@ -80,6 +81,21 @@ expect_bad "give exactly one of" "${block[@]}" --restitution 0.9 --energy-ratio 
 expect_bad "free rocking only decays" "${block[@]}" --peaks 3,4 --peaks-unit deg
 expect_bad "or the block would topple" "${block[@]}" --peaks 20,10 --peaks-unit deg
 expect_bad "--fit kn needs" "${block[@]}" --fit kn --restitution 0.9
+# A friction below b/h (0.05 < 0.2 / 0.6): the block would slide, and the "fit" came from runs
+# with per-impact r of 1.23 and 1.25; the default mu 0.8 below b/h = 1 is named as the default.
+expect_bad "key '--mu': 0.05 is below the block's b/h = width / height = 0.3333" --width 0.2 --height 0.6 --kn 1e7 --restitution 0.8 --mu 0.05
+expect_bad "key '--mu': 0.8 (the default) is below the block's b/h = width / height = 1" --width 0.2 --height 0.2 --kn 1e7 --restitution 0.5
+# A squat block (width / height 10: Housner's r = -0.485) cannot rock on: refused before any DEM
+# run (it ran and failed with "raise kn").
+expect_bad "key '--width': with --height 0.2 m: width / height = 10 is at least sqrt(2), so Housner's r = 1 - 1.5 sin^2 alpha = -0.4851 <= 0" --width 2 --height 0.2 --kn 1e7 --restitution 0.8
+out=$("$bin" calibrate --width 2 --height 0.2 --kn 1e7 --restitution 0.8 2>&1)
+grep -q "DEM runs\|raise kn" <<<"$out" && fail "the squat block was run: $out"
+# --toml to a full device: exit 4 naming it (it exited 1), where a device node can be made.
+if mknod "$tmp/full" c 1 7 2>/dev/null; then
+  out=$("$bin" calibrate "${block[@]}" --restitution 0.9046 --toml "$tmp/full" 2>&1); rc=$?
+  [ $rc -eq 4 ] || fail "--toml to a full device: exit $rc, expected 4: $out"
+  expect_in "$out" "could not write the output: $tmp/full: cannot write"
+fi
 # Far below Housner's r with a stiff no-tension contact: not reachable, and the message says
 # what is.
 expect_bad "is not reachable by fitting h_n (kn = 1e+09 N/m)" --width 0.2 --height 1.0 --kn 1e9 --restitution 0.7

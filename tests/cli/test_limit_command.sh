@@ -2,8 +2,9 @@
 # `blockdem limit` (docs/limit_analysis.md): a slender block topples at lambda = b/h = 0.25
 # (14.036 deg) about the corner the load pushes it to; a semicircular arch at t/R = 0.15 forms
 # four hinges, the same lambda both ways and with --non-associative; at t/R = 0.10 it has no
-# equilibrium; --json writes the
-# forces and the mechanism; bad arch keys and a bad direction are refused with exit status 2.
+# equilibrium; --json writes the forces and the mechanism (and a write that fails exits 4); a
+# friction of any size up to 1e300 leaves the block's b/h; bad arch keys and a bad direction are
+# refused with exit status 2.
 # Usage: test_limit_command.sh BLOCKDEM SOURCE_DIR
 set -u
 bin=$1; src=$2
@@ -21,6 +22,27 @@ expect_in "$out" "base / slender: hinges at (-0.1, 0)"
 out=$("$bin" limit "$data/block.toml" --set contact.mu=0.2 2>&1) || fail "limit mu = 0.2 failed: $out"
 expect_in "$out" "collapse multiplier lambda = 0.2 "
 expect_in "$out" "base / slender: slides"
+# A friction that cannot bind, however large, leaves the topple at b/h both ways (mu = 1e10 gave
+# -0.25, 1e15 gave 0, 1e300 aborted inside GLPK with exit 134).
+for mu in 10 1e10 1e15 1e300; do
+  for dir in +x -x; do
+    out=$("$bin" limit "$data/block.toml" --set contact.mu=$mu --direction $dir 2>&1) || fail "limit mu = $mu $dir: exit $?: $out"
+    expect_in "$out" "collapse multiplier lambda = 0.25 (a table tilted by 14.0362 deg"
+    if [ "$dir" = +x ]; then expect_in "$out" "base / slender: hinges at (0.1, 0)"; else expect_in "$out" "base / slender: hinges at (-0.1, 0)"; fi
+  done
+done
+# --json to a full device: exit 4 naming it, and the device stays (it was removed, so that a
+# second run wrote a plain file and exited 0). A device node of our own, where one can be made.
+if mknod "$tmp/full" c 1 7 2>/dev/null; then
+  for attempt in 1 2; do
+    out=$("$bin" limit "$data/block.toml" --json "$tmp/full" 2>&1); rc=$?
+    [ $rc -eq 4 ] || fail "--json to a full device (attempt $attempt): exit $rc, expected 4: $out"
+    expect_in "$out" "could not write the output: $tmp/full: cannot write"
+  done
+  [ -c "$tmp/full" ] || fail "--json to a full device removed the device"
+else
+  echo "skipped: cannot make a device node (--json to a full device)"
+fi
 
 out=$("$bin" limit "$data/arch.toml" --json "$tmp/arch.json" 2>&1) || fail "arch failed: $out"
 expect_in "$out" "20 dynamic bodies, 21 interfaces"

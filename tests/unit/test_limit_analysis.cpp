@@ -12,7 +12,9 @@
 #include <string>
 #include <utility>
 #include <cstdio>
+#include <stdexcept>
 
+#include "analysis/glpk_guard.hpp"
 #include "analysis/limit_analysis.hpp"
 #include "scenes/assemblies.hpp"
 #include "support/world_helpers.hpp"
@@ -151,6 +153,91 @@ TEST(LimitAnalysis, SlenderBlockTopplesAtWidthOverHeight) {
         EXPECT_LT(r.mechanism[1].rotation * direction, 0.0) << "+x load: clockwise";
         EXPECT_NEAR(r.forces[0].normal_N[0] + r.forces[0].normal_N[1], 0.16 * 1000.0 * 9.81, 1e-6);
     }
+}
+
+// The closed form b/h holds for any mu above it, however large, both ways and with either friction
+// flow: the cone's edges n +- mu t turn antiparallel as mu grows, which cost lambda about log10(mu)
+// digits (mu = 1e10 gave -0.25, 1e15 gave 0, 1e300 aborted inside GLPK), so a larger mu is written
+// as n, s and friction rows scaled to unit normals. A two-block stack too (its base joint carries
+// both weights: mu n overflows a double at mu = 1.7e308).
+TEST(LimitAnalysis, ToppleMultiplierHoldsForAnyLargeMu) {
+    const double stack_lambda = (0.18 + 0.16) * 0.15 / (0.18 * 0.3 + 0.16 * 0.8);
+    for (double mu : {0.3, 1.0, 100.0, 101.0, 1e3, 1e6, 1e9, 1e10, 1e12, 1e13, 1e15, 1e100, 1e300, 1.7e308}) {
+        for (double direction : {1.0, -1.0}) {
+            for (FrictionFlow flow : {FrictionFlow::associative, FrictionFlow::non_associative}) {
+                const LimitOptions options{.live_load_direction = {direction, 0.0}, .friction = flow};
+                const std::string label = fmt::format("mu {:g}, direction {:+g}, {}", mu, direction,
+                                                      flow == FrictionFlow::associative ? "associative" : "non-associative");
+                const LimitResult block = solve_limit_analysis(single_block(0.2, 0.8, mu), options);
+                ASSERT_EQ(block.status, LimitStatus::collapse) << label;
+                EXPECT_NEAR(block.lambda, 0.25, 1e-9) << label;
+                EXPECT_NEAR(hinge_x(block, 0), 0.1 * direction, 1e-12) << label << ": hinges at the downstream corner";
+                const LimitResult stack = solve_limit_analysis(
+                    on_base({rectangle_body("low", BodyKind::dynamic, 0.3, 0.6, {0.0, 0.3}),
+                             rectangle_body("high", BodyKind::dynamic, 0.4, 0.4, {0.0, 0.8})},
+                            mu),
+                    options);
+                ASSERT_EQ(stack.status, LimitStatus::collapse) << label;
+                EXPECT_NEAR(stack.lambda, stack_lambda, 1e-9) << label << ": the stack";
+                EXPECT_NEAR(hinge_x(stack, 0), 0.15 * direction, 1e-12) << label << ": the stack";
+            }
+        }
+    }
+}
+
+// More friction can only add strength: a wall's lambda never falls as mu grows (beyond the LP's
+// tolerances, 1e-7: measured 2e-7 at mu = 1e6), up to the rocking mechanism of mu = 1e300. With
+// the cone's edges at every mu it fell at mu = 1e3 and 1e6 on this wall.
+TEST(LimitAnalysis, WallMultiplierGrowsWithMu) {
+    scenes::WallSpec spec;
+    spec.origin_m = {-0.6, 0.0};
+    spec.length_m = 0.8;
+    spec.courses = 16;
+    spec.openings.push_back({.x_m = 0.2, .y_m = 0.6, .width_m = 0.4, .height_m = 0.3, .lintel_bearing_m = 0.1});
+    const std::vector<BodyDef> bricks = scenes::as_bodies(scenes::masonry_wall(spec), {.name_prefix = "brick"});
+    double previous = 0.0;
+    for (double mu : {0.6, 1.0, 2.0, 2.1, 5.0, 10.0, 50.0, 98.0, 99.0, 100.0, 101.0, 1e3, 1e6, 1e12, 1e300}) {
+        const LimitResult r = solve_limit_analysis(on_base(bricks, mu), {.live_load_direction = {-1.0, 0.0}});
+        ASSERT_EQ(r.status, LimitStatus::collapse) << mu;
+        EXPECT_GE(r.lambda, previous * (1.0 - 1e-6)) << "mu = " << mu;
+        previous = r.lambda;
+    }
+}
+
+// glpk_guarded (analysis/glpk_guard.hpp): an internal GLPK error, which GLPK's own hook answers
+// by aborting the process, becomes a std::runtime_error, and GLPK works again afterwards.
+// max x subject to x <= 2: the optimum 2, to show that GLPK solves after an error.
+double solve_small_lp() {
+    GlpkProblem problem;
+    glp_prob* lp = problem.lp;
+    glp_set_obj_dir(lp, GLP_MAX);
+    glp_add_rows(lp, 1);
+    glp_add_cols(lp, 1);
+    glp_set_row_bnds(lp, 1, GLP_UP, 0.0, 2.0);
+    glp_set_col_bnds(lp, 1, GLP_FR, 0.0, 0.0);
+    glp_set_obj_coef(lp, 1, 1.0);
+    int row[2] = {0, 1}, column[2] = {0, 1};
+    double value[2] = {0.0, 1.0};
+    glp_load_matrix(lp, 1, row, column, value);
+    glp_smcp parameters;
+    glp_init_smcp(&parameters);
+    parameters.msg_lev = GLP_MSG_OFF;
+    int code = -1;
+    glpk_guarded(problem, [&] { code = glp_simplex(lp, &parameters); });
+    EXPECT_EQ(code, 0);
+    return glp_get_obj_val(lp);
+}
+
+TEST(GlpkGuard, InternalErrorThrowsInsteadOfAborting) {
+    const GlpkSilence silence;
+    {
+        GlpkProblem problem;
+        glp_add_rows(problem.lp, 3);
+        // A zero scale factor: GLPK's "invalid scale factor", which aborted `blockdem limit` at mu = 1e300.
+        EXPECT_THROW(glpk_guarded(problem, [&] { glp_set_rii(problem.lp, 3, 0.0); }), std::runtime_error);
+        EXPECT_EQ(problem.lp, nullptr) << "the error freed GLPK's environment with the problem";
+    }
+    EXPECT_DOUBLE_EQ(solve_small_lp(), 2.0);
 }
 
 // b/h = 1 > mu = 0.6: it slides at lambda = mu.

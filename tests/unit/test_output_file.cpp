@@ -2,6 +2,8 @@
 // reason, and a write that fails part-way leaves only whole records (rows) in the file.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <csignal>
@@ -98,6 +100,22 @@ TEST(OutputFile, AFailedWriteToADeviceLeavesTheDevice) {
     EXPECT_TRUE(fs::is_symlink(fs::symlink_status(link)));
     EXPECT_TRUE(fs::is_character_file("/dev/full"));
     fs::remove(link);
+}
+
+// A device named as the output is the user's: a failed write to a full device (made here as
+// /dev/full is, so that the test does not depend on the system's) leaves it a device. Removing it
+// once turned /dev/full into a plain file that later writes filled without an error.
+TEST(OutputFile, FailedWriteToADeviceKeepsTheDevice) {
+    const fs::path device = temporary("full");
+    if (::mknod(device.c_str(), S_IFCHR | 0666, ::makedev(1, 7)) != 0) GTEST_SKIP() << "cannot make a device node here";
+    try {
+        write_output_file(device, "{}\n");
+        ADD_FAILURE() << "writing to a full device succeeded";
+    } catch (const OutputError& e) {
+        EXPECT_EQ(std::string(e.what()), device.string() + ": cannot write: " + std::strerror(ENOSPC));
+    }
+    EXPECT_EQ(fs::symlink_status(device).type(), fs::file_type::character) << "the device was removed";
+    fs::remove(device);
 }
 
 TEST(OutputFile, CannotCreateNamesTheFile) {

@@ -39,6 +39,37 @@ std::vector<double> rigid_peaks(double alpha, double theta0, double r, int impac
     return peaks;
 }
 
+// A block rocks on its corners only if it is slender enough for Housner's r to be positive
+// (width / height < sqrt 2) and its friction is at least b/h = width / height.
+TEST(RockingCalibration, ObstaclesToRocking) {
+    RockingBlock b = concrete_block(3.0, ContactTermination::no_tension);  // width / height = 1/3
+    b.contact.mu = 0.8;
+    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::none);
+    b.contact.mu = b.width_m / b.height_m;
+    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::none) << "mu = b/h: tips as it would slide";
+    b.contact.mu = 0.05;
+    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::slides);
+    b.contact.mu = 100.0;
+    b.height_m = b.width_m / 1.4143;  // just above sqrt 2: Housner's r < 0
+    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::too_squat);
+    b.height_m = b.width_m / 1.4141;
+    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::none);
+    b.height_m = b.width_m * 0.1;  // 2 x 0.2 m, the probe's block: r = -0.485, too squat before mu counts
+    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::too_squat);
+}
+
+// An impact with r >= 1 gained energy: the block did not rock rigidly (the probe's mu = 0.05 fit
+// read 0.333, 1.233, 1.250).
+TEST(RockingCalibration, EnergyGainingImpactIsFound) {
+    FreeRocking run;
+    run.impact_restitution = {0.33264, 1.23319, 1.25006};
+    EXPECT_EQ(first_energy_gaining_impact(run), 1);
+    run.impact_restitution = {0.9, 0.95, 1.0};
+    EXPECT_EQ(first_energy_gaining_impact(run), 2);
+    run.impact_restitution = {0.85, 0.86};
+    EXPECT_EQ(first_energy_gaining_impact(run), -1);
+}
+
 TEST(RockingCalibration, RestitutionFromPeaksInvertsRigidRocking) {
     const double alpha = std::atan(0.2);
     const std::vector<double> peaks = rigid_peaks(alpha, 0.15, 0.9, 4);
