@@ -51,6 +51,18 @@ py::dict calibrate(double width_m, double height_m, double kn, std::optional<dou
     if (!(b.release_tilt_rad > 0.0 && b.release_tilt_rad < b.alpha_rad()))
         throw py::value_error(fmt::format("release_tilt must be in (0, alpha = {:.6g} rad), got {}", b.alpha_rad(),
                                           b.release_tilt_rad));
+    // As the CLI: a block that cannot rock is refused before any DEM run (study/rocking_calibration.hpp).
+    switch (rocking_obstacle(b)) {
+        case RockingObstacle::none: break;
+        case RockingObstacle::too_squat:
+            throw py::value_error(fmt::format("width / height = {:.4g} is at least sqrt(2): Housner's r <= 0, so the block "
+                                              "does not rock on after its first impact and there is no restitution to fit",
+                                              width_m / height_m));
+        case RockingObstacle::slides:
+            throw py::value_error(fmt::format("mu = {:g} is below b/h = width / height = {:.4g}: the block would slide, not "
+                                              "rock; give mu of at least {:.4g}",
+                                              mu, width_m / height_m, width_m / height_m));
+    }
     RockingFit fit;
     {
         py::gil_scoped_release release;

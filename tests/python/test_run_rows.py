@@ -102,6 +102,12 @@ def test_calibrate_to_housners_restitution():
         blockdem.calibrate_rocking(width=width, height=height, kn=1e8, target_restitution=1.2)
     with pytest.raises(ValueError):
         blockdem.calibrate_rocking(width=width, height=height, kn=1e8, target_restitution=0.8, termination="sticky")
+    # A block that cannot rock is refused before any DEM run, as by the CLI: too squat (b/h >=
+    # sqrt 2: Housner's r <= 0), or on a friction below b/h (it would slide).
+    with pytest.raises(ValueError, match="at least sqrt"):
+        blockdem.calibrate_rocking(width=2.0, height=0.2, kn=1e8, target_restitution=0.8)
+    with pytest.raises(ValueError, match="would slide"):
+        blockdem.calibrate_rocking(width=width, height=height, kn=1e8, mu=0.05, target_restitution=0.8)
 
 
 @pytest.mark.slow
