@@ -146,7 +146,7 @@ void check_layers(TableReader& t, TableReader& layer_table, const Drawing& drawi
         // The layer's entities are there but none is a closed outline: what is wrong with the
         // first (an open polyline: close it) is the message, not a missing layer.
         const auto drawn = std::find_if(drawing.entities.begin(), drawing.entities.end(),
-                                        [&](const DrawingEntity& e) { return e.layer == layer && !e.problem.empty(); });
+                                        [&name = layer](const DrawingEntity& e) { return e.layer == name && !e.problem.empty(); });
         if (drawn != drawing.entities.end()) fail_entity(file, *drawn, drawn->problem);
         std::vector<std::string> others = drawing_layers;
         std::erase(others, layer);

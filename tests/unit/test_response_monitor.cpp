@@ -34,6 +34,17 @@ Outcome run(double tilt_rad, const ComponentMotion& table, double duration) {
     return {monitor.responses()[1], w.bodies.rotation_rad[1]};
 }
 
+// w run to its duration, observed at every step.
+ResponseMonitor observed_run(World& w) {
+    ResponseMonitor monitor(w);
+    while (w.time_s < w.settings.duration_s) {
+        step_begin(w);
+        monitor.observe(w);
+        step_end(w);
+    }
+    return monitor;
+}
+
 TEST(ResponseMonitor, ABlockTouchingNothingIsNamedInAWarning) {
     // The block 1 m above the table for 0.2 s falls 0.2 m and meets nothing; on the table it
     // touches at once. Only the first gets the warning (the summary's; io/summary_writer.cpp).
@@ -42,12 +53,7 @@ TEST(ResponseMonitor, ABlockTouchingNothingIsNamedInAWarning) {
                                        testing::rectangle_body("block", BodyKind::dynamic, 2 * b, 2 * h, {0.0, h + lift_m}, 0.0, 1536.0)},
                                       testing::contact(1e9, 0.8, 0.3, 1.0), 2e-5, 9.81, 0.2);
         World w = build_world(m);
-        ResponseMonitor monitor(w);
-        while (w.time_s < 0.2) {
-            step_begin(w);
-            monitor.observe(w);
-            step_end(w);
-        }
+        const ResponseMonitor monitor = observed_run(w);
         const std::vector<std::string> warnings = untouched_body_warnings(monitor.records(w), w.bodies.name, w.time_s);
         if (lift_m > 0.0) {
             ASSERT_EQ(warnings.size(), 1u);
@@ -68,12 +74,7 @@ TEST(ResponseMonitor, AStackRestingOnNothingFixedIsNamedInAWarning) {
                                        testing::rectangle_body("upper", BodyKind::dynamic, 0.4, 0.4, {x_m, 0.6}, 0.0, 2000.0)},
                                       testing::contact(1e8, 0.6, 0.3, 1.0), 2e-5, 9.81, 0.3);
         World w = build_world(m);
-        ResponseMonitor monitor(w);
-        while (w.time_s < 0.3) {
-            step_begin(w);
-            monitor.observe(w);
-            step_end(w);
-        }
+        const ResponseMonitor monitor = observed_run(w);
         const std::vector<BodyRecord> records = monitor.records(w);
         const std::vector<std::string> warnings = untouched_body_warnings(records, w.bodies.name, w.time_s);
         if (x_m > 0.0) {
