@@ -58,16 +58,17 @@ py::dict calibrate(double width_m, double height_m, double kn, std::optional<dou
             throw py::value_error(fmt::format("width / height = {:.4g} is at least sqrt(2): Housner's r <= 0, so the block "
                                               "does not rock on after its first impact and there is no restitution to fit",
                                               width_m / height_m));
-        case RockingObstacle::slides:
-            throw py::value_error(fmt::format("mu = {:g} is below b/h = width / height = {:.4g}: the block would slide, not "
-                                              "rock; give mu of at least {:.4g}",
-                                              mu, width_m / height_m, width_m / height_m));
     }
     RockingFit fit;
     {
         py::gil_scoped_release release;
         fit = calibrate_rocking(b, parameter == "kn" ? CalibratedParameter::kn : CalibratedParameter::h_n, target, tolerance);
     }
+    // As the CLI: a fitted run that gained energy at an impact slid or bounced, and is no rocking.
+    if (const int k = first_energy_gaining_impact(fit.run); k >= 0)
+        throw std::runtime_error(fmt::format("the fitted run gained energy at impact {}: r = {:.6g} >= 1, so the block slid or "
+                                             "bounced instead of rocking on its corners; raise mu or h_s, or lower "
+                                             "release_tilt", k + 1, fit.run.impact_restitution[static_cast<std::size_t>(k)]));
     py::dict d;
     d["found"] = fit.found;
     d["target_restitution"] = fit.target_restitution;

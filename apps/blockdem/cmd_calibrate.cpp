@@ -164,8 +164,9 @@ std::string contact_keys(const RockingFit& fit, const std::string& e_meaning) {
 }
 
 // The calibration fits a block that rocks on its corners: refused up front when it cannot (the
-// DEM would run and fail with an unrelated remedy, or "fit" runs in which the block slid).
-void check_block_rocks(const RockingBlock& block, bool mu_given) {
+// DEM would run and fail with an unrelated remedy); a block that slips is found in the fitted run
+// (check_fit_rocks).
+void check_block_rocks(const RockingBlock& block) {
     const double aspect = block.width_m / block.height_m;  // [-] b/h = tan alpha
     switch (rocking_obstacle(block)) {
         case RockingObstacle::none: return;
@@ -176,12 +177,6 @@ void check_block_rocks(const RockingBlock& block, bool mu_given) {
                                        "width / height < 1.414 (--height above {:.4g} m)",
                                        block.height_m, aspect, housner_restitution(block.alpha_rad()),
                                        block.width_m / std::numbers::sqrt2));
-        case RockingObstacle::slides:
-            bad("--mu", fmt::format("{:g}{} is below the block's b/h = width / height = {:.4g}: a block whose friction is below "
-                                    "b/h slides before it tips, and a rocking one slips at its corners (its peaks then read "
-                                    "r > 1 per impact), so the runs would not be free rocking; give --mu of at least {:.4g} "
-                                    "(docs/calibration.md)",
-                                    block.contact.mu, mu_given ? "" : " (the default)", aspect, aspect));
     }
 }
 
@@ -198,9 +193,9 @@ void check_fit_rocks(const RockingFit& fit, const char* name) {
         fit.run.impact_restitution[static_cast<std::size_t>(k)], fmt::join(fit.run.impact_restitution, ", ")));
 }
 
-void run_calibrate(const CalibrateOptions& o, bool mu_given) {
+void run_calibrate(const CalibrateOptions& o) {
     RockingBlock block = read_block(o);
-    check_block_rocks(block, mu_given);
+    check_block_rocks(block);
     const double alpha = block.alpha_rad();
     const Target target = read_target(o, alpha);
     const double tilt = o.tilt_rad ? *o.tilt_rad : target.tilt_rad > 0.0 ? target.tilt_rad : 0.5 * alpha;
@@ -272,7 +267,7 @@ void add_calibrate_command(CLI::App& app) {
     cmd->add_option("--gravity", options->gravity_m_s2, "[m/s^2]")->capture_default_str();
     cmd->add_option("--kn", options->kn_N_m, "[N/m] normal stiffness per contact point")->required();
     cmd->add_option("--ks", options->ks_N_m, "[N/m] shear stiffness (default: kn)");
-    CLI::Option* mu = cmd->add_option("--mu", options->mu, "friction coefficient, at least width / height (so that the block rocks without sliding)")
+    cmd->add_option("--mu", options->mu, "friction coefficient (high enough that the block rocks without sliding)")
         ->capture_default_str();
     cmd->add_option("--h-s", options->h_s, "shear damping ratio")->capture_default_str();
     cmd->add_option("--fit", options->fit, "what to fit: h_n (at the given kn) or kn (at the given --h-n)")
@@ -297,7 +292,7 @@ void add_calibrate_command(CLI::App& app) {
     cmd->add_option("--tolerance", options->tolerance, "on r: |achieved - target| at most this")->capture_default_str();
     cmd->add_option("--dt", options->dt_s, "[s] time step of the DEM runs (default: dt_safety x the stable limit, as a run)");
     cmd->add_option("--toml", options->toml_file, "also write the scenario keys to this file")->check(output_file());
-    cmd->callback([options, mu] { run_calibrate(*options, mu->count() > 0); });
+    cmd->callback([options] { run_calibrate(*options); });
 }
 
 }  // namespace blockdem::cli

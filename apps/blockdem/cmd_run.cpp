@@ -14,6 +14,7 @@
 #include "apps/blockdem/commands.hpp"
 #include "apps/blockdem/option_checks.hpp"
 #include "apps/blockdem/stop_signal.hpp"
+#include "io/output_folder.hpp"
 #include "run/run_scenario.hpp"
 #include "world/settling.hpp"
 
@@ -190,6 +191,8 @@ void add_run_command(CLI::App& app) {
         // [output] report = true: the report is made here, in the tool, because the library never
         // starts processes.
         if (summary.contains("outputs") && summary["outputs"].value("report", false)) {
+            // Held while the report writes there: a second run into the folder would mix with it.
+            const RunFolderLock hold = RunFolderLock::take(folder);
             write_report(folder);
             fmt::print("report: {}/report.html\n", folder);
         }

@@ -406,6 +406,12 @@ LimitStatus solve(GlpkProblem& problem) {
 // mu n each time, and the LP solved again from its last basis until lambda settles (Gilbert,
 // Casapulla and Ahmed 2006). A heuristic: it may stop at a solution that is not the least
 // non-associative one (docs/limit_analysis.md).
+// Above this mu a joint cannot slip, so the flow rule does not matter there: its friction rows are
+// kept as the first (associative) solve had them, within 1 whatever mu (friction_rows_of). As a
+// capacity mu n its bound reached 1e13 N and more, and from mu = 1e9 on the wall with a window
+// every LP of the iteration read "no equilibrium" (1e8 gave the right 0.6667).
+constexpr double non_associative_no_slip_mu = 1.0e6;
+
 LimitStatus iterate_non_associative(GlpkProblem& problem, const std::vector<BlockInterface>& faces, const Rows& rows,
                                     const LimitOptions& options, LimitResult& result) {
     glp_prob* lp = problem.lp;
@@ -417,6 +423,7 @@ LimitStatus iterate_non_associative(GlpkProblem& problem, const std::vector<Bloc
     result.converged = false;
     for (result.iterations = 1; result.iterations <= options.max_iterations; ++result.iterations) {
         for (std::size_t k = 0; k < faces.size(); ++k) {
+            if (faces[k].mu > non_associative_no_slip_mu) continue;
             for (int j = 0; j < 2; ++j) {
                 const int rf = friction_row(rows, k, j);
                 int index[2] = {0, normal_column(k, j) + 1};

@@ -63,15 +63,13 @@ std::string number_problem(int code, std::string_view value) {
     const std::string_view digits = !value.empty() && value.front() == '+' ? value.substr(1) : value;  // from_chars takes no '+'
     const char* first = digits.data();
     const char* last = digits.data() + digits.size();
-    if (kind == GroupValue::whole) {
-        long long n = 0;
-        const auto [end, error] = std::from_chars(first, last, n);
-        return !digits.empty() && error == std::errc{} && end == last ? "" : "not a whole number";
-    }
     double x = 0.0;
     const auto [end, error] = std::from_chars(first, last, x);
     if (digits.empty() || end != last || (error != std::errc{} && error != std::errc::result_out_of_range)) return "not a number";
-    return error == std::errc{} && std::isfinite(x) ? "" : "not a finite number";
+    if (error != std::errc{} || !std::isfinite(x)) return "not a finite number";
+    // A whole number may be written as a real ("1.0": Pro/ENGINEER writes them so; dxflib's
+    // atoi reads them right): only a fraction is refused.
+    return kind == GroupValue::whole && x != std::trunc(x) ? "not a whole number" : "";
 }
 
 // The entity or header variable a group belongs to, for messages: "the LWPOLYLINE (handle B1)",

@@ -103,7 +103,11 @@ std::string lock_holder(int fd) {
     char text[32] = {};
     const ssize_t got = pread(fd, text, sizeof text - 1, 0);
     const std::string pid = got > 0 ? std::string(text, static_cast<std::size_t>(got)) : std::string();
-    return pid.empty() ? std::string("a run whose pid is not known") : "the run of pid " + pid;
+    if (pid.empty()) return "a run whose pid is not known";
+    // A notebook cell run twice makes its new run while the old object still holds the folder.
+    if (pid == std::to_string(getpid()))
+        return "an earlier run of this process (not finished: finish() it or drop it first)";
+    return "the run of pid " + pid;
 }
 
 // Whether the file at path is still the one open as fd: a holder that released the lock unlinks
@@ -123,6 +127,15 @@ RunFolderLock RunFolderLock::take(const fs::path& dir) {
         const int fd = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
         if (fd < 0) throw InputError(where, fmt::format("cannot create the lock file {}: {}", run_lock_name, std::strerror(errno)));
         if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+            // Only EWOULDBLOCK is a holder. A filesystem without locks (Lustre mounted without
+            // flock, NFS without lockd: ENOSYS, ENOLCK, EOPNOTSUPP) refused every run into it
+            // for good: the run goes on there unlocked, as runs did before the lock.
+            if (errno != EWOULDBLOCK) {
+                close(fd);
+                std::error_code ignored;
+                fs::remove(file, ignored);
+                return RunFolderLock();
+            }
             const std::string holder = lock_holder(fd);
             close(fd);
             throw InputError(where, fmt::format("{} is writing in this folder ({} is locked); wait for it or stop it, or "

@@ -32,6 +32,8 @@ public:
 
     /// Takes the lock of dir (which must exist). Throws InputError naming dir, and the pid of the
     /// live run when it is known, when another process (or another run of this one) holds it.
+    /// On a filesystem that gives no locks (flock failing otherwise than EWOULDBLOCK: some NFS
+    /// and Lustre mounts) it holds nothing, and the run goes on unlocked.
     static RunFolderLock take(const std::filesystem::path& dir);
 
 private:

@@ -21,7 +21,6 @@ double housner_restitution(double alpha_rad) {
 
 RockingObstacle rocking_obstacle(const RockingBlock& block) {
     if (!(housner_restitution(block.alpha_rad()) > 0.0)) return RockingObstacle::too_squat;
-    if (block.contact.mu < block.width_m / block.height_m) return RockingObstacle::slides;
     return RockingObstacle::none;
 }
 

@@ -48,12 +48,12 @@ enum class RockingObstacle {
     /// impact stops it (the angular momentum about the new corner is zero or reversed): it does
     /// not rock on, and no rocking restitution can be measured or fitted.
     too_squat,
-    /// mu < b/h = width / height (tan alpha): the static criterion; a horizontal push slides the
-    /// block before it can tip it, and a rocking block's corner slips (its peaks then read r > 1).
-    slides,
 };
 
-/// The first obstacle of the block and its contact's friction, in the order above.
+/// The block's obstacle to rocking. Friction is not judged here: the static criterion mu >= b/h
+/// refused blocks that rock cleanly (a free-rocking block needs less: about 0.6 to 0.75 b/h at
+/// an impact), and a block that does slip shows it as an impact with r >= 1
+/// (first_energy_gaining_impact), which the fit's callers refuse.
 RockingObstacle rocking_obstacle(const RockingBlock& block);
 
 /// r of each impact from successive peak rotations |theta_0|, |theta_1|, ... [rad] (the first

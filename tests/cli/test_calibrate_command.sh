@@ -81,10 +81,14 @@ expect_bad "give exactly one of" "${block[@]}" --restitution 0.9 --energy-ratio 
 expect_bad "free rocking only decays" "${block[@]}" --peaks 3,4 --peaks-unit deg
 expect_bad "or the block would topple" "${block[@]}" --peaks 20,10 --peaks-unit deg
 expect_bad "--fit kn needs" "${block[@]}" --fit kn --restitution 0.9
-# A friction below b/h (0.05 < 0.2 / 0.6): the block would slide, and the "fit" came from runs
-# with per-impact r of 1.23 and 1.25; the default mu 0.8 below b/h = 1 is named as the default.
-expect_bad "key '--mu': 0.05 is below the block's b/h = width / height = 0.3333" --width 0.2 --height 0.6 --kn 1e7 --restitution 0.8 --mu 0.05
-expect_bad "key '--mu': 0.8 (the default) is below the block's b/h = width / height = 1" --width 0.2 --height 0.2 --kn 1e7 --restitution 0.5
+# A friction far below b/h (0.05 < 0.2 / 0.6): the block slides, and the "fit" came from runs
+# with per-impact r of 1.23 and 1.25: refused after the fit (exit 3), naming the impact. A
+# friction below b/h alone is no obstacle: a free-rocking square block at mu 0.8 fits (below).
+out=$("$bin" calibrate --width 0.2 --height 0.6 --kn 1e7 --restitution 0.8 --mu 0.05 2>&1); rc=$?
+[ $rc -eq 3 ] || fail "a sliding block's fit: exit $rc, expected 3: $out"
+expect_in "$out" "gained energy at impact"
+out=$("$bin" calibrate --width 0.5 --height 0.5 --kn 1e8 --restitution 0.2 --mu 0.8 2>&1) || fail "a square block at mu 0.8: $out"
+expect_in "$out" "fit         h_n = "
 # A squat block (width / height 10: Housner's r = -0.485) cannot rock on: refused before any DEM
 # run (it ran and failed with "raise kn").
 expect_bad "key '--width': with --height 0.2 m: width / height = 10 is at least sqrt(2), so Housner's r = 1 - 1.5 sin^2 alpha = -0.4851 <= 0" --width 2 --height 0.2 --kn 1e7 --restitution 0.8

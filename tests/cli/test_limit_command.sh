@@ -31,6 +31,13 @@ for mu in 10 1e10 1e15 1e300; do
     if [ "$dir" = +x ]; then expect_in "$out" "base / slender: hinges at (0.1, 0)"; else expect_in "$out" "base / slender: hinges at (-0.1, 0)"; fi
   done
 done
+# Non-associative friction too: the wall with a window gave "no equilibrium" from mu = 1e9 on;
+# a joint that cannot slip keeps its associative rows, and the mechanism is the associative one.
+for mu in 1e9 1e300; do
+  out=$("$bin" limit "$src/examples/limit/wall_with_window.toml" --non-associative --set contact.mu=$mu 2>&1) \
+    || fail "non-associative mu = $mu: exit $?: $out"
+  expect_in "$out" "collapse multiplier lambda = 0.666667 "
+done
 # --json to a full device: exit 4 naming it, and the device stays (it was removed, so that a
 # second run wrote a plain file and exited 0). A device node of our own, where one can be made.
 if mknod "$tmp/full" c 1 7 2>/dev/null; then

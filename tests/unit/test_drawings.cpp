@@ -196,6 +196,11 @@ TEST(DxfReader, GroupValuesThatAreNotTheirNumbersAreRefusedWithLineEntityAndValu
     EXPECT_EQ(read_error(with_first_x("  +4.0E+02 ")), "");
     EXPECT_DOUBLE_EQ(read_dxf(with_first_x("-1.5e-3"), "d.dxf").entities.at(0).vertices.at(0).x, -1.5e-3);
     EXPECT_EQ(read_error(dxf(lwpolyline("1", "4x0", square, true))), "");
+    // Pro/ENGINEER writes whole numbers as reals ("1.0"): read as the whole numbers they are.
+    const std::string proe = testing::replace_once(polyline, "70\n1\n", "70\n1.0\n");
+    ASSERT_NE(proe, polyline);
+    EXPECT_EQ(read_error(dxf(proe)), "");
+    EXPECT_EQ(read_dxf(dxf(proe), "d.dxf").entities.size(), 1u);
 }
 
 // ---- the text format ------------------------------------------------------------------------

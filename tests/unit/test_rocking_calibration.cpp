@@ -40,15 +40,13 @@ std::vector<double> rigid_peaks(double alpha, double theta0, double r, int impac
 }
 
 // A block rocks on its corners only if it is slender enough for Housner's r to be positive
-// (width / height < sqrt 2) and its friction is at least b/h = width / height.
+// (width / height < sqrt 2); its friction is judged by the fitted run (r >= 1 at an impact).
 TEST(RockingCalibration, ObstaclesToRocking) {
     RockingBlock b = concrete_block(3.0, ContactTermination::no_tension);  // width / height = 1/3
     b.contact.mu = 0.8;
     EXPECT_EQ(rocking_obstacle(b), RockingObstacle::none);
-    b.contact.mu = b.width_m / b.height_m;
-    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::none) << "mu = b/h: tips as it would slide";
-    b.contact.mu = 0.05;
-    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::slides);
+    b.contact.mu = 0.2;  // below b/h: a free-rocking block needs less (an impact about 0.6 to 0.75 b/h)
+    EXPECT_EQ(rocking_obstacle(b), RockingObstacle::none);
     b.contact.mu = 100.0;
     b.height_m = b.width_m / 1.4143;  // just above sqrt 2: Housner's r < 0
     EXPECT_EQ(rocking_obstacle(b), RockingObstacle::too_squat);
