@@ -9,6 +9,7 @@
 #include "dynamics/critical_time_step_3d.hpp"
 #include "dynamics/highest_mode.hpp"
 #include "world/model.hpp"
+#include "world/model_domain_3d.hpp"
 #include "world/simulation_error.hpp"
 
 namespace blockdem {
@@ -16,8 +17,9 @@ namespace blockdem {
 void check_energy_balance_3d(const World3d& w, double max_error, double start_limit_s) {
     const double error = w.ledger.balance_error();
     if (w.steps <= 10 || w.ledger.scale_j() <= 1e-9 || !(error > max_error || std::isnan(error))) return;
-    const std::size_t fastest =
-        fastest_body(w.bodies.size(), [&](std::size_t i) { return length(w.bodies[i].velocity_at_t_m_s); });
+    const std::string culprit = unstable_body_clause(
+        w.domain.left, w.bodies.size(), [&](std::size_t i) { return w.bodies[i].mass_kg; },
+        [&](std::size_t i) { return w.bodies[i].name; }, [&](std::size_t i) { return length(w.bodies[i].velocity_at_t_m_s); });
     const CriticalTimeStep3d live = live_time_step_3d(w);
     const double ratio = w.stability.limit_ratio > 0.0 ? w.stability.limit_ratio : 1.0;
     const StabilityWatch3d& watch = w.stability;
@@ -27,9 +29,8 @@ void check_energy_balance_3d(const World3d& w, double max_error, double start_li
                                                    watch.least_limit_body, watch.least_limit_time_s);
     throw SimulationError(fmt::format(
         "unstable: energy balance error {:.3g} (of the largest term, {:.4g} J) exceeds {:g} at t = {:.6g} s (step {}); "
-        "fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s; stable limit {:.4g} s at the start, {:.4g} s now{})",
-        error, w.ledger.scale_j(), max_error, w.time_s, w.steps, w.bodies[fastest].name,
-        length(w.bodies[fastest].velocity_at_t_m_s), w.dt_s, start_limit_s, ratio * live.dt_s, least));
+        "{}; reduce dt (now {:g} s; stable limit {:.4g} s at the start, {:.4g} s now{})",
+        error, w.ledger.scale_j(), max_error, w.time_s, w.steps, culprit, w.dt_s, start_limit_s, ratio * live.dt_s, least));
 }
 
 void watch_live_time_step_3d(World3d& w) {

@@ -372,13 +372,16 @@ void check_stability(const World& w, bool state_finite) {
     }
     const double error = w.energy.balance_error();
     // (The first steps are skipped: every term is still near zero and their ratio means little.)
-    if (w.step_index > 10 && w.energy.scale_j() > 1e-9 && error > w.settings.max_energy_error) {
-        const std::size_t fastest = fastest_body(b.size(), [&](std::size_t i) { return length(b.velocity_m_s[i]); });
+    // (Written so that a nan error, a ledger that took an infinite energy, stops the run too.)
+    if (w.step_index > 10 && w.energy.scale_j() > 1e-9 && !(error <= w.settings.max_energy_error)) {
+        const std::string culprit = unstable_body_clause(
+            w.domain.left, b.size(), [&](std::size_t i) { return b.mass_kg[i]; }, [&](std::size_t i) { return b.name[i]; },
+            [&](std::size_t i) { return length(b.velocity_m_s[i]); });
         throw SimulationError(fmt::format(
             "unstable: energy balance error {:.3g} (of the largest term, {:.4g} J) exceeds {:g} at t = {:.6g} s "
-            "(step {}); fastest body '{}' at {:.4g} m/s; reduce dt (now {:g} s; stable limit {:.4g} s at the start{})",
-            error, w.energy.scale_j(), w.settings.max_energy_error, w.time_s, w.step_index, b.name[fastest],
-            length(b.velocity_m_s[fastest]), w.dt_s, w.critical_dt_s, live_limit_note(w)));
+            "(step {}); {}; reduce dt (now {:g} s; stable limit {:.4g} s at the start{})",
+            error, w.energy.scale_j(), w.settings.max_energy_error, w.time_s, w.step_index, culprit, w.dt_s,
+            w.critical_dt_s, live_limit_note(w)));
     }
 }
 

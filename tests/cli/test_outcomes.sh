@@ -44,6 +44,14 @@ msg=$("$bin" run "$scene" --out "$tmp/still" -q --set 'bodies.upper.kind="fixed"
 rc=$?
 [ $rc -eq 2 ] || fail "nothing to move: exit $rc, expected 2 ($msg)"
 expect_in "$msg" "knocked_off.toml: the model has no dynamic body (2 fixed, 1 driven), so nothing would move"
+# A body thrown at 1e200 m/s leaves at once with an infinite energy: the run ended "completed"
+# with an energy error of nan, and then named the table as the fastest body. It stops (exit 3)
+# naming the body that left.
+msg=$("$bin" run "$scene" --out "$tmp/thrown" -q --set 'bodies.upper.velocity=[1e200, 0]' 2>&1)
+rc=$?
+[ $rc -eq 3 ] || fail "a body thrown at 1e200 m/s: exit $rc, expected 3 ($msg)"
+expect_in "$msg" "body 'upper' left the model at t = "
+expect_in "$msg" "with a kinetic energy beyond the range of a number (check its initial velocity)"
 
 [ $failures -eq 0 ] && echo "all outcome checks passed"
 exit $failures

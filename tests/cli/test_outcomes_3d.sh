@@ -372,5 +372,30 @@ TOML
 [[ $? -eq 2 ]] && grep -qF "still.toml: the model has no dynamic body (0 fixed, 1 driven), so nothing would move" "$tmp/still.txt" \
     || fail "a model with nothing to move: $(cat "$tmp/still.txt")"
 
+# A box thrown at 1e200 m/s leaves at once with an infinite energy: the run stops (exit 3) naming
+# it, where it named the table as the fastest body.
+cat > "$tmp/thrown.toml" <<TOML
+dimension = 3
+[simulation]
+duration = 0.05
+[contact]
+kn = 1e7
+ks = 1e7
+mu = 0.6
+e = 0.3
+$table
+[[bodies]]
+name = "b"
+shape = "box"
+size = [0.2, 0.2, 0.4]
+position = [0.0, 0.0, 0.2]
+density = 2000.0
+velocity = [1e200, 0.0, 0.0]
+TOML
+"$bin" run "$tmp/thrown.toml" --out "$tmp/thrown" -q >"$tmp/thrown.txt" 2>&1
+echo "rc=$?" >> "$tmp/thrown.txt"
+grep -q "^rc=3" "$tmp/thrown.txt" && grep -q "left the model at t = .* with a kinetic energy beyond the range of a number" "$tmp/thrown.txt" \
+    || fail "a body thrown at 1e200 m/s: $(cat "$tmp/thrown.txt")"
+
 [[ $failures -eq 0 ]] && echo "all 3-D outcome checks passed"
 exit $((failures > 0))
