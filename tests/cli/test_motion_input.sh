@@ -8,13 +8,7 @@
 # as times that do not increase), a binary file (its bytes were echoed).
 # Usage: test_motion_input.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
-blockdem=$1
-source_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-source "$(dirname "$0")/expect_refused.sh"
+source "$(dirname "$0")/refusal_setup.sh" "$@"
 
 rocking=$source_dir/examples/paper/rocking.toml
 short=(--set simulation.duration=0.2 --out "$work/run")

@@ -9,13 +9,7 @@
 # export --time nan or -5 (took t = 0); a settling window longer than its max_time (failed late).
 # Usage: test_option_checks.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
-blockdem=$1
-source_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
-
-source "$(dirname "$0")/expect_refused.sh"
+source "$(dirname "$0")/refusal_setup.sh" "$@"
 
 scenario=$work/rock.toml
 sed 's/^duration = .*/duration = 0.05/' "$source_dir/examples/paper/rocking.toml" > "$scenario"

@@ -5,11 +5,7 @@
 # which file and why, with exit status 2; it printed a Python traceback and exited 1.
 # Usage: test_report_damaged.sh BLOCKDEM SOURCE_DIR
 set -euo pipefail
-blockdem=$1
-source_dir=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
+source "$(dirname "$0")/refusal_setup.sh" "$@"
 
 sed 's/^duration = .*/duration = 0.05/' "$source_dir/examples/paper/rocking.toml" > "$work/rock.toml"
 "$blockdem" run "$work/rock.toml" --out "$work/run" -q > /dev/null
